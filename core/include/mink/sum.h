@@ -1,0 +1,112 @@
+/* mink/sum.h - closed-form boundaries of B1 (+) B2 and of the contact space
+ * B1 (+) (-B2), in batches.
+ *
+ * Theorem 1 (normal form):   x(n) = f~1(n) - f~2(-n)
+ * Theorem 2 (gradient form): x(m1) = f~~1(m1) - f~~2(-Phi(m1)/|m1| m1)
+ * with linear maps as in the paper's eqs. mink_sum_transform_1/2:
+ *   x = t1 + M1 f~1(M1^T n) - M2 f~2(-M2^T n)                 (contact space)
+ *   x = t1 + t2 + M1 f~1(M1^T n) + M2 f~2(M2^T n)             (B1 (+) B2)
+ * The contact space is where B2's centre may go so that B2 touches B1; B2's
+ * own translation does not enter it.
+ *
+ * Parameters. Each output point comes from one unit vector u_k (SoA input):
+ *  - MK_PARAM_SURFACE (the paper's sampling): u_k parameterises B1's surface,
+ *    x1 = t1 + M1 f1(u_k), and the world normal there is n = M1^-T g1(u_k).
+ *    Since f~1(n(u)) = f1(u) exactly, B1's point is taken from f1 in both forms;
+ *    the form decides how B2's point is found.
+ *  - MK_PARAM_NORMAL: u_k is the world normal n itself, and the form decides
+ *    how both bodies' points are found.
+ * Forms:
+ *  - MK_FORM_NORMAL: the support point (dual-norm gradient; Theorem 1).
+ *  - MK_FORM_GRADIENT: f~~ through g^-1 (Theorem 2), evaluated stably: the
+ *    normalisation of g^-1 plays Phi's role (see mkShape2_FromGradient).
+ *  - MK_FORM_PAPER: Theorem 2 with Phi and f~~ exactly as the paper prints
+ *    them, in double; MK_PARAM_SURFACE only, scalar only. A reference for
+ *    what the published code computes, not for use.
+ * Ellipses/ellipsoids (eps == 1) take the paper's ellipsoid formulas
+ * (eqs. ellipsoid_mink_sum_thm_1 / ellipsoid_mink_sum_closed_m), which need
+ * only a square root.
+ *
+ * Memory: the caller owns every buffer; nothing is allocated. Outputs must
+ * not alias inputs. kx/ky(/kz) receive the kissing point on the boundary of
+ * B1 (world frame) and may be NULL. */
+#ifndef MINK_SUM_H
+#define MINK_SUM_H
+
+#include "body.h"
+
+MK_EXTERN_C_BEGIN
+
+typedef enum mkSet { MK_SET_CONTACT = 0, MK_SET_PLUS = 1 } mkSet;
+typedef enum mkForm { MK_FORM_NORMAL = 0, MK_FORM_GRADIENT = 1, MK_FORM_PAPER = 2 } mkForm;
+typedef enum mkParam { MK_PARAM_SURFACE = 0, MK_PARAM_NORMAL = 1 } mkParam;
+/* Which compiled kernel runs. AUTO picks the widest the CPU supports. The
+ * SCALAR kernel is the reference (libm); the vector kernels use SLEEF's
+ * 1-ulp exp/log and are tested against it. */
+typedef enum mkImpl { MK_IMPL_AUTO = 0, MK_IMPL_SCALAR = 1, MK_IMPL_AVX2 = 2, MK_IMPL_AVX512 = 3 } mkImpl;
+
+typedef struct mkSumOptions {
+	mkSet set;
+	mkForm form;
+	mkParam param;
+	mkImpl impl;
+} mkSumOptions;
+
+/* Defaults: contact space, gradient form, surface parameters, AUTO. */
+MK_API mkSumOptions mkSumOptions_Default(void);
+
+/* Name of an enum value ("contact", "gradient", "surface", "avx512", ...) and
+ * parsing back; parsing returns -1 on an unknown name. */
+MK_API const char *mkSet_Name(mkSet v);
+MK_API const char *mkForm_Name(mkForm v);
+MK_API const char *mkParam_Name(mkParam v);
+MK_API const char *mkImpl_Name(mkImpl v);
+MK_API int mkSet_Parse(const char *s);
+MK_API int mkForm_Parse(const char *s);
+MK_API int mkParam_Parse(const char *s);
+MK_API int mkImpl_Parse(const char *s);
+
+/* 1 if this CPU and build can run the kernel. SCALAR and AUTO always can. */
+MK_API int mkImpl_Available(mkImpl impl);
+/* The kernel AUTO resolves to on this machine. */
+MK_API mkImpl mkImpl_Resolve(mkImpl impl);
+
+/* Batch closed form over n parameter vectors (u may be any nonzero vectors;
+ * only their directions matter). Fails with MK_ERR_ARGUMENT on n < 0, NULL
+ * required pointers or a bad option, MK_ERR_UNSUPPORTED for MK_FORM_PAPER
+ * with MK_PARAM_NORMAL or a vector impl, or an impl this CPU lacks. Bodies
+ * must be valid (mkBody2_IsValid); this is asserted, not checked. */
+MK_API mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
+	const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky);
+MK_API mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
+	const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+
+/* One point, scalar kernel; *kiss may be NULL. */
+MK_API mkVec2 mkSum2_Point(mkBody2 b1, mkBody2 b2, mkSet set, mkForm form, mkParam param, mkVec2 u, mkVec2 *kiss);
+MK_API mkVec3 mkSum3_Point(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkParam param, mkVec3 u, mkVec3 *kiss);
+
+/* ---- parameter sampling (the paper's, Sec. 6.1) -------------------------
+ * 2D: n angles theta_k = -pi + 2 pi k / n, u_k = (cos, sin): n >= 1.
+ * 3D: an n x n grid, eta_i = -pi/2 + pi i/(n-1) (poles included),
+ *     omega_j = -pi + 2 pi j / n, u = (cos eta cos omega, cos eta sin omega,
+ *     sin eta), stored at index i*n + j: n >= 2. The outputs hold n*n values.
+ * Used as B1's surface angles (MK_PARAM_SURFACE) or the normal's angles
+ * (MK_PARAM_NORMAL). Return MK_ERR_ARGUMENT on a bad n. */
+MK_API mkResult mkSample2_Angles(int n, double *ux, double *uy);
+MK_API mkResult mkSample3_Grid(int n, double *ux, double *uy, double *uz);
+
+/* ---- the ellipsoid special forms, for any symmetric positive-definite
+ * A1, A2 (bodies A_i u, |u| = 1) --------------------------------------------
+ * Theorem 1 (eq. ellipsoid_mink_sum_thm_1): x(n) = A1^2 n/|A1 n| + A2^2 n/|A2 n|
+ * Theorem 2 (eq. ellipsoid_mink_sum_closed_m): x(m) = A1^2 m/2 + A2^2 m/|A2 m|,
+ * with m = 2 A1^-1 u a gradient of B1. */
+MK_API mkVec2 mkEllipse2_SumNormal(mkMat2 A1, mkMat2 A2, mkVec2 n);
+MK_API mkVec2 mkEllipse2_SumGradient(mkMat2 A1, mkMat2 A2, mkVec2 m);
+MK_API mkVec3 mkEllipse3_SumNormal(mkMat3 A1, mkMat3 A2, mkVec3 n);
+MK_API mkVec3 mkEllipse3_SumGradient(mkMat3 A1, mkMat3 A2, mkVec3 m);
+
+MK_EXTERN_C_END
+
+#endif
