@@ -8,5 +8,6 @@
 #include "sum.h"
 #include "metrics.h"
 #include "spec.h"
+#include "method.h"
 
 #endif
