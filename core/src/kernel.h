@@ -1,0 +1,74 @@
+/* kernel.h - internal: the prepared constants of one batch call and the
+ * per-ISA batch loops compiled from kernel_body.h. Not a public header. */
+#ifndef MINK_KERNEL_H
+#define MINK_KERNEL_H
+
+#include "mink/sum.h"
+
+/* Per-shape constants, computed once per call so the loops only multiply. */
+typedef struct mkKShape2 {
+	double a, b, eps;
+	double q, qm1, k;  /* dual exponent q = 2/(2-eps), q-1, 1-1/q */
+	double inv2me;     /* 1/(2-eps) */
+	double twome;      /* 2-eps */
+	double loga, logb;
+	int ellipse;
+} mkKShape2;
+
+typedef struct mkKShape3 {
+	double a, b, c, e1, e2;
+	double q1, q1m1, k1, q2, q2m1, k2, invq2;
+	double inv2me1, inv2me2, twome1, twome2;
+	double loga, logb, logc;
+	int ellipse;
+} mkKShape3;
+
+typedef struct mkKPlan2 {
+	mkKShape2 s1, s2;
+	double M1[2][2], M1T[2][2], M1iT[2][2], M2[2][2], M2T[2][2];
+	double t1[2];    /* B1's centre: kissing point offset */
+	double t2p[2];   /* t2 for the plus set, 0 for the contact space */
+	double sigma;    /* -1 contact space, +1 plus */
+	int form;        /* MK_FORM_NORMAL or MK_FORM_GRADIENT */
+	int param;       /* mkParam */
+} mkKPlan2;
+
+typedef struct mkKPlan3 {
+	mkKShape3 s1, s2;
+	double M1[3][3], M1T[3][3], M1iT[3][3], M2[3][3], M2T[3][3];
+	double t1[3];
+	double t2p[3];
+	double sigma;
+	int form;
+	int param;
+} mkKPlan3;
+
+void mkKShape2_Prepare(mkKShape2 *k, mkShape2 s);
+void mkKShape3_Prepare(mkKShape3 *k, mkShape3 s);
+
+/* Batch loops: one per compiled ISA. kx.. may be NULL. */
+void mkK2_Run_scalar(const mkKPlan2 *p, const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky);
+void mkK3_Run_scalar(const mkKPlan3 *p, const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+#if defined(MINK_HAVE_X86_KERNELS)
+void mkK2_Run_avx2(const mkKPlan2 *p, const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky);
+void mkK3_Run_avx2(const mkKPlan3 *p, const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+void mkK2_Run_avx512(const mkKPlan2 *p, const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky);
+void mkK3_Run_avx512(const mkKPlan3 *p, const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+#endif
+
+/* Scalar single-shape maps of the canonical shapes, from the scalar build of
+ * kernel_body.h; body.c exposes them through the public API. */
+void mkK2_Surface(const mkKShape2 *s, double u1, double u2, double *x, double *m);
+void mkK2_Support(const mkKShape2 *s, double d1, double d2, double *x);
+void mkK2_GradInv(const mkKShape2 *s, double m1, double m2, double *x);
+void mkK3_Surface(const mkKShape3 *s, double u1, double u2, double u3, double *x, double *m);
+void mkK3_Support(const mkKShape3 *s, double d1, double d2, double d3, double *x);
+void mkK3_GradInv(const mkKShape3 *s, double m1, double m2, double m3, double *x);
+
+#endif

@@ -1,0 +1,291 @@
+/* kernel_body.h - the closed-form kernels, written once over a lane type.
+ *
+ * Included by kernel_scalar.c (one double per lane, libm), kernel_avx2.c
+ * (4 lanes, SLEEF) and kernel_avx512.c (8 lanes, SLEEF), each of which first
+ * defines:
+ *   KV           lane type;  KM  mask type (result of a comparison of KV)
+ *   KW           lanes per KV
+ *   KEXP KLOG KLOG1P KSQRT      elementwise functions
+ *   KABS(v) KCOPYSIGN(mag, s) KSEL(mask, a, b)   (mask ? a : b)
+ *   KLOAD(p) KSTORE(p, v)       unaligned load / store of KW doubles
+ *   KSPLAT(s)    a lane value with every lane equal to the double s
+ *   KFN(name)    appends the ISA suffix to a function name
+ *
+ * Numerics (see NUMERICS notes in the README). Every power is taken in the
+ * log domain on ratios that are at most 1, after dividing by the largest
+ * component, so that exponents from 5e-7 to 2e6 neither overflow nor lose
+ * the dominant components' digits; the small complement that the published
+ * 3D gradient formula computes as 1 - (k m3)^(2/(2-e1)) is instead built from
+ * the other components (the hypotenuse of the inner pair). A zero component
+ * gives log 0 = -inf, which only ever meets multiplication by a positive
+ * constant or addition of a finite value, so it yields exp(-inf) = 0 and
+ * never NaN. */
+
+#define KTINY 1e-300 /* floor of a divisor that may be exactly zero */
+
+static inline KV KFN(kmax)(KV a, KV b) { return KSEL(a >= b, a, b); }
+static inline KV KFN(kmin)(KV a, KV b) { return KSEL(a >= b, b, a); }
+
+/* For a, b >= 0 (not both zero) and q > 1: the dual-norm ratios
+ * ra = (a / |(a,b)|_q)^(q-1), rb likewise, and the pieces of the norm,
+ * |(a,b)|_q = mx * exp(L / q). */
+static inline void KFN(pair_dual)(KV a, KV b, double q, double qm1, double k,
+	KV *ra, KV *rb, KV *mx_out, KV *L_out)
+{
+	KM agb = a >= b;
+	KV mx = KSEL(agb, a, b), mn = KSEL(agb, b, a);
+	KV r = mn / KFN(kmax)(mx, KSPLAT(KTINY));
+	KV lr = KLOG(r);
+	KV L = KLOG1P(KEXP(q * lr));
+	KV cmax = KEXP(-k * L);
+	KV cmin = KEXP(qm1 * lr - k * L);
+	*ra = KSEL(agb, cmax, cmin);
+	*rb = KSEL(agb, cmin, cmax);
+	*mx_out = mx;
+	*L_out = L;
+}
+
+/* ---- 2D ------------------------------------------------------------------ */
+
+/* B1's point f(u) and a positive multiple of its gradient g(u). */
+static inline void KFN(se_surface)(const mkKShape2 *s, KV u1, KV u2,
+	KV *x1, KV *x2, KV *m1, KV *m2)
+{
+	if (s->ellipse) {
+		*x1 = s->a * u1; *x2 = s->b * u2;
+		*m1 = u1 / s->a; *m2 = u2 / s->b;
+		return;
+	}
+	KV l1 = KLOG(KABS(u1)), l2 = KLOG(KABS(u2));
+	*x1 = s->a * KCOPYSIGN(KEXP(s->eps * l1), u1);
+	*x2 = s->b * KCOPYSIGN(KEXP(s->eps * l2), u2);
+	/* g_i = sp(u_i, 2-eps)/a_i, scaled so that its largest component is 1 */
+	KV g1 = s->twome * l1 - s->loga, g2 = s->twome * l2 - s->logb;
+	KV gm = KFN(kmax)(g1, g2);
+	*m1 = KCOPYSIGN(KEXP(g1 - gm), u1);
+	*m2 = KCOPYSIGN(KEXP(g2 - gm), u2);
+}
+
+/* Theorem 1's f~(d): the support point in direction d (any nonzero d). */
+static inline void KFN(se_support)(const mkKShape2 *s, KV d1, KV d2, KV *x1, KV *x2)
+{
+	if (s->ellipse) { /* A^2 d / |A d| */
+		KV v1 = s->a * d1, v2 = s->b * d2;
+		KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2);
+		*x1 = s->a * v1 * inv; *x2 = s->b * v2 * inv;
+		return;
+	}
+	KV r1, r2, mx, L;
+	KFN(pair_dual)(KABS(s->a * d1), KABS(s->b * d2), s->q, s->qm1, s->k, &r1, &r2, &mx, &L);
+	*x1 = s->a * KCOPYSIGN(r1, d1);
+	*x2 = s->b * KCOPYSIGN(r2, d2);
+}
+
+/* Theorem 2's f~~(m) for a gradient direction m: u = g^-1(m)/|g^-1(m)|,
+ * x = f(u), with g^-1(m)_i proportional to (a_i |m_i|)^(1/(2-eps)). */
+static inline void KFN(se_gradinv)(const mkKShape2 *s, KV m1, KV m2, KV *x1, KV *x2)
+{
+	if (s->ellipse) { KFN(se_support)(s, m1, m2, x1, x2); return; }
+	KV p1 = KABS(s->a * m1), p2 = KABS(s->b * m2);
+	KM pg = p1 >= p2;
+	KV mx = KSEL(pg, p1, p2), mn = KSEL(pg, p2, p1);
+	KV lr = KLOG(mn / KFN(kmax)(mx, KSPLAT(KTINY)));
+	KV al = lr * s->inv2me;              /* log(w_min / w_max) */
+	KV L = KLOG1P(KEXP(2.0 * al));       /* log(|w|^2 / w_max^2) */
+	KV xmax = KEXP(-0.5 * s->eps * L);   /* u_max^eps */
+	KV xmin = KEXP(s->eps * (al - 0.5 * L));
+	*x1 = s->a * KCOPYSIGN(KSEL(pg, xmax, xmin), m1);
+	*x2 = s->b * KCOPYSIGN(KSEL(pg, xmin, xmax), m2);
+}
+
+static inline void KFN(se_dir)(const mkKShape2 *s, int form, KV d1, KV d2, KV *x1, KV *x2)
+{
+	if (form == MK_FORM_NORMAL) KFN(se_support)(s, d1, d2, x1, x2);
+	else KFN(se_gradinv)(s, d1, d2, x1, x2);
+}
+
+static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const double *puy,
+	double *px, double *py, double *pkx, double *pky)
+{
+	KV u1 = KLOAD(pux), u2 = KLOAD(puy);
+	KV x1, x2, n1, n2;
+	if (p->param == MK_PARAM_SURFACE) {
+		KV m1, m2;
+		KFN(se_surface)(&p->s1, u1, u2, &x1, &x2, &m1, &m2);
+		n1 = p->M1iT[0][0] * m1 + p->M1iT[0][1] * m2;
+		n2 = p->M1iT[1][0] * m1 + p->M1iT[1][1] * m2;
+	} else {
+		n1 = u1; n2 = u2;
+		KV d1 = p->M1T[0][0] * n1 + p->M1T[0][1] * n2;
+		KV d2 = p->M1T[1][0] * n1 + p->M1T[1][1] * n2;
+		KFN(se_dir)(&p->s1, p->form, d1, d2, &x1, &x2);
+	}
+	KV k1 = p->t1[0] + (p->M1[0][0] * x1 + p->M1[0][1] * x2);
+	KV k2 = p->t1[1] + (p->M1[1][0] * x1 + p->M1[1][1] * x2);
+	KV e1 = p->sigma * (p->M2T[0][0] * n1 + p->M2T[0][1] * n2);
+	KV e2 = p->sigma * (p->M2T[1][0] * n1 + p->M2T[1][1] * n2);
+	KV y1, y2;
+	KFN(se_dir)(&p->s2, p->form, e1, e2, &y1, &y2);
+	KV o1 = p->sigma * (p->M2[0][0] * y1 + p->M2[0][1] * y2) + p->t2p[0];
+	KV o2 = p->sigma * (p->M2[1][0] * y1 + p->M2[1][1] * y2) + p->t2p[1];
+	KSTORE(px, k1 + o1);
+	KSTORE(py, k2 + o2);
+	if (pkx) { KSTORE(pkx, k1); KSTORE(pky, k2); }
+}
+
+void KFN(mkK2_Run)(const mkKPlan2 *p, const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky)
+{
+	int i = 0;
+	for (; i + KW <= n; i += KW)
+		KFN(block2)(p, ux + i, uy + i, x + i, y + i, kx ? kx + i : NULL, ky ? ky + i : NULL);
+	int r = n - i;
+	if (r > 0) { /* tail: pad a lane block with copies of the last input */
+		double bu[2][KW], bo[4][KW];
+		for (int j = 0; j < KW; ++j) {
+			int s = i + (j < r ? j : r - 1);
+			bu[0][j] = ux[s]; bu[1][j] = uy[s];
+		}
+		KFN(block2)(p, bu[0], bu[1], bo[0], bo[1], bo[2], bo[3]);
+		for (int j = 0; j < r; ++j) {
+			x[i + j] = bo[0][j]; y[i + j] = bo[1][j];
+			if (kx) { kx[i + j] = bo[2][j]; ky[i + j] = bo[3][j]; }
+		}
+	}
+}
+
+/* ---- 3D ------------------------------------------------------------------ */
+
+static inline void KFN(sq_surface)(const mkKShape3 *s, KV u1, KV u2, KV u3,
+	KV *x1, KV *x2, KV *x3, KV *m1, KV *m2, KV *m3)
+{
+	if (s->ellipse) {
+		*x1 = s->a * u1; *x2 = s->b * u2; *x3 = s->c * u3;
+		*m1 = u1 / s->a; *m2 = u2 / s->b; *m3 = u3 / s->c;
+		return;
+	}
+	/* rho = cos(eta) and (cw, sw) = (cos, sin)(omega) come from u1, u2 directly,
+	 * never as 1 - u3^2. */
+	KV rho = KSQRT(u1 * u1 + u2 * u2);
+	KV rs = KFN(kmax)(rho, KSPLAT(KTINY));
+	KV lrho = KLOG(rho);
+	KV lc = KLOG(KABS(u1) / rs), ls = KLOG(KABS(u2) / rs);
+	KV l3 = KLOG(KABS(u3));
+	*x1 = s->a * KCOPYSIGN(KEXP(s->e1 * lrho + s->e2 * lc), u1);
+	*x2 = s->b * KCOPYSIGN(KEXP(s->e1 * lrho + s->e2 * ls), u2);
+	*x3 = s->c * KCOPYSIGN(KEXP(s->e1 * l3), u3);
+	/* g(u) (paper eq. 3d_sq_m_u up to the factor 2/e1), scaled to max 1 */
+	KV g1 = s->twome1 * lrho + s->twome2 * lc - s->loga;
+	KV g2 = s->twome1 * lrho + s->twome2 * ls - s->logb;
+	KV g3 = s->twome1 * l3 - s->logc;
+	KV gm = KFN(kmax)(KFN(kmax)(g1, g2), g3);
+	*m1 = KCOPYSIGN(KEXP(g1 - gm), u1);
+	*m2 = KCOPYSIGN(KEXP(g2 - gm), u2);
+	*m3 = KCOPYSIGN(KEXP(g3 - gm), u3);
+}
+
+/* Support point of the nested norm: inner l_q2 over (x, y), outer l_q1. */
+static inline void KFN(sq_support)(const mkKShape3 *s, KV d1, KV d2, KV d3, KV *x1, KV *x2, KV *x3)
+{
+	if (s->ellipse) {
+		KV v1 = s->a * d1, v2 = s->b * d2, v3 = s->c * d3;
+		KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2 + v3 * v3);
+		*x1 = s->a * v1 * inv; *x2 = s->b * v2 * inv; *x3 = s->c * v3 * inv;
+		return;
+	}
+	KV r1, r2, mx, L, rg, r3, mxo, Lo;
+	KFN(pair_dual)(KABS(s->a * d1), KABS(s->b * d2), s->q2, s->q2m1, s->k2, &r1, &r2, &mx, &L);
+	KV g = mx * KEXP(L * s->invq2); /* |(u1, u2)|_q2 */
+	KFN(pair_dual)(g, KABS(s->c * d3), s->q1, s->q1m1, s->k1, &rg, &r3, &mxo, &Lo);
+	*x1 = s->a * KCOPYSIGN(rg * r1, d1);
+	*x2 = s->b * KCOPYSIGN(rg * r2, d2);
+	*x3 = s->c * KCOPYSIGN(r3, d3);
+}
+
+/* f~~(m) through g^-1 (paper eq. 3d_sq_u_m), normalised, then f. With
+ * p = (a|m1|, b|m2|, c|m3|): w12 = |(w1, w2)| and w3 are compared in the log
+ * domain, D = log(w12/w3), and cos(eta), sin(eta) follow from D alone. */
+static inline void KFN(sq_gradinv)(const mkKShape3 *s, KV m1, KV m2, KV m3, KV *x1, KV *x2, KV *x3)
+{
+	if (s->ellipse) { KFN(sq_support)(s, m1, m2, m3, x1, x2, x3); return; }
+	KV p1 = KABS(s->a * m1), p2 = KABS(s->b * m2), p3 = KABS(s->c * m3);
+	KM pg = p1 >= p2;
+	KV P12 = KSEL(pg, p1, p2), mn = KSEL(pg, p2, p1);
+	KV P = KFN(kmax)(P12, p3);
+	KV lr = KLOG(mn / KFN(kmax)(P12, KSPLAT(KTINY)));
+	KV al = lr * s->inv2me2;            /* log(w_min / w_max) in the inner pair */
+	KV L12 = KLOG1P(KEXP(2.0 * al));
+	KV D = (KLOG(P12 / P) - KLOG(p3 / P) + 0.5 * s->twome2 * L12) * s->inv2me1;
+	KV aD = KABS(D);
+	KV le = KLOG1P(KEXP(-2.0 * aD));
+	KM dpos = D >= 0.0;
+	KV lrho = KSEL(dpos, -0.5 * le, D - 0.5 * le);  /* log cos(eta) */
+	KV l3 = KSEL(dpos, -D - 0.5 * le, -0.5 * le);    /* log |sin(eta)| */
+	KV lcmax = -0.5 * L12, lcmin = al - 0.5 * L12;  /* log cos/sin(omega) */
+	KV lc1 = KSEL(pg, lcmax, lcmin), lc2 = KSEL(pg, lcmin, lcmax);
+	*x1 = s->a * KCOPYSIGN(KEXP(s->e1 * lrho + s->e2 * lc1), m1);
+	*x2 = s->b * KCOPYSIGN(KEXP(s->e1 * lrho + s->e2 * lc2), m2);
+	*x3 = s->c * KCOPYSIGN(KEXP(s->e1 * l3), m3);
+}
+
+static inline void KFN(sq_dir)(const mkKShape3 *s, int form, KV d1, KV d2, KV d3, KV *x1, KV *x2, KV *x3)
+{
+	if (form == MK_FORM_NORMAL) KFN(sq_support)(s, d1, d2, d3, x1, x2, x3);
+	else KFN(sq_gradinv)(s, d1, d2, d3, x1, x2, x3);
+}
+
+#define KMV3(A, v1, v2, v3, i) ((A)[i][0] * (v1) + (A)[i][1] * (v2) + (A)[i][2] * (v3))
+
+static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const double *puy, const double *puz,
+	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
+{
+	KV u1 = KLOAD(pux), u2 = KLOAD(puy), u3 = KLOAD(puz);
+	KV x1, x2, x3, n1, n2, n3;
+	if (p->param == MK_PARAM_SURFACE) {
+		KV m1, m2, m3;
+		KFN(sq_surface)(&p->s1, u1, u2, u3, &x1, &x2, &x3, &m1, &m2, &m3);
+		n1 = KMV3(p->M1iT, m1, m2, m3, 0);
+		n2 = KMV3(p->M1iT, m1, m2, m3, 1);
+		n3 = KMV3(p->M1iT, m1, m2, m3, 2);
+	} else {
+		n1 = u1; n2 = u2; n3 = u3;
+		KV d1 = KMV3(p->M1T, n1, n2, n3, 0);
+		KV d2 = KMV3(p->M1T, n1, n2, n3, 1);
+		KV d3 = KMV3(p->M1T, n1, n2, n3, 2);
+		KFN(sq_dir)(&p->s1, p->form, d1, d2, d3, &x1, &x2, &x3);
+	}
+	KV k1 = p->t1[0] + KMV3(p->M1, x1, x2, x3, 0);
+	KV k2 = p->t1[1] + KMV3(p->M1, x1, x2, x3, 1);
+	KV k3 = p->t1[2] + KMV3(p->M1, x1, x2, x3, 2);
+	KV e1 = p->sigma * KMV3(p->M2T, n1, n2, n3, 0);
+	KV e2 = p->sigma * KMV3(p->M2T, n1, n2, n3, 1);
+	KV e3 = p->sigma * KMV3(p->M2T, n1, n2, n3, 2);
+	KV y1, y2, y3;
+	KFN(sq_dir)(&p->s2, p->form, e1, e2, e3, &y1, &y2, &y3);
+	KSTORE(px, k1 + (p->sigma * KMV3(p->M2, y1, y2, y3, 0) + p->t2p[0]));
+	KSTORE(py, k2 + (p->sigma * KMV3(p->M2, y1, y2, y3, 1) + p->t2p[1]));
+	KSTORE(pz, k3 + (p->sigma * KMV3(p->M2, y1, y2, y3, 2) + p->t2p[2]));
+	if (pkx) { KSTORE(pkx, k1); KSTORE(pky, k2); KSTORE(pkz, k3); }
+}
+
+void KFN(mkK3_Run)(const mkKPlan3 *p, const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz)
+{
+	int i = 0;
+	for (; i + KW <= n; i += KW)
+		KFN(block3)(p, ux + i, uy + i, uz + i, x + i, y + i, z + i,
+			kx ? kx + i : NULL, ky ? ky + i : NULL, kz ? kz + i : NULL);
+	int r = n - i;
+	if (r > 0) {
+		double bu[3][KW], bo[6][KW];
+		for (int j = 0; j < KW; ++j) {
+			int s = i + (j < r ? j : r - 1);
+			bu[0][j] = ux[s]; bu[1][j] = uy[s]; bu[2][j] = uz[s];
+		}
+		KFN(block3)(p, bu[0], bu[1], bu[2], bo[0], bo[1], bo[2], bo[3], bo[4], bo[5]);
+		for (int j = 0; j < r; ++j) {
+			x[i + j] = bo[0][j]; y[i + j] = bo[1][j]; z[i + j] = bo[2][j];
+			if (kx) { kx[i + j] = bo[3][j]; ky[i + j] = bo[4][j]; kz[i + j] = bo[5][j]; }
+		}
+	}
+}

@@ -1,0 +1,120 @@
+/* metrics.c - e_implicit, e_gradient and the normal angle, in long double. */
+#include "mink/metrics.h"
+
+#include <math.h>
+
+typedef long double ld;
+
+static ld spowl(ld v, ld e) { return copysignl(powl(fabsl(v), e), v); }
+
+/* Psi and its gradient for the canonical shapes, long double. */
+static ld psi2(mkShape2 s, const ld *x, ld *g)
+{
+	ld p = 2.0L / s.eps, a = s.a, b = s.b;
+	if (g) {
+		g[0] = p / a * spowl(x[0] / a, p - 1.0L);
+		g[1] = p / b * spowl(x[1] / b, p - 1.0L);
+	}
+	return powl(fabsl(x[0] / a), p) + powl(fabsl(x[1] / b), p);
+}
+
+static ld psi3(mkShape3 s, const ld *x, ld *g)
+{
+	ld p2 = 2.0L / s.eps2, p1 = 2.0L / s.eps1, a = s.a, b = s.b, c = s.c;
+	ld in = powl(fabsl(x[0] / a), p2) + powl(fabsl(x[1] / b), p2);
+	if (g) {
+		ld f = in > 0.0L ? powl(in, (ld)s.eps2 / s.eps1 - 1.0L) : 0.0L;
+		g[0] = p1 / a * f * spowl(x[0] / a, p2 - 1.0L);
+		g[1] = p1 / b * f * spowl(x[1] / b, p2 - 1.0L);
+		g[2] = p1 / c * spowl(x[2] / c, p1 - 1.0L);
+	}
+	return powl(in, (ld)s.eps2 / s.eps1) + powl(fabsl(x[2] / c), p1);
+}
+
+/* Solve M y = r for y (d = 2 or 3) by the adjugate, in long double. */
+static void solve(const double *M, int d, const ld *r, ld *y)
+{
+	ld m[3][3];
+	for (int i = 0; i < d; ++i)
+		for (int j = 0; j < d; ++j) m[i][j] = M[i * d + j];
+	if (d == 2) {
+		ld det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+		y[0] = (m[1][1] * r[0] - m[0][1] * r[1]) / det;
+		y[1] = (m[0][0] * r[1] - m[1][0] * r[0]) / det;
+		return;
+	}
+	ld c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+	ld c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+	ld c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+	ld det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+	ld inv[3][3] = {
+		{c00, m[0][2] * m[2][1] - m[0][1] * m[2][2], m[0][1] * m[1][2] - m[0][2] * m[1][1]},
+		{c01, m[0][0] * m[2][2] - m[0][2] * m[2][0], m[0][2] * m[1][0] - m[0][0] * m[1][2]},
+		{c02, m[0][1] * m[2][0] - m[0][0] * m[2][1], m[0][0] * m[1][1] - m[0][1] * m[1][0]},
+	};
+	for (int i = 0; i < 3; ++i) y[i] = (inv[i][0] * r[0] + inv[i][1] * r[1] + inv[i][2] * r[2]) / det;
+}
+
+/* World gradient M^-T g: solve M^T w = g. */
+static void world_grad(const double *M, int d, const ld *g, ld *w)
+{
+	double T[9];
+	for (int i = 0; i < d; ++i)
+		for (int j = 0; j < d; ++j) T[i * d + j] = M[j * d + i];
+	solve(T, d, g, w);
+}
+
+static void angle_metrics(const ld *n1, const ld *n2, int d, int plus, mkCheck *c)
+{
+	/* n2 is B2's outward normal; the ideal is n1 = -n2 (contact) or n1 = n2 (plus). */
+	ld s = plus ? 1.0L : -1.0L;
+	ld dot = 0, nn1 = 0, nn2 = 0, cr2 = 0;
+	for (int i = 0; i < d; ++i) { dot += n1[i] * s * n2[i]; nn1 += n1[i] * n1[i]; nn2 += n2[i] * n2[i]; }
+	if (d == 2) {
+		ld cr = n1[0] * s * n2[1] - n1[1] * s * n2[0];
+		cr2 = cr * cr;
+	} else {
+		ld c0 = n1[1] * n2[2] - n1[2] * n2[1], c1 = n1[2] * n2[0] - n1[0] * n2[2], c2 = n1[0] * n2[1] - n1[1] * n2[0];
+		cr2 = c0 * c0 + c1 * c1 + c2 * c2;
+	}
+	ld cosang = dot / sqrtl(nn1 * nn2);
+	/* e_gradient as printed: |cos(angle(grad1, grad2)) + 1| with grad2 reversed for the plus set */
+	c->e_gradient = (double)fabsl(1.0L - cosang);
+	c->angle = (double)atan2l(sqrtl(cr2), dot);
+}
+
+mkCheck mkCheck2(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 x, mkVec2 k)
+{
+	mkCheck c;
+	int plus = set == MK_SET_PLUS;
+	ld r[2] = {(ld)k.x - x.x, (ld)k.y - x.y};
+	if (plus) { r[0] = (ld)x.x - k.x - b2.t.x; r[1] = (ld)x.y - k.y - b2.t.y; }
+	ld y[2], g2[2], n2[2];
+	solve(&b2.M.m[0][0], 2, r, y);
+	c.e_implicit = (double)fabsl(psi2(b2.shape, y, g2) - 1.0L);
+	world_grad(&b2.M.m[0][0], 2, g2, n2);
+	ld r1[2] = {(ld)k.x - b1.t.x, (ld)k.y - b1.t.y}, y1[2], g1[2], n1[2];
+	solve(&b1.M.m[0][0], 2, r1, y1);
+	c.e_implicit1 = (double)fabsl(psi2(b1.shape, y1, g1) - 1.0L);
+	world_grad(&b1.M.m[0][0], 2, g1, n1);
+	angle_metrics(n1, n2, 2, plus, &c);
+	return c;
+}
+
+mkCheck mkCheck3(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 x, mkVec3 k)
+{
+	mkCheck c;
+	int plus = set == MK_SET_PLUS;
+	ld r[3] = {(ld)k.x - x.x, (ld)k.y - x.y, (ld)k.z - x.z};
+	if (plus) { r[0] = (ld)x.x - k.x - b2.t.x; r[1] = (ld)x.y - k.y - b2.t.y; r[2] = (ld)x.z - k.z - b2.t.z; }
+	ld y[3], g2[3], n2[3];
+	solve(&b2.M.m[0][0], 3, r, y);
+	c.e_implicit = (double)fabsl(psi3(b2.shape, y, g2) - 1.0L);
+	world_grad(&b2.M.m[0][0], 3, g2, n2);
+	ld r1[3] = {(ld)k.x - b1.t.x, (ld)k.y - b1.t.y, (ld)k.z - b1.t.z}, y1[3], g1[3], n1[3];
+	solve(&b1.M.m[0][0], 3, r1, y1);
+	c.e_implicit1 = (double)fabsl(psi3(b1.shape, y1, g1) - 1.0L);
+	world_grad(&b1.M.m[0][0], 3, g1, n1);
+	angle_metrics(n1, n2, 3, plus, &c);
+	return c;
+}

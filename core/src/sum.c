@@ -1,0 +1,308 @@
+/* sum.c - the batch entry points: argument checks, the per-call constants,
+ * the choice of kernel, the published gradient formula as a reference, the
+ * paper's parameter sampling and the ellipsoid special forms. */
+#include "mink/sum.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "kernel.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+mkSumOptions mkSumOptions_Default(void)
+{
+	mkSumOptions o = {MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, MK_IMPL_AUTO};
+	return o;
+}
+
+static const char *const set_names[] = {"contact", "plus"};
+static const char *const form_names[] = {"normal", "gradient", "paper"};
+static const char *const param_names[] = {"surface", "normal"};
+static const char *const impl_names[] = {"auto", "scalar", "avx2", "avx512"};
+
+#define NAME_OF(tab, v) ((int)(v) >= 0 && (size_t)(v) < sizeof tab / sizeof tab[0] ? tab[(int)(v)] : "?")
+
+static int parse_name(const char *const *tab, int n, const char *s)
+{
+	if (!s) return -1;
+	for (int i = 0; i < n; ++i)
+		if (strcmp(tab[i], s) == 0) return i;
+	return -1;
+}
+
+const char *mkSet_Name(mkSet v) { return NAME_OF(set_names, v); }
+const char *mkForm_Name(mkForm v) { return NAME_OF(form_names, v); }
+const char *mkParam_Name(mkParam v) { return NAME_OF(param_names, v); }
+const char *mkImpl_Name(mkImpl v) { return NAME_OF(impl_names, v); }
+int mkSet_Parse(const char *s) { return parse_name(set_names, 2, s); }
+int mkForm_Parse(const char *s) { return parse_name(form_names, 3, s); }
+int mkParam_Parse(const char *s) { return parse_name(param_names, 2, s); }
+int mkImpl_Parse(const char *s) { return parse_name(impl_names, 4, s); }
+
+int mkImpl_Available(mkImpl impl)
+{
+	switch (impl) {
+	case MK_IMPL_AUTO:
+	case MK_IMPL_SCALAR:
+		return 1;
+#if defined(MINK_HAVE_X86_KERNELS)
+	case MK_IMPL_AVX2:
+		return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+	case MK_IMPL_AVX512:
+		return __builtin_cpu_supports("avx512f");
+#endif
+	default:
+		return 0;
+	}
+}
+
+mkImpl mkImpl_Resolve(mkImpl impl)
+{
+	if (impl != MK_IMPL_AUTO) return impl;
+	if (mkImpl_Available(MK_IMPL_AVX512)) return MK_IMPL_AVX512;
+	if (mkImpl_Available(MK_IMPL_AVX2)) return MK_IMPL_AVX2;
+	return MK_IMPL_SCALAR;
+}
+
+static int options_ok(const mkSumOptions *o)
+{
+	return o && (o->set == MK_SET_CONTACT || o->set == MK_SET_PLUS)
+		&& (o->form == MK_FORM_NORMAL || o->form == MK_FORM_GRADIENT || o->form == MK_FORM_PAPER)
+		&& (o->param == MK_PARAM_SURFACE || o->param == MK_PARAM_NORMAL)
+		&& (int)o->impl >= MK_IMPL_AUTO && o->impl <= MK_IMPL_AVX512;
+}
+
+static void plan2(mkKPlan2 *p, mkBody2 b1, mkBody2 b2, const mkSumOptions *o)
+{
+	mkKShape2_Prepare(&p->s1, b1.shape);
+	mkKShape2_Prepare(&p->s2, b2.shape);
+	mkMat2 M1iT = mkMat2_Transpose(mkMat2_Inverse(b1.M));
+	mkMat2 M1T = mkMat2_Transpose(b1.M), M2T = mkMat2_Transpose(b2.M);
+	memcpy(p->M1, b1.M.m, sizeof p->M1);
+	memcpy(p->M1T, M1T.m, sizeof p->M1T);
+	memcpy(p->M1iT, M1iT.m, sizeof p->M1iT);
+	memcpy(p->M2, b2.M.m, sizeof p->M2);
+	memcpy(p->M2T, M2T.m, sizeof p->M2T);
+	p->t1[0] = b1.t.x; p->t1[1] = b1.t.y;
+	int plus = o->set == MK_SET_PLUS;
+	p->t2p[0] = plus ? b2.t.x : 0.0; p->t2p[1] = plus ? b2.t.y : 0.0;
+	p->sigma = plus ? 1.0 : -1.0;
+	p->form = o->form; p->param = o->param;
+}
+
+static void plan3(mkKPlan3 *p, mkBody3 b1, mkBody3 b2, const mkSumOptions *o)
+{
+	mkKShape3_Prepare(&p->s1, b1.shape);
+	mkKShape3_Prepare(&p->s2, b2.shape);
+	mkMat3 M1iT = mkMat3_Transpose(mkMat3_Inverse(b1.M));
+	mkMat3 M1T = mkMat3_Transpose(b1.M), M2T = mkMat3_Transpose(b2.M);
+	memcpy(p->M1, b1.M.m, sizeof p->M1);
+	memcpy(p->M1T, M1T.m, sizeof p->M1T);
+	memcpy(p->M1iT, M1iT.m, sizeof p->M1iT);
+	memcpy(p->M2, b2.M.m, sizeof p->M2);
+	memcpy(p->M2T, M2T.m, sizeof p->M2T);
+	p->t1[0] = b1.t.x; p->t1[1] = b1.t.y; p->t1[2] = b1.t.z;
+	int plus = o->set == MK_SET_PLUS;
+	p->t2p[0] = plus ? b2.t.x : 0.0; p->t2p[1] = plus ? b2.t.y : 0.0; p->t2p[2] = plus ? b2.t.z : 0.0;
+	p->sigma = plus ? 1.0 : -1.0;
+	p->form = o->form; p->param = o->param;
+}
+
+/* ---- the published gradient formula (reference only) -------------------------- */
+
+/* Theorem 2 with Phi, eq. mink_sum_transform_2, as printed: B1's point and
+ * gradient from its parameter, m2' = M2^T M1^-T m1, m2 = -+Phi(m2')/|m2'| m2',
+ * x2 = f~~2(m2) by the printed formula. */
+static void paper2(mkBody2 b1, mkBody2 b2, mkSet set, double ux, double uy, double *x, double *k)
+{
+	mkVec2 u = {ux, uy};
+	mkVec2 x1 = mkShape2_Point(b1.shape, u);
+	mkVec2 m1 = mkShape2_PointGradient(b1.shape, u);
+	mkVec2 mp = mkMat2_MulTVec(b2.M, mkMat2_MulTVec(mkMat2_Inverse(b1.M), m1));
+	double sg = set == MK_SET_PLUS ? 1.0 : -1.0;
+	double sc = sg * mkShape2_Phi(b2.shape, mp) / hypot(mp.x, mp.y);
+	mkVec2 m2 = {sc * mp.x, sc * mp.y};
+	mkVec2 x2 = mkShape2_FromGradientPaper(b2.shape, m2);
+	mkVec2 p1 = mkMat2_MulVec(b1.M, x1), p2 = mkMat2_MulVec(b2.M, x2);
+	k[0] = b1.t.x + p1.x; k[1] = b1.t.y + p1.y;
+	x[0] = k[0] + sg * p2.x + (set == MK_SET_PLUS ? b2.t.x : 0.0);
+	x[1] = k[1] + sg * p2.y + (set == MK_SET_PLUS ? b2.t.y : 0.0);
+}
+
+static void paper3(mkBody3 b1, mkBody3 b2, mkSet set, double ux, double uy, double uz, double *x, double *k)
+{
+	mkVec3 u = {ux, uy, uz};
+	mkVec3 x1 = mkShape3_Point(b1.shape, u);
+	mkVec3 m1 = mkShape3_PointGradient(b1.shape, u);
+	mkVec3 mp = mkMat3_MulTVec(b2.M, mkMat3_MulTVec(mkMat3_Inverse(b1.M), m1));
+	double sg = set == MK_SET_PLUS ? 1.0 : -1.0;
+	double sc = sg * mkShape3_Phi(b2.shape, mp) / sqrt(mp.x * mp.x + mp.y * mp.y + mp.z * mp.z);
+	mkVec3 m2 = {sc * mp.x, sc * mp.y, sc * mp.z};
+	mkVec3 x2 = mkShape3_FromGradientPaper(b2.shape, m2);
+	mkVec3 p1 = mkMat3_MulVec(b1.M, x1), p2 = mkMat3_MulVec(b2.M, x2);
+	double pl = set == MK_SET_PLUS ? 1.0 : 0.0;
+	k[0] = b1.t.x + p1.x; k[1] = b1.t.y + p1.y; k[2] = b1.t.z + p1.z;
+	x[0] = k[0] + sg * p2.x + pl * b2.t.x;
+	x[1] = k[1] + sg * p2.y + pl * b2.t.y;
+	x[2] = k[2] + sg * p2.z + pl * b2.t.z;
+}
+
+/* ---- batches ---------------------------------------------------------------------- */
+
+mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
+	const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky)
+{
+	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !x || !y)) || (!kx != !ky))
+		return MK_ERR_ARGUMENT;
+	assert(mkBody2_IsValid(b1, "body1", NULL, 0) && mkBody2_IsValid(b2, "body2", NULL, 0));
+	mkImpl impl = mkImpl_Resolve(opt->impl);
+	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	if (opt->form == MK_FORM_PAPER) {
+		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR))
+			return MK_ERR_UNSUPPORTED;
+		for (int i = 0; i < n; ++i) {
+			double p[2], k[2];
+			paper2(b1, b2, opt->set, ux[i], uy[i], p, k);
+			x[i] = p[0]; y[i] = p[1];
+			if (kx) { kx[i] = k[0]; ky[i] = k[1]; }
+		}
+		return MK_OK;
+	}
+	mkKPlan2 p;
+	plan2(&p, b1, b2, opt);
+	switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+	case MK_IMPL_AVX512: mkK2_Run_avx512(&p, ux, uy, n, x, y, kx, ky); break;
+	case MK_IMPL_AVX2: mkK2_Run_avx2(&p, ux, uy, n, x, y, kx, ky); break;
+#endif
+	default: mkK2_Run_scalar(&p, ux, uy, n, x, y, kx, ky); break;
+	}
+	return MK_OK;
+}
+
+mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
+	const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz)
+{
+	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !uz || !x || !y || !z))
+		|| (!kx != !ky) || (!kx != !kz))
+		return MK_ERR_ARGUMENT;
+	assert(mkBody3_IsValid(b1, "body1", NULL, 0) && mkBody3_IsValid(b2, "body2", NULL, 0));
+	mkImpl impl = mkImpl_Resolve(opt->impl);
+	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	if (opt->form == MK_FORM_PAPER) {
+		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR))
+			return MK_ERR_UNSUPPORTED;
+		for (int i = 0; i < n; ++i) {
+			double p[3], k[3];
+			paper3(b1, b2, opt->set, ux[i], uy[i], uz[i], p, k);
+			x[i] = p[0]; y[i] = p[1]; z[i] = p[2];
+			if (kx) { kx[i] = k[0]; ky[i] = k[1]; kz[i] = k[2]; }
+		}
+		return MK_OK;
+	}
+	mkKPlan3 p;
+	plan3(&p, b1, b2, opt);
+	switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+	case MK_IMPL_AVX512: mkK3_Run_avx512(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+	case MK_IMPL_AVX2: mkK3_Run_avx2(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+#endif
+	default: mkK3_Run_scalar(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+	}
+	return MK_OK;
+}
+
+mkVec2 mkSum2_Point(mkBody2 b1, mkBody2 b2, mkSet set, mkForm form, mkParam param, mkVec2 u, mkVec2 *kiss)
+{
+	mkSumOptions o = {set, form, param, MK_IMPL_SCALAR};
+	mkVec2 r = {NAN, NAN}, k = {NAN, NAN};
+	mkSum2_Batch(b1, b2, &o, &u.x, &u.y, 1, &r.x, &r.y, &k.x, &k.y);
+	if (kiss) *kiss = k;
+	return r;
+}
+
+mkVec3 mkSum3_Point(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkParam param, mkVec3 u, mkVec3 *kiss)
+{
+	mkSumOptions o = {set, form, param, MK_IMPL_SCALAR};
+	mkVec3 r = {NAN, NAN, NAN}, k = {NAN, NAN, NAN};
+	mkSum3_Batch(b1, b2, &o, &u.x, &u.y, &u.z, 1, &r.x, &r.y, &r.z, &k.x, &k.y, &k.z);
+	if (kiss) *kiss = k;
+	return r;
+}
+
+/* ---- sampling --------------------------------------------------------------------- */
+
+mkResult mkSample2_Angles(int n, double *ux, double *uy)
+{
+	if (n < 1 || !ux || !uy) return MK_ERR_ARGUMENT;
+	for (int k = 0; k < n; ++k) {
+		double t = -M_PI + 2.0 * M_PI * k / n;
+		ux[k] = cos(t);
+		uy[k] = sin(t);
+	}
+	return MK_OK;
+}
+
+mkResult mkSample3_Grid(int n, double *ux, double *uy, double *uz)
+{
+	if (n < 2 || n > 46340 || !ux || !uy || !uz) return MK_ERR_ARGUMENT;
+	for (int i = 0; i < n; ++i) {
+		double eta = -0.5 * M_PI + M_PI * i / (n - 1);
+		double ce = cos(eta), se = sin(eta);
+		for (int j = 0; j < n; ++j) {
+			double w = -M_PI + 2.0 * M_PI * j / n;
+			ux[i * n + j] = ce * cos(w);
+			uy[i * n + j] = ce * sin(w);
+			uz[i * n + j] = se;
+		}
+	}
+	return MK_OK;
+}
+
+/* ---- the ellipsoid special forms -------------------------------------------------- */
+
+static double norm2(mkVec2 v) { return hypot(v.x, v.y); }
+static double norm3(mkVec3 v) { return sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+
+mkVec2 mkEllipse2_SumNormal(mkMat2 A1, mkMat2 A2, mkVec2 n)
+{
+	mkVec2 a1 = mkMat2_MulVec(A1, n), a2 = mkMat2_MulVec(A2, n);
+	double s1 = 1.0 / norm2(a1), s2 = 1.0 / norm2(a2);
+	mkVec2 b1 = mkMat2_MulVec(A1, a1), b2 = mkMat2_MulVec(A2, a2);
+	mkVec2 r = {b1.x * s1 + b2.x * s2, b1.y * s1 + b2.y * s2};
+	return r;
+}
+
+mkVec2 mkEllipse2_SumGradient(mkMat2 A1, mkMat2 A2, mkVec2 m)
+{
+	mkVec2 a1 = mkMat2_MulVec(A1, m), a2 = mkMat2_MulVec(A2, m);
+	double s2 = 1.0 / norm2(a2);
+	mkVec2 b1 = mkMat2_MulVec(A1, a1), b2 = mkMat2_MulVec(A2, a2);
+	mkVec2 r = {0.5 * b1.x + b2.x * s2, 0.5 * b1.y + b2.y * s2};
+	return r;
+}
+
+mkVec3 mkEllipse3_SumNormal(mkMat3 A1, mkMat3 A2, mkVec3 n)
+{
+	mkVec3 a1 = mkMat3_MulVec(A1, n), a2 = mkMat3_MulVec(A2, n);
+	double s1 = 1.0 / norm3(a1), s2 = 1.0 / norm3(a2);
+	mkVec3 b1 = mkMat3_MulVec(A1, a1), b2 = mkMat3_MulVec(A2, a2);
+	mkVec3 r = {b1.x * s1 + b2.x * s2, b1.y * s1 + b2.y * s2, b1.z * s1 + b2.z * s2};
+	return r;
+}
+
+mkVec3 mkEllipse3_SumGradient(mkMat3 A1, mkMat3 A2, mkVec3 m)
+{
+	mkVec3 a1 = mkMat3_MulVec(A1, m), a2 = mkMat3_MulVec(A2, m);
+	double s2 = 1.0 / norm3(a2);
+	mkVec3 b1 = mkMat3_MulVec(A1, a1), b2 = mkMat3_MulVec(A2, a2);
+	mkVec3 r = {0.5 * b1.x + b2.x * s2, 0.5 * b1.y + b2.y * s2, 0.5 * b1.z + b2.z * s2};
+	return r;
+}
