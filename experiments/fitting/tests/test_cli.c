@@ -1,0 +1,150 @@
+/* test_cli.c - the `fitting` command line: bad flags name the flag and its
+ * range, results come with a sidecar, existing results are skipped unless
+ * forced, and shards together give exactly the rows of the whole run.
+ * Usage: test_cli <path of fitting> <scratch directory> */
+#define _POSIX_C_SOURCE 200809L
+#include "ensure.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static const char *exe, *dir;
+
+/* Run the driver with args, stdout and stderr into dir/log; exit status. */
+static int run(const char *args)
+{
+	char cmd[2048];
+	snprintf(cmd, sizeof cmd, "'%s' %s > '%s/log' 2>&1", exe, args, dir);
+	int st = system(cmd);
+	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static char *slurp(const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	if (f == NULL) {
+		return NULL;
+	}
+	fseek(f, 0, SEEK_END);
+	long n = ftell(f);
+	fseek(f, 0, SEEK_SET);
+	char *buf = malloc((size_t)n + 1);
+	size_t got = fread(buf, 1, (size_t)n, f);
+	buf[got] = '\0';
+	fclose(f);
+	return buf;
+}
+
+static int logHas(const char *text)
+{
+	char path[1024];
+	snprintf(path, sizeof path, "%s/log", dir);
+	char *log = slurp(path);
+	int has = log != NULL && strstr(log, text) != NULL;
+	free(log);
+	return has;
+}
+
+static int cmpStr(const void *a, const void *b)
+{
+	return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* Split a CSV's data rows (header dropped) into *lines; count returned. */
+static int dataRows(char *text, char ***lines)
+{
+	int n = 0, cap = 64;
+	*lines = malloc(sizeof(char *) * (size_t)cap);
+	char *save = NULL;
+	char *line = strtok_r(text, "\n", &save); /* header */
+	while ((line = strtok_r(NULL, "\n", &save)) != NULL) {
+		if (n == cap) {
+			cap *= 2;
+			*lines = realloc(*lines, sizeof(char *) * (size_t)cap);
+		}
+		(*lines)[n++] = line;
+	}
+	return n;
+}
+
+int main(int argc, char **argv)
+{
+	if (argc != 3) {
+		fprintf(stderr, "usage: test_cli <fitting> <scratch dir>\n");
+		return 2;
+	}
+	exe = argv[1];
+	dir = argv[2];
+	char args[1536], path[1024];
+
+	/* bad flags: exit status 2, the message names the flag and the range */
+	ENSURE(run("--case 5") == 2 && logHas("--case") && logHas("1, 2, 3 or all"));
+	ENSURE(run("--trials 0") == 2 && logHas("--trials") && logHas("1..1000000"));
+	ENSURE(run("--trials 12x") == 2 && logHas("--trials"));
+	ENSURE(run("--seed -4") == 2 && logHas("--seed") && logHas("0..18446744073709551615"));
+	ENSURE(run("--shard 2/2") == 2 && logHas("--shard") && logHas("0 <= I < N"));
+	ENSURE(run("--shard x") == 2 && logHas("--shard"));
+	ENSURE(run("--frobnicate") == 2 && logHas("--frobnicate"));
+	ENSURE(run("--out") == 2 && logHas("--out"));
+	ENSURE(run("--help") == 0 && logHas("--shard I/N"));
+
+	/* a whole run: header + rows, and the sidecar */
+	snprintf(args, sizeof args, "--case all --trials 3 --seed 99 --force --out '%s/whole.csv'", dir);
+	ENSURE(run(args) == 0);
+	snprintf(path, sizeof path, "%s/whole.csv", dir);
+	char *whole = slurp(path);
+	snprintf(path, sizeof path, "%s/whole.csv.meta", dir);
+	char *meta = slurp(path);
+	ENSURE(whole != NULL && meta != NULL);
+	ENSURE(meta != NULL && strstr(meta, "seed") != NULL && strstr(meta, "99") != NULL);
+	ENSURE(whole != NULL && strncmp(whole, "case,trial,truth,model,sampling,level,vertices,", 47) == 0);
+
+	/* an existing result is skipped, untouched */
+	snprintf(args, sizeof args, "--case all --trials 3 --seed 99 --out '%s/whole.csv'", dir);
+	ENSURE(run(args) == 0 && logHas("skipped"));
+	snprintf(path, sizeof path, "%s/whole.csv", dir);
+	char *still = slurp(path);
+	ENSURE(whole != NULL && still != NULL && strcmp(whole, still) == 0);
+	free(still);
+
+	/* two shards give the same rows as the whole run */
+	for (int s = 0; s < 2; ++s) {
+		snprintf(args, sizeof args, "--case all --trials 3 --seed 99 --force --shard %d/2 --out '%s/s%d.csv'", s, dir, s);
+		ENSURE(run(args) == 0);
+	}
+	snprintf(path, sizeof path, "%s/s0.csv", dir);
+	char *s0 = slurp(path);
+	snprintf(path, sizeof path, "%s/s1.csv", dir);
+	char *s1 = slurp(path);
+	ENSURE(s0 != NULL && s1 != NULL);
+	if (whole != NULL && s0 != NULL && s1 != NULL) {
+		char **lw, **l0, **l1;
+		int nw = dataRows(whole, &lw), n0 = dataRows(s0, &l0), n1 = dataRows(s1, &l1);
+		/* 3 trials: case 1 one row each, case 2 34, case 3 8 */
+		ENSURE(nw == 3 * (1 + 34 + 8));
+		ENSURE(n0 + n1 == nw);
+		if (n0 + n1 == nw) {
+			char **both = malloc(sizeof(char *) * (size_t)nw);
+			memcpy(both, l0, sizeof(char *) * (size_t)n0);
+			memcpy(both + n0, l1, sizeof(char *) * (size_t)n1);
+			qsort(both, (size_t)nw, sizeof(char *), cmpStr);
+			qsort(lw, (size_t)nw, sizeof(char *), cmpStr);
+			int same = 1;
+			for (int i = 0; i < nw; ++i) {
+				same &= strcmp(both[i], lw[i]) == 0;
+			}
+			ENSURE(same);
+			free(both);
+		}
+		free(lw);
+		free(l0);
+		free(l1);
+	}
+	free(whole);
+	free(meta);
+	free(s0);
+	free(s1);
+	return ENSURE_DONE();
+}
