@@ -116,23 +116,33 @@ mkVec2 mkShape2_Gradient(mkShape2 s, mkVec2 x)
 	return g;
 }
 
+/* The inner term (|x/a|^p2 + |y/b|^p2)^(e2/e1) is evaluated as
+ * M^(2/e1) S^(e2/e1) with M = max(|x/a|, |y/b|) and S = sum of (ratio)^p2 in
+ * [1, 2], so that neither power underflows when p2 = 2/e2 is large. */
 double mkShape3_Implicit(mkShape3 s, mkVec3 x)
 {
 	double p2 = 2.0 / s.eps2, p1 = 2.0 / s.eps1;
-	double in = pow(fabs(x.x / s.a), p2) + pow(fabs(x.y / s.b), p2);
-	return pow(in, s.eps2 / s.eps1) + pow(fabs(x.z / s.c), p1);
+	double al = fabs(x.x / s.a), be = fabs(x.y / s.b), M = al > be ? al : be;
+	double inner = 0.0;
+	if (M > 0.0) {
+		double S = pow(al / M, p2) + pow(be / M, p2);
+		inner = pow(M, p1) * pow(S, s.eps2 / s.eps1);
+	}
+	return inner + pow(fabs(x.z / s.c), p1);
 }
 
 mkVec3 mkShape3_Gradient(mkShape3 s, mkVec3 x)
 {
 	double p2 = 2.0 / s.eps2, p1 = 2.0 / s.eps1;
-	double in = pow(fabs(x.x / s.a), p2) + pow(fabs(x.y / s.b), p2);
-	double f = in > 0.0 ? pow(in, s.eps2 / s.eps1 - 1.0) : 0.0;
-	mkVec3 g = {
-		p1 / s.a * f * spow(x.x / s.a, p2 - 1.0),
-		p1 / s.b * f * spow(x.y / s.b, p2 - 1.0),
-		p1 / s.c * spow(x.z / s.c, p1 - 1.0),
-	};
+	double al = x.x / s.a, be = x.y / s.b, M = fmax(fabs(al), fabs(be));
+	mkVec3 g = {0.0, 0.0, p1 / s.c * spow(x.z / s.c, p1 - 1.0)};
+	if (M > 0.0) {
+		double ra = al / M, rb = be / M;
+		double S = pow(fabs(ra), p2) + pow(fabs(rb), p2);
+		double f = pow(M, p1 - 1.0) * pow(S, s.eps2 / s.eps1 - 1.0);
+		g.x = p1 / s.a * f * spow(ra, p2 - 1.0);
+		g.y = p1 / s.b * f * spow(rb, p2 - 1.0);
+	}
 	return g;
 }
 
@@ -255,38 +265,18 @@ mkVec3 mkShape3_FromGradientPaper(mkShape3 s, mkVec3 m)
 	return x;
 }
 
-/* Lemma 1: Phi(m) = |g(u)| with u = g^-1(m)/|g^-1(m)|. The unit vector u of
- * the matched point is the one f~~ builds; g(u) is then the closed form of
- * mkShape2_PointGradient. */
-static mkVec2 unit_of_gradient2(mkShape2 s, mkVec2 m)
-{
-	double e = 2.0 - s.eps;
-	double w1 = pow(fabs(s.a * m.x), 1.0 / e), w2 = pow(fabs(s.b * m.y), 1.0 / e);
-	double n = hypot(w1, w2);
-	mkVec2 u = {copysign(w1 / n, m.x), copysign(w2 / n, m.y)};
-	return u;
-}
-
+/* Lemma 1: Phi(m) = |g2(u2)| with u2 the normalised g2^-1(m): the norm of
+ * the gradient at the boundary point whose gradient is parallel to m. That
+ * point is f~~(m); Phi is the norm of Psi's gradient there. */
 double mkShape2_Phi(mkShape2 s, mkVec2 m)
 {
-	mkVec2 g = mkShape2_PointGradient(s, unit_of_gradient2(s, m));
+	mkVec2 g = mkShape2_Gradient(s, mkShape2_FromGradient(s, m));
 	return hypot(g.x, g.y);
 }
 
 double mkShape3_Phi(mkShape3 s, mkVec3 m)
 {
-	/* g^-1 of eq. 3d_sq_u_m, whose rho sums the components of m itself (the
-	 * printed rho(m21, m22) names B2's gradient, which is what is sought). */
-	double h = 0.5 * s.eps1, e2 = 2.0 - s.eps2;
-	double p1 = fabs(s.a * h * m.x), p2 = fabs(s.b * h * m.y), p3 = fabs(s.c * h * m.z);
-	double rho = pow(p1, 2.0 / e2) + pow(p2, 2.0 / e2);
-	double kap = (s.eps1 - s.eps2) / (4.0 - 2.0 * s.eps1);
-	double rk = rho > 0.0 ? pow(rho, kap) : 0.0;
-	double w1 = pow(p1, 1.0 / e2) * rk, w2 = pow(p2, 1.0 / e2) * rk;
-	double w3 = pow(p3, 1.0 / (2.0 - s.eps1));
-	double n = sqrt(w1 * w1 + w2 * w2 + w3 * w3);
-	mkVec3 u = {copysign(w1 / n, m.x), copysign(w2 / n, m.y), copysign(w3 / n, m.z)};
-	mkVec3 g = mkShape3_PointGradient(s, u);
+	mkVec3 g = mkShape3_Gradient(s, mkShape3_FromGradient(s, m));
 	return sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
 }
 

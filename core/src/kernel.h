@@ -25,7 +25,11 @@ typedef struct mkKShape3 {
 
 typedef struct mkKPlan2 {
 	mkKShape2 s1, s2;
-	double M1[2][2], M1T[2][2], M1iT[2][2], M2[2][2], M2T[2][2];
+	double M1[2][2], M1T[2][2], M2[2][2];
+	/* B2's direction from the loop's source vector: sigma M2^T M1^-T (applied
+	 * to B1's gradient, surface parameters; eq. mink_sum_transform_2) or
+	 * sigma M2^T (applied to the normal, normal parameters). */
+	double D2[2][2];
 	double t1[2];    /* B1's centre: kissing point offset */
 	double t2p[2];   /* t2 for the plus set, 0 for the contact space */
 	double sigma;    /* -1 contact space, +1 plus */
@@ -35,7 +39,8 @@ typedef struct mkKPlan2 {
 
 typedef struct mkKPlan3 {
 	mkKShape3 s1, s2;
-	double M1[3][3], M1T[3][3], M1iT[3][3], M2[3][3], M2T[3][3];
+	double M1[3][3], M1T[3][3], M2[3][3];
+	double D2[3][3]; /* as in mkKPlan2 */
 	double t1[3];
 	double t2p[3];
 	double sigma;

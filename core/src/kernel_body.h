@@ -108,22 +108,18 @@ static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const doubl
 	double *px, double *py, double *pkx, double *pky)
 {
 	KV u1 = KLOAD(pux), u2 = KLOAD(puy);
-	KV x1, x2, n1, n2;
+	KV x1, x2, v1 = u1, v2 = u2; /* v: B1's gradient (surface) or the normal */
 	if (p->param == MK_PARAM_SURFACE) {
-		KV m1, m2;
-		KFN(se_surface)(&p->s1, u1, u2, &x1, &x2, &m1, &m2);
-		n1 = p->M1iT[0][0] * m1 + p->M1iT[0][1] * m2;
-		n2 = p->M1iT[1][0] * m1 + p->M1iT[1][1] * m2;
+		KFN(se_surface)(&p->s1, u1, u2, &x1, &x2, &v1, &v2);
 	} else {
-		n1 = u1; n2 = u2;
-		KV d1 = p->M1T[0][0] * n1 + p->M1T[0][1] * n2;
-		KV d2 = p->M1T[1][0] * n1 + p->M1T[1][1] * n2;
+		KV d1 = p->M1T[0][0] * u1 + p->M1T[0][1] * u2;
+		KV d2 = p->M1T[1][0] * u1 + p->M1T[1][1] * u2;
 		KFN(se_dir)(&p->s1, p->form, d1, d2, &x1, &x2);
 	}
 	KV k1 = p->t1[0] + (p->M1[0][0] * x1 + p->M1[0][1] * x2);
 	KV k2 = p->t1[1] + (p->M1[1][0] * x1 + p->M1[1][1] * x2);
-	KV e1 = p->sigma * (p->M2T[0][0] * n1 + p->M2T[0][1] * n2);
-	KV e2 = p->sigma * (p->M2T[1][0] * n1 + p->M2T[1][1] * n2);
+	KV e1 = p->D2[0][0] * v1 + p->D2[0][1] * v2;
+	KV e2 = p->D2[1][0] * v1 + p->D2[1][1] * v2;
 	KV y1, y2;
 	KFN(se_dir)(&p->s2, p->form, e1, e2, &y1, &y2);
 	KV o1 = p->sigma * (p->M2[0][0] * y1 + p->M2[0][1] * y2) + p->t2p[0];
@@ -240,26 +236,21 @@ static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const doubl
 	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
 {
 	KV u1 = KLOAD(pux), u2 = KLOAD(puy), u3 = KLOAD(puz);
-	KV x1, x2, x3, n1, n2, n3;
+	KV x1, x2, x3, v1 = u1, v2 = u2, v3 = u3;
 	if (p->param == MK_PARAM_SURFACE) {
-		KV m1, m2, m3;
-		KFN(sq_surface)(&p->s1, u1, u2, u3, &x1, &x2, &x3, &m1, &m2, &m3);
-		n1 = KMV3(p->M1iT, m1, m2, m3, 0);
-		n2 = KMV3(p->M1iT, m1, m2, m3, 1);
-		n3 = KMV3(p->M1iT, m1, m2, m3, 2);
+		KFN(sq_surface)(&p->s1, u1, u2, u3, &x1, &x2, &x3, &v1, &v2, &v3);
 	} else {
-		n1 = u1; n2 = u2; n3 = u3;
-		KV d1 = KMV3(p->M1T, n1, n2, n3, 0);
-		KV d2 = KMV3(p->M1T, n1, n2, n3, 1);
-		KV d3 = KMV3(p->M1T, n1, n2, n3, 2);
+		KV d1 = KMV3(p->M1T, u1, u2, u3, 0);
+		KV d2 = KMV3(p->M1T, u1, u2, u3, 1);
+		KV d3 = KMV3(p->M1T, u1, u2, u3, 2);
 		KFN(sq_dir)(&p->s1, p->form, d1, d2, d3, &x1, &x2, &x3);
 	}
 	KV k1 = p->t1[0] + KMV3(p->M1, x1, x2, x3, 0);
 	KV k2 = p->t1[1] + KMV3(p->M1, x1, x2, x3, 1);
 	KV k3 = p->t1[2] + KMV3(p->M1, x1, x2, x3, 2);
-	KV e1 = p->sigma * KMV3(p->M2T, n1, n2, n3, 0);
-	KV e2 = p->sigma * KMV3(p->M2T, n1, n2, n3, 1);
-	KV e3 = p->sigma * KMV3(p->M2T, n1, n2, n3, 2);
+	KV e1 = KMV3(p->D2, v1, v2, v3, 0);
+	KV e2 = KMV3(p->D2, v1, v2, v3, 1);
+	KV e3 = KMV3(p->D2, v1, v2, v3, 2);
 	KV y1, y2, y3;
 	KFN(sq_dir)(&p->s2, p->form, e1, e2, e3, &y1, &y2, &y3);
 	KSTORE(px, k1 + (p->sigma * KMV3(p->M2, y1, y2, y3, 0) + p->t2p[0]));

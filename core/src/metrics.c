@@ -18,17 +18,25 @@ static ld psi2(mkShape2 s, const ld *x, ld *g)
 	return powl(fabsl(x[0] / a), p) + powl(fabsl(x[1] / b), p);
 }
 
+/* Scaled as in mkShape3_Implicit so that no power underflows. */
 static ld psi3(mkShape3 s, const ld *x, ld *g)
 {
 	ld p2 = 2.0L / s.eps2, p1 = 2.0L / s.eps1, a = s.a, b = s.b, c = s.c;
-	ld in = powl(fabsl(x[0] / a), p2) + powl(fabsl(x[1] / b), p2);
-	if (g) {
-		ld f = in > 0.0L ? powl(in, (ld)s.eps2 / s.eps1 - 1.0L) : 0.0L;
-		g[0] = p1 / a * f * spowl(x[0] / a, p2 - 1.0L);
-		g[1] = p1 / b * f * spowl(x[1] / b, p2 - 1.0L);
-		g[2] = p1 / c * spowl(x[2] / c, p1 - 1.0L);
+	ld al = x[0] / a, be = x[1] / b, M = fmaxl(fabsl(al), fabsl(be));
+	ld inner = 0.0L;
+	if (g) { g[0] = g[1] = 0.0L; g[2] = p1 / c * spowl(x[2] / c, p1 - 1.0L); }
+	if (M > 0.0L) {
+		ld ra = al / M, rb = be / M;
+		ld S = powl(fabsl(ra), p2) + powl(fabsl(rb), p2);
+		ld q = (ld)s.eps2 / s.eps1;
+		inner = powl(M, p1) * powl(S, q);
+		if (g) {
+			ld f = powl(M, p1 - 1.0L) * powl(S, q - 1.0L);
+			g[0] = p1 / a * f * spowl(ra, p2 - 1.0L);
+			g[1] = p1 / b * f * spowl(rb, p2 - 1.0L);
+		}
 	}
-	return powl(in, (ld)s.eps2 / s.eps1) + powl(fabsl(x[2] / c), p1);
+	return inner + powl(fabsl(x[2] / c), p1);
 }
 
 /* Solve M y = r for y (d = 2 or 3) by the adjugate, in long double. */

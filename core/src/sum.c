@@ -81,17 +81,18 @@ static void plan2(mkKPlan2 *p, mkBody2 b1, mkBody2 b2, const mkSumOptions *o)
 {
 	mkKShape2_Prepare(&p->s1, b1.shape);
 	mkKShape2_Prepare(&p->s2, b2.shape);
-	mkMat2 M1iT = mkMat2_Transpose(mkMat2_Inverse(b1.M));
 	mkMat2 M1T = mkMat2_Transpose(b1.M), M2T = mkMat2_Transpose(b2.M);
+	int plus = o->set == MK_SET_PLUS;
+	double sg = plus ? 1.0 : -1.0;
+	mkMat2 D2 = o->param == MK_PARAM_SURFACE ? mkMat2_Mul(M2T, mkMat2_Transpose(mkMat2_Inverse(b1.M))) : M2T;
 	memcpy(p->M1, b1.M.m, sizeof p->M1);
 	memcpy(p->M1T, M1T.m, sizeof p->M1T);
-	memcpy(p->M1iT, M1iT.m, sizeof p->M1iT);
 	memcpy(p->M2, b2.M.m, sizeof p->M2);
-	memcpy(p->M2T, M2T.m, sizeof p->M2T);
+	for (int i = 0; i < 2; ++i)
+		for (int j = 0; j < 2; ++j) p->D2[i][j] = sg * D2.m[i][j];
 	p->t1[0] = b1.t.x; p->t1[1] = b1.t.y;
-	int plus = o->set == MK_SET_PLUS;
 	p->t2p[0] = plus ? b2.t.x : 0.0; p->t2p[1] = plus ? b2.t.y : 0.0;
-	p->sigma = plus ? 1.0 : -1.0;
+	p->sigma = sg;
 	p->form = o->form; p->param = o->param;
 }
 
@@ -99,17 +100,18 @@ static void plan3(mkKPlan3 *p, mkBody3 b1, mkBody3 b2, const mkSumOptions *o)
 {
 	mkKShape3_Prepare(&p->s1, b1.shape);
 	mkKShape3_Prepare(&p->s2, b2.shape);
-	mkMat3 M1iT = mkMat3_Transpose(mkMat3_Inverse(b1.M));
 	mkMat3 M1T = mkMat3_Transpose(b1.M), M2T = mkMat3_Transpose(b2.M);
+	int plus = o->set == MK_SET_PLUS;
+	double sg = plus ? 1.0 : -1.0;
+	mkMat3 D2 = o->param == MK_PARAM_SURFACE ? mkMat3_Mul(M2T, mkMat3_Transpose(mkMat3_Inverse(b1.M))) : M2T;
 	memcpy(p->M1, b1.M.m, sizeof p->M1);
 	memcpy(p->M1T, M1T.m, sizeof p->M1T);
-	memcpy(p->M1iT, M1iT.m, sizeof p->M1iT);
 	memcpy(p->M2, b2.M.m, sizeof p->M2);
-	memcpy(p->M2T, M2T.m, sizeof p->M2T);
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) p->D2[i][j] = sg * D2.m[i][j];
 	p->t1[0] = b1.t.x; p->t1[1] = b1.t.y; p->t1[2] = b1.t.z;
-	int plus = o->set == MK_SET_PLUS;
 	p->t2p[0] = plus ? b2.t.x : 0.0; p->t2p[1] = plus ? b2.t.y : 0.0; p->t2p[2] = plus ? b2.t.z : 0.0;
-	p->sigma = plus ? 1.0 : -1.0;
+	p->sigma = sg;
 	p->form = o->form; p->param = o->param;
 }
 
