@@ -1,0 +1,36 @@
+/* mink_exp/args.h - command-line values with ranges, for the drivers.
+ *
+ * Each parser takes the flag name (for the message), the text and the
+ * allowed range; on failure it returns -1 and writes one line such as
+ *   --trials: expected an integer in [1, 10000000], got '0'
+ * and on success returns 0. */
+#ifndef MINK_EXP_ARGS_H
+#define MINK_EXP_ARGS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+int mkArg_Long(const char *flag, const char *text, long lo, long hi, long *out,
+	char *msg, size_t msglen);
+/* Any unsigned 64-bit integer, decimal or 0x hexadecimal. */
+int mkArg_U64(const char *flag, const char *text, uint64_t *out, char *msg, size_t msglen);
+/* One of `count` names; *out is its index. */
+int mkArg_Choice(const char *flag, const char *text, const char *const *names, int count,
+	int *out, char *msg, size_t msglen);
+
+/* Walk argv in the usual long-option forms "--name value" and
+ * "--name=value". mkArgs_Next returns the flag name (with its dashes) and
+ * sets *value to the attached or following value when the flag takes one
+ * (takes_value(name) != 0); it returns NULL at the end. A value that is
+ * missing is reported as *value == NULL. */
+typedef struct mkArgs {
+	int argc;
+	char **argv;
+	int i;
+	char name[64];
+} mkArgs;
+
+void mkArgs_Begin(mkArgs *a, int argc, char **argv);
+const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const char **value);
+
+#endif

@@ -1,0 +1,88 @@
+/* args.c - command-line values. */
+#include "mink_exp/args.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int mkArg_Long(const char *flag, const char *text, long lo, long hi, long *out,
+	char *msg, size_t msglen)
+{
+	char *end = NULL;
+	errno = 0;
+	long v = text ? strtol(text, &end, 10) : 0;
+	if (!text || !text[0] || *end != '\0' || errno != 0 || v < lo || v > hi) {
+		if (msg && msglen > 0)
+			snprintf(msg, msglen, "%s: expected an integer in [%ld, %ld], got '%s'",
+				flag, lo, hi, text ? text : "");
+		return -1;
+	}
+	*out = v;
+	return 0;
+}
+
+int mkArg_U64(const char *flag, const char *text, uint64_t *out, char *msg, size_t msglen)
+{
+	char *end = NULL;
+	errno = 0;
+	int ok = text && text[0] >= '0' && text[0] <= '9';
+	uintmax_t v = ok ? strtoumax(text, &end, 0) : 0;
+	ok = ok && *end == '\0' && errno == 0 && v <= UINT64_MAX;
+	if (!ok) {
+		if (msg && msglen > 0)
+			snprintf(msg, msglen, "%s: expected an integer in [0, 2^64-1] (decimal or 0x...), got '%s'",
+				flag, text ? text : "");
+		return -1;
+	}
+	*out = (uint64_t)v;
+	return 0;
+}
+
+int mkArg_Choice(const char *flag, const char *text, const char *const *names, int count,
+	int *out, char *msg, size_t msglen)
+{
+	for (int i = 0; text && i < count; ++i) {
+		if (strcmp(text, names[i]) == 0) {
+			*out = i;
+			return 0;
+		}
+	}
+	if (msg && msglen > 0) {
+		int n = snprintf(msg, msglen, "%s: expected one of ", flag);
+		for (int i = 0; i < count && n >= 0 && (size_t)n < msglen; ++i)
+			n += snprintf(msg + n, msglen - (size_t)n, "%s%s", i ? "|" : "", names[i]);
+		if (n >= 0 && (size_t)n < msglen)
+			snprintf(msg + n, msglen - (size_t)n, ", got '%s'", text ? text : "");
+	}
+	return -1;
+}
+
+void mkArgs_Begin(mkArgs *a, int argc, char **argv)
+{
+	a->argc = argc;
+	a->argv = argv;
+	a->i = 1;
+	a->name[0] = '\0';
+}
+
+const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const char **value)
+{
+	*value = NULL;
+	if (a->i >= a->argc)
+		return NULL;
+	const char *arg = a->argv[a->i++];
+	const char *eq = strncmp(arg, "--", 2) == 0 ? strchr(arg, '=') : NULL;
+	size_t n = eq ? (size_t)(eq - arg) : strlen(arg);
+	if (n >= sizeof a->name)
+		n = sizeof a->name - 1;
+	memcpy(a->name, arg, n);
+	a->name[n] = '\0';
+	if (eq) {
+		*value = eq + 1;
+	} else if (takes_value(a->name) && a->i < a->argc) {
+		*value = a->argv[a->i++];
+	}
+	return a->name;
+}

@@ -1,0 +1,18 @@
+# Run EXE with ARGS ("|"-separated) and expect a usage error: exit status 2,
+# nothing on stdout, exactly one line on stderr matching the regex EXPECT.
+string(REPLACE "|" ";" args "${ARGS}")
+execute_process(COMMAND ${EXE} ${args}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX REPLACE "\n$" "" line "${err}")
+if(NOT rc EQUAL 2)
+  message(FATAL_ERROR "exit status ${rc}, expected 2; stderr: ${err}")
+endif()
+if(NOT out STREQUAL "")
+  message(FATAL_ERROR "unexpected output on stdout: ${out}")
+endif()
+if(line MATCHES "\n")
+  message(FATAL_ERROR "more than one line on stderr: ${err}")
+endif()
+if(NOT line MATCHES "${EXPECT}")
+  message(FATAL_ERROR "stderr '${line}' does not match '${EXPECT}'")
+endif()

@@ -1,0 +1,54 @@
+/* test_args.c - command-line values: ranges, one-line messages naming the
+ * flag, and the two long-option forms. */
+#include "ensure.h"
+
+#include <mink_exp/args.h>
+
+#include <string.h>
+
+static int mkTakesValue(const char *name)
+{
+	return strcmp(name, "--force") != 0;
+}
+
+int main(void)
+{
+	char msg[256];
+	long v = 0;
+	ENSURE(mkArg_Long("--trials", "100", 1, 1000, &v, msg, sizeof msg) == 0 && v == 100);
+	ENSURE(mkArg_Long("--trials", "1000", 1, 1000, &v, msg, sizeof msg) == 0 && v == 1000);
+	ENSURE(mkArg_Long("--trials", "0", 1, 1000, &v, msg, sizeof msg) != 0);
+	ENSURE(strcmp(msg, "--trials: expected an integer in [1, 1000], got '0'") == 0);
+	ENSURE(mkArg_Long("--trials", "12x", 1, 1000, &v, msg, sizeof msg) != 0);
+	ENSURE(mkArg_Long("--trials", "", 1, 1000, &v, msg, sizeof msg) != 0);
+	ENSURE(mkArg_Long("--trials", NULL, 1, 1000, &v, msg, sizeof msg) != 0);
+	ENSURE(mkArg_Long("--trials", "99999999999999999999999", 1, 1000, &v, msg, sizeof msg) != 0);
+
+	uint64_t u = 0;
+	ENSURE(mkArg_U64("--seed", "18446744073709551615", &u, msg, sizeof msg) == 0 && u == UINT64_MAX);
+	ENSURE(mkArg_U64("--seed", "0x10", &u, msg, sizeof msg) == 0 && u == 16);
+	ENSURE(mkArg_U64("--seed", "18446744073709551616", &u, msg, sizeof msg) != 0);
+	ENSURE(mkArg_U64("--seed", "-1", &u, msg, sizeof msg) != 0);
+	ENSURE(strncmp(msg, "--seed: ", 8) == 0);
+
+	static const char *const dims[] = { "2", "3", "both" };
+	int c = -1;
+	ENSURE(mkArg_Choice("--dim", "both", dims, 3, &c, msg, sizeof msg) == 0 && c == 2);
+	ENSURE(mkArg_Choice("--dim", "4", dims, 3, &c, msg, sizeof msg) != 0);
+	ENSURE(strcmp(msg, "--dim: expected one of 2|3|both, got '4'") == 0);
+
+	char *argv[] = { "prog", "--n", "5", "--seed=9", "--force", "--out" };
+	mkArgs a;
+	mkArgs_Begin(&a, 6, argv);
+	const char *name, *value;
+	name = mkArgs_Next(&a, mkTakesValue, &value);
+	ENSURE(name && strcmp(name, "--n") == 0 && value && strcmp(value, "5") == 0);
+	name = mkArgs_Next(&a, mkTakesValue, &value);
+	ENSURE(name && strcmp(name, "--seed") == 0 && value && strcmp(value, "9") == 0);
+	name = mkArgs_Next(&a, mkTakesValue, &value);
+	ENSURE(name && strcmp(name, "--force") == 0 && value == NULL);
+	name = mkArgs_Next(&a, mkTakesValue, &value);
+	ENSURE(name && strcmp(name, "--out") == 0 && value == NULL); /* value missing */
+	ENSURE(mkArgs_Next(&a, mkTakesValue, &value) == NULL);
+	return mkTestFailures() != 0;
+}
