@@ -15,7 +15,7 @@ static int check_range(double v, double lo, double hi, const char *what, const c
 {
 	if (isfinite(v) && v >= lo && v <= hi) return 1;
 	if (msg && msglen)
-		snprintf(msg, msglen, "%s.%s = %.17g is out of range: must be a finite number in [%g, %.17g]",
+		snprintf(msg, msglen, "%s.%s = %.17g is out of range: must be a finite number in [%.10g, %.10g]",
 			what, field, v, lo, hi);
 	return 0;
 }

@@ -10,7 +10,6 @@
 #define KW 1
 #define KEXP exp
 #define KLOG log
-#define KLOG1P log1p
 #define KSQRT sqrt
 #define KABS fabs
 #define KCOPYSIGN copysign

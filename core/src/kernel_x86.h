@@ -14,14 +14,12 @@
 typedef __m256d mkXV;
 #  define KEXP Sleef_expd4_u10avx2
 #  define KLOG Sleef_logd4_u10avx2
-#  define KLOG1P Sleef_log1pd4_u10avx2
 #  define KSQRT _mm256_sqrt_pd
 #  define KFN(name) name##_avx2
 #elif MK_X86_W == 8
 typedef __m512d mkXV;
 #  define KEXP Sleef_expd8_u10avx512f
 #  define KLOG Sleef_logd8_u10avx512f
-#  define KLOG1P Sleef_log1pd8_u10avx512f
 #  define KSQRT _mm512_sqrt_pd
 #  define KFN(name) name##_avx512
 #else
