@@ -1,6 +1,5 @@
 /* cases.c - the trials of the fitting experiment. */
 #include "cases.h"
-#include "fitio.h"
 #include "hull.h"
 #include "sqfit.h"
 
@@ -8,6 +7,7 @@
 #include <stdlib.h>
 
 #include <mink/sum.h>
+#include <mink_exp/rng.h>
 
 enum { CASE1_POINTS = 100, CYLINDER_RING = 30, ELLIPSOID_GRID = 9 };
 
@@ -62,15 +62,15 @@ static const char *hullStatus(mkResult r)
 
 int mkFitCase1_Trial(uint64_t seed, int trial, mkFitRow *rows)
 {
-	mkFitRng rng;
-	mkFitRng_Seed(&rng, seed, mkFitStream(1, 0, trial));
+	mkRng rng;
+	mkRng_Seed(&rng, seed, mkFitStream(1, 0, trial));
 	double x[CASE1_POINTS], y[CASE1_POINTS], z[CASE1_POINTS];
 	int isVertex[CASE1_POINTS];
 	/* the published draw: 3 x N matrix, column by column */
 	for (int k = 0; k < CASE1_POINTS; ++k) {
-		x[k] = 20.0 * mkFitRng_Uniform(&rng, -1.0, 1.0);
-		y[k] = 15.0 * mkFitRng_Uniform(&rng, -1.0, 1.0);
-		z[k] = 10.0 * mkFitRng_Uniform(&rng, -1.0, 1.0);
+		x[k] = 20.0 * mkRng_Uniform(&rng, -1.0, 1.0);
+		y[k] = 15.0 * mkRng_Uniform(&rng, -1.0, 1.0);
+		z[k] = 10.0 * mkRng_Uniform(&rng, -1.0, 1.0);
 	}
 
 	mkFitRow *r = &rows[0];
@@ -185,9 +185,9 @@ mkResult mkFitGridHullVolume(mkBody3 b, int n, int paperGrid, double *volume, in
 }
 
 /* U(lo, hi) raised into [min, max]; *clamped set when that moved it. */
-static double drawIn(mkFitRng *rng, double lo, double hi, double min, double max, int *clamped)
+static double drawIn(mkRng *rng, double lo, double hi, double min, double max, int *clamped)
 {
-	double v = mkFitRng_Uniform(rng, lo, hi);
+	double v = mkRng_Uniform(rng, lo, hi);
 	if (v < min || v > max) {
 		*clamped = 1;
 		v = v < min ? min : max;
@@ -200,8 +200,8 @@ int mkFitCase2_Trial(uint64_t seed, int trial, mkFitRow *rows)
 	int count = 0;
 	for (int n = MK_FIT_CASE2_NMIN; n <= MK_FIT_CASE2_NMAX; ++n) {
 		/* a fresh superquadric for every level, as in the published loop */
-		mkFitRng rng;
-		mkFitRng_Seed(&rng, seed, mkFitStream(2, n, trial));
+		mkRng rng;
+		mkRng_Seed(&rng, seed, mkFitStream(2, n, trial));
 		int clamped = 0;
 		mkShape3 s;
 		/* a ~ [20,15,10] .* U(0,1), eps ~ U(0,2): draws outside the core's
@@ -214,7 +214,7 @@ int mkFitCase2_Trial(uint64_t seed, int trial, mkFitRow *rows)
 		s.eps2 = drawIn(&rng, 0.0, 2.0, MK_EPS_MIN, MK_EPS_MAX, &clamped);
 		double q[4];
 		for (int i = 0; i < 4; ++i) {
-			q[i] = mkFitRng_Unit(&rng); /* the published rand(1,4) quaternion */
+			q[i] = mkRng_Unit(&rng); /* the published rand(1,4) quaternion */
 		}
 		mkMat3 R = mkSq_QuatToMat(q);
 		mkBody3 b = mkBody3_Make(s, R, (mkVec3){ 0.0, 0.0, 0.0 });
@@ -256,11 +256,11 @@ int mkFitCase2_Trial(uint64_t seed, int trial, mkFitRow *rows)
 
 static void drawSize(uint64_t seed, int primitive, int trial, double size[3])
 {
-	mkFitRng rng;
-	mkFitRng_Seed(&rng, seed, mkFitStream(3, primitive, trial));
-	size[0] = 50.0 * mkFitRng_Unit(&rng) + 1.0;
-	size[1] = 36.0 * mkFitRng_Unit(&rng) + 1.0;
-	size[2] = 20.0 * mkFitRng_Unit(&rng) + 1.0;
+	mkRng rng;
+	mkRng_Seed(&rng, seed, mkFitStream(3, primitive, trial));
+	size[0] = 50.0 * mkRng_Unit(&rng) + 1.0;
+	size[1] = 36.0 * mkRng_Unit(&rng) + 1.0;
+	size[2] = 20.0 * mkRng_Unit(&rng) + 1.0;
 }
 
 static void setIdentityPose(mkFitRow *r)

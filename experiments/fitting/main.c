@@ -4,9 +4,7 @@
  * metadata sidecar, then prints the means beside the published figures. */
 #define _POSIX_C_SOURCE 200809L
 #include "cases.h"
-#include "fitio.h"
 
-#include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -14,9 +12,13 @@
 #include <string.h>
 #include <time.h>
 
+#include <libqhull_r/libqhull_r.h>
+#include <mink_exp/exp.h>
+
 #define DEFAULT_SEED 20220622u
 #define DEFAULT_TRIALS 100
 #define MAX_TRIALS 1000000
+#define SCHEMA_VERSION 1
 
 static const char *const COLUMNS[] = {
 	"case", "trial", "truth", "model", "sampling", "level", "vertices",
@@ -40,7 +42,9 @@ static void usage(FILE *f)
 		"  --out PATH         results CSV (default results/fitting.csv, or\n"
 		"                     results/fitting-case<K>.csv for one case; a shard\n"
 		"                     adds .shard-I-of-N before .csv); PATH.meta is the sidecar\n"
-		"  --shard I/N        run only trials t with t mod N == I (0 <= I < N)\n"
+		"  --shard I/N        run only block I of N (0 <= I < N) of the run's\n"
+		"                     (case, trial) units; the shards' rows, concatenated\n"
+		"                     in shard order, are the whole run's\n"
 		"  --force            overwrite an existing result (otherwise the run is skipped)\n"
 		"  --help             this text\n",
 		MK_FIT_CASE2_NMIN, MK_FIT_CASE2_NMAX, MAX_TRIALS, DEFAULT_TRIALS, DEFAULT_SEED);
@@ -53,38 +57,38 @@ static double nowSeconds(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static void writeRow(mkFitOut *out, const mkFitRow *r)
+static void writeRow(mkCsv *out, const mkFitRow *r)
 {
-	mkFitOut_Int(out, r->caseId);
-	mkFitOut_Int(out, r->trial);
-	mkFitOut_Str(out, r->truth);
-	mkFitOut_Str(out, r->model);
-	mkFitOut_Str(out, r->sampling);
-	mkFitOut_Int(out, r->level);
-	mkFitOut_Int(out, r->vertices);
-	mkFitOut_Double(out, r->volumeTrue);
-	mkFitOut_Double(out, r->volumeModel);
-	mkFitOut_Double(out, r->eVolume);
-	mkFitOut_Double(out, r->eImplicit);
-	mkFitOut_Double(out, r->shape.a);
-	mkFitOut_Double(out, r->shape.b);
-	mkFitOut_Double(out, r->shape.c);
-	mkFitOut_Double(out, r->shape.eps1);
-	mkFitOut_Double(out, r->shape.eps2);
+	mkCsv_Int(out, r->caseId);
+	mkCsv_Int(out, r->trial);
+	mkCsv_Str(out, r->truth);
+	mkCsv_Str(out, r->model);
+	mkCsv_Str(out, r->sampling);
+	mkCsv_Int(out, r->level);
+	mkCsv_Int(out, r->vertices);
+	mkCsv_Double(out, r->volumeTrue);
+	mkCsv_Double(out, r->volumeModel);
+	mkCsv_Double(out, r->eVolume);
+	mkCsv_Double(out, r->eImplicit);
+	mkCsv_Double(out, r->shape.a);
+	mkCsv_Double(out, r->shape.b);
+	mkCsv_Double(out, r->shape.c);
+	mkCsv_Double(out, r->shape.eps1);
+	mkCsv_Double(out, r->shape.eps2);
 	for (int i = 0; i < 4; ++i) {
-		mkFitOut_Double(out, r->q[i]);
+		mkCsv_Double(out, r->q[i]);
 	}
-	mkFitOut_Double(out, r->t.x);
-	mkFitOut_Double(out, r->t.y);
-	mkFitOut_Double(out, r->t.z);
+	mkCsv_Double(out, r->t.x);
+	mkCsv_Double(out, r->t.y);
+	mkCsv_Double(out, r->t.z);
 	for (int i = 0; i < 3; ++i) {
-		mkFitOut_Double(out, r->size[i]);
+		mkCsv_Double(out, r->size[i]);
 	}
-	mkFitOut_Double(out, r->cost);
-	mkFitOut_Int(out, r->iterations);
-	mkFitOut_Int(out, r->nfev);
-	mkFitOut_Str(out, r->status);
-	mkFitOut_EndRow(out);
+	mkCsv_Double(out, r->cost);
+	mkCsv_Int(out, r->iterations);
+	mkCsv_Int(out, r->nfev);
+	mkCsv_Str(out, r->status);
+	mkCsv_EndRow(out);
 }
 
 /* ---- the summary printed at the end: means by group ----------------------- */
@@ -195,150 +199,166 @@ static void summaryPrint(const Summary *s)
 	}
 }
 
+static int takesValue(const char *name)
+{
+	return strcmp(name, "--case") == 0 || strcmp(name, "--trials") == 0 || strcmp(name, "--seed") == 0
+		|| strcmp(name, "--out") == 0 || strcmp(name, "--shard") == 0;
+}
+
+static int usageError(const char *msg)
+{
+	fprintf(stderr, "fitting: %s\n", msg);
+	return 2;
+}
+
 int main(int argc, char **argv)
 {
-	const char *caseText = "all";
+	static const char *const CASE_NAMES[] = { "1", "2", "3", "all" };
+	int caseChoice = 3;
 	const char *out = NULL;
-	int trials = DEFAULT_TRIALS;
+	long trials = DEFAULT_TRIALS;
 	uint64_t seed = DEFAULT_SEED;
-	int shardIndex = 0, shardCount = 1, force = 0;
+	mkShard shard = mkShard_All();
+	int force = 0;
+	char msg[512];
 
-	for (int i = 1; i < argc; ++i) {
-		const char *a = argv[i];
-		const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-		char msg[256];
-		if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+	mkArgs args;
+	mkArgs_Begin(&args, argc, argv); /* starts after argv[0] */
+	const char *name, *value;
+	while ((name = mkArgs_Next(&args, takesValue, &value)) != NULL) {
+		if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0 || strcmp(name, "--force") == 0) {
+			if (value != NULL) {
+				snprintf(msg, sizeof msg, "%s: takes no value", name);
+				return usageError(msg);
+			}
+			if (name[2] == 'f') {
+				force = 1;
+				continue;
+			}
 			usage(stdout);
 			return 0;
-		} else if (strcmp(a, "--force") == 0) {
-			force = 1;
-			continue;
+		} else if (!takesValue(name)) {
+			snprintf(msg, sizeof msg, "%s: unknown option (see --help)", name);
+			return usageError(msg);
 		}
-		if (strcmp(a, "--case") != 0 && strcmp(a, "--trials") != 0 && strcmp(a, "--seed") != 0
-			&& strcmp(a, "--out") != 0 && strcmp(a, "--shard") != 0) {
-			fprintf(stderr, "fitting: unknown option '%s' (see --help)\n", a);
-			return 2;
+		if (value == NULL) {
+			snprintf(msg, sizeof msg, "%s: missing value", name);
+			return usageError(msg);
 		}
-		if (v == NULL) {
-			fprintf(stderr, "fitting: %s needs a value (see --help)\n", a);
-			return 2;
-		}
-		++i;
-		if (strcmp(a, "--case") == 0) {
-			if (strcmp(v, "1") != 0 && strcmp(v, "2") != 0 && strcmp(v, "3") != 0 && strcmp(v, "all") != 0) {
-				fprintf(stderr, "fitting: --case: expected 1, 2, 3 or all, got '%s'\n", v);
-				return 2;
-			}
-			caseText = v;
-		} else if (strcmp(a, "--trials") == 0) {
-			char *end;
-			errno = 0;
-			long t = strtol(v, &end, 10);
-			if (errno != 0 || end == v || *end != '\0' || t < 1 || t > MAX_TRIALS) {
-				fprintf(stderr, "fitting: --trials: expected an integer in 1..%d, got '%s'\n", MAX_TRIALS, v);
-				return 2;
-			}
-			trials = (int)t;
-		} else if (strcmp(a, "--seed") == 0) {
-			char *end;
-			errno = 0;
-			unsigned long long s = strtoull(v, &end, 10);
-			if (errno != 0 || end == v || *end != '\0' || v[0] == '-') {
-				fprintf(stderr, "fitting: --seed: expected an integer in 0..18446744073709551615, got '%s'\n", v);
-				return 2;
-			}
-			seed = (uint64_t)s;
-		} else if (strcmp(a, "--out") == 0) {
-			if (v[0] == '\0') {
-				fprintf(stderr, "fitting: --out: expected a file path, got ''\n");
-				return 2;
-			}
-			out = v;
+		int bad = 0;
+		if (strcmp(name, "--case") == 0) {
+			bad = mkArg_Choice(name, value, CASE_NAMES, 4, &caseChoice, msg, sizeof msg);
+		} else if (strcmp(name, "--trials") == 0) {
+			bad = mkArg_Long(name, value, 1, MAX_TRIALS, &trials, msg, sizeof msg);
+		} else if (strcmp(name, "--seed") == 0) {
+			bad = mkArg_U64(name, value, &seed, msg, sizeof msg);
+		} else if (strcmp(name, "--shard") == 0) {
+			bad = mkShard_Parse(value, name, &shard, msg, sizeof msg);
+		} else if (value[0] == '\0') {
+			snprintf(msg, sizeof msg, "--out: expected a file path, got ''");
+			bad = -1;
 		} else {
-			if (mkFitShard_Parse(v, &shardIndex, &shardCount, msg, sizeof msg) != 0) {
-				fprintf(stderr, "fitting: %s\n", msg);
-				return 2;
-			}
+			out = value;
+		}
+		if (bad) {
+			return usageError(msg);
 		}
 	}
+	const char *caseText = CASE_NAMES[caseChoice];
 
 	char defaultOut[256];
 	if (out == NULL) {
 		char shardPart[64] = "";
-		if (shardCount > 1) {
-			snprintf(shardPart, sizeof shardPart, ".shard-%d-of-%d", shardIndex, shardCount);
+		if (shard.count > 1) {
+			snprintf(shardPart, sizeof shardPart, ".shard-%d-of-%d", shard.index, shard.count);
 		}
-		if (strcmp(caseText, "all") == 0) {
+		if (caseChoice == 3) {
 			snprintf(defaultOut, sizeof defaultOut, "results/fitting%s.csv", shardPart);
 		} else {
 			snprintf(defaultOut, sizeof defaultOut, "results/fitting-case%s%s.csv", caseText, shardPart);
 		}
 		out = defaultOut;
 	}
-	if (!force && mkFitOut_Exists(out)) {
+	if (!force && mkPath_Exists(out)) {
 		printf("fitting: %s exists; skipped (use --force to run again)\n", out);
 		return 0;
 	}
-
-	char msg[512];
-	mkFitOut *csv = mkFitOut_Open(out, COLUMNS, NCOLUMNS, msg, sizeof msg);
-	if (csv == NULL) {
+	if (mkPath_MakeParents(out, msg, sizeof msg) != 0) {
 		fprintf(stderr, "fitting: %s\n", msg);
 		return 1;
 	}
+
+	mkMeta meta;
+	mkMeta_Init(&meta, "fitting", SCHEMA_VERSION, argc, argv);
+	mkMeta_SetU64(&meta, "seed", seed);
+	mkMeta_SetInt(&meta, "trials", trials);
+	mkMeta_Set(&meta, "cases", caseText);
+	snprintf(msg, sizeof msg, "%d/%d", shard.index, shard.count);
+	mkMeta_Set(&meta, "shard", msg);
+	mkMeta_Set(&meta, "qhull_version", qh_version);
+	mkMeta_Set(&meta, "cminpack_version", MK_FIT_CMINPACK_VERSION);
+	mkMeta_Set(&meta, "case1_draw", "100 points [20,15,10].*U(-1,1)^3; LM fit to the hull vertices");
+	mkMeta_Set(&meta, "case2_draw", "a=[20,15,10].*U(0,1)^3, eps=U(0,2)^2, quaternion U(0,1)^4; n=4..20");
+	mkMeta_Set(&meta, "case3_draw", "size=[50,36,20].*U(0,1)^3+1");
+
+	mkCsv csv;
+	if (mkCsv_Open(&csv, out, COLUMNS, NCOLUMNS, msg, sizeof msg) != 0) {
+		fprintf(stderr, "fitting: %s\n", msg);
+		mkMeta_Free(&meta);
+		return 1;
+	}
+
+	/* The run's units are (case, trial) pairs, case by case; a shard takes
+	 * a contiguous block of them. */
+	int cases[3], ncases = 0;
+	for (int c = 1; c <= 3; ++c) {
+		if (caseChoice == 3 || caseChoice == c - 1) {
+			cases[ncases++] = c;
+		}
+	}
+	long begin, end;
+	mkShard_Range(shard, (long)ncases * trials, &begin, &end);
 
 	static Summary summary;
 	static mkFitRow rows[MK_FIT_MAX_ROWS];
 	int (*const trialFn[3])(uint64_t, int, mkFitRow *) = { mkFitCase1_Trial, mkFitCase2_Trial, mkFitCase3_Trial };
 	double seconds[3] = { 0.0, 0.0, 0.0 };
-	for (int c = 1; c <= 3; ++c) {
-		if (strcmp(caseText, "all") != 0 && caseText[0] - '0' != c) {
-			continue;
-		}
+	mkProgress progress;
+	mkProgress_Begin(&progress, "fitting", end - begin);
+	for (long u = begin; u < end; ++u) {
+		int c = cases[u / trials];
+		int t = (int)(u % trials);
 		double t0 = nowSeconds();
-		for (int t = 0; t < trials; ++t) {
-			if (!mkFitShard_Owns(shardIndex, shardCount, t)) {
-				continue;
-			}
-			int n = trialFn[c - 1](seed, t, rows);
-			if (n < 0) {
-				fprintf(stderr, "fitting: out of memory in case %d, trial %d\n", c, t);
-				mkFitOut_Discard(csv);
-				return 1;
-			}
-			for (int k = 0; k < n; ++k) {
-				writeRow(csv, &rows[k]);
-				summaryAdd(&summary, &rows[k]);
-			}
+		int n = trialFn[c - 1](seed, t, rows);
+		seconds[c - 1] += nowSeconds() - t0;
+		if (n < 0) {
+			fprintf(stderr, "fitting: out of memory in case %d, trial %d\n", c, t);
+			mkCsv_Discard(&csv);
+			mkMeta_Free(&meta);
+			return 1;
 		}
-		seconds[c - 1] = nowSeconds() - t0;
+		for (int k = 0; k < n; ++k) {
+			writeRow(&csv, &rows[k]);
+			summaryAdd(&summary, &rows[k]);
+		}
+		mkProgress_Add(&progress, 1);
 	}
+	mkProgress_End(&progress);
 
-	size_t cmdLen = 1;
-	for (int i = 0; i < argc; ++i) {
-		cmdLen += strlen(argv[i]) + 1;
+	for (int c = 0; c < 3; ++c) {
+		char key[32];
+		snprintf(key, sizeof key, "case%d_seconds", c + 1);
+		mkMeta_SetDouble(&meta, key, seconds[c]);
 	}
-	char *cmd = malloc(cmdLen);
-	if (cmd == NULL) {
-		mkFitOut_Discard(csv);
-		fprintf(stderr, "fitting: out of memory\n");
-		return 1;
-	}
-	cmd[0] = '\0';
-	for (int i = 0; i < argc; ++i) {
-		strcat(cmd, i ? " " : "");
-		strcat(cmd, argv[i]);
-	}
-	mkFitRunInfo info = { cmd, seed, trials, caseText, shardIndex, shardCount };
-	int rc = mkFitOut_Commit(csv, &info, msg, sizeof msg);
-	free(cmd);
+	int rc = mkCsv_Commit(&csv, &meta, msg, sizeof msg);
+	mkMeta_Free(&meta);
 	if (rc != 0) {
 		fprintf(stderr, "fitting: %s\n", msg);
 		return 1;
 	}
 
-	printf("fitting: wrote %s (seed %" PRIu64 ", %d trials, shard %d/%d)\n", out, seed, trials,
-		shardIndex, shardCount);
+	printf("fitting: wrote %s (seed %" PRIu64 ", %ld trials, shard %d/%d)\n", out, seed, trials,
+		shard.index, shard.count);
 	summaryPrint(&summary);
 	for (int c = 0; c < 3; ++c) {
 		if (seconds[c] > 0.0) {

@@ -1,6 +1,7 @@
 /* test_cli.c - the `fitting` command line: bad flags name the flag and its
  * range, results come with a sidecar, existing results are skipped unless
- * forced, and shards together give exactly the rows of the whole run.
+ * forced, and the shards' rows, concatenated in shard order, are exactly
+ * the rows of the whole run.
  * Usage: test_cli <path of fitting> <scratch directory> */
 #define _POSIX_C_SOURCE 200809L
 #include "ensure.h"
@@ -47,11 +48,6 @@ static int logHas(const char *text)
 	return has;
 }
 
-static int cmpStr(const void *a, const void *b)
-{
-	return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
 /* Split a CSV's data rows (header dropped) into *lines; count returned. */
 static int dataRows(char *text, char ***lines)
 {
@@ -80,14 +76,16 @@ int main(int argc, char **argv)
 	char args[1536], path[1024];
 
 	/* bad flags: exit status 2, the message names the flag and the range */
-	ENSURE(run("--case 5") == 2 && logHas("--case") && logHas("1, 2, 3 or all"));
-	ENSURE(run("--trials 0") == 2 && logHas("--trials") && logHas("1..1000000"));
+	ENSURE(run("--case 5") == 2 && logHas("--case") && logHas("1|2|3|all"));
+	ENSURE(run("--trials 0") == 2 && logHas("--trials") && logHas("[1, 1000000]"));
 	ENSURE(run("--trials 12x") == 2 && logHas("--trials"));
-	ENSURE(run("--seed -4") == 2 && logHas("--seed") && logHas("0..18446744073709551615"));
+	ENSURE(run("--seed -4") == 2 && logHas("--seed") && logHas("[0, 2^64-1]"));
 	ENSURE(run("--shard 2/2") == 2 && logHas("--shard") && logHas("0 <= I < N"));
 	ENSURE(run("--shard x") == 2 && logHas("--shard"));
-	ENSURE(run("--frobnicate") == 2 && logHas("--frobnicate"));
-	ENSURE(run("--out") == 2 && logHas("--out"));
+	ENSURE(run("--frobnicate") == 2 && logHas("--frobnicate: unknown option"));
+	ENSURE(run("--out") == 2 && logHas("--out: missing value"));
+	ENSURE(run("--force=1") == 2 && logHas("--force: takes no value"));
+	ENSURE(run("--trials=0") == 2 && logHas("--trials: expected an integer in [1, 1000000], got '0'"));
 	ENSURE(run("--help") == 0 && logHas("--shard I/N"));
 
 	/* a whole run: header + rows, and the sidecar */
@@ -98,7 +96,8 @@ int main(int argc, char **argv)
 	snprintf(path, sizeof path, "%s/whole.csv.meta", dir);
 	char *meta = slurp(path);
 	ENSURE(whole != NULL && meta != NULL);
-	ENSURE(meta != NULL && strstr(meta, "seed") != NULL && strstr(meta, "99") != NULL);
+	ENSURE(meta != NULL && strstr(meta, "seed: 99\n") != NULL && strstr(meta, "trials: 3\n") != NULL);
+	ENSURE(meta != NULL && strstr(meta, "rows: 129\n") != NULL && strstr(meta, "qhull_version") != NULL);
 	ENSURE(whole != NULL && strncmp(whole, "case,trial,truth,model,sampling,level,vertices,", 47) == 0);
 
 	/* an existing result is skipped, untouched */
@@ -109,42 +108,38 @@ int main(int argc, char **argv)
 	ENSURE(whole != NULL && still != NULL && strcmp(whole, still) == 0);
 	free(still);
 
-	/* two shards give the same rows as the whole run */
-	for (int s = 0; s < 2; ++s) {
-		snprintf(args, sizeof args, "--case all --trials 3 --seed 99 --force --shard %d/2 --out '%s/s%d.csv'", s, dir, s);
+	/* three shards, concatenated in shard order, give the whole run */
+	char *shards[3] = { NULL, NULL, NULL };
+	for (int s = 0; s < 3; ++s) {
+		snprintf(args, sizeof args, "--case all --trials 3 --seed 99 --force --shard %d/3 --out '%s/s%d.csv'", s, dir, s);
 		ENSURE(run(args) == 0);
+		snprintf(path, sizeof path, "%s/s%d.csv", dir, s);
+		shards[s] = slurp(path);
+		ENSURE(shards[s] != NULL);
 	}
-	snprintf(path, sizeof path, "%s/s0.csv", dir);
-	char *s0 = slurp(path);
-	snprintf(path, sizeof path, "%s/s1.csv", dir);
-	char *s1 = slurp(path);
-	ENSURE(s0 != NULL && s1 != NULL);
-	if (whole != NULL && s0 != NULL && s1 != NULL) {
-		char **lw, **l0, **l1;
-		int nw = dataRows(whole, &lw), n0 = dataRows(s0, &l0), n1 = dataRows(s1, &l1);
+	if (whole != NULL && shards[0] != NULL && shards[1] != NULL && shards[2] != NULL) {
+		char **lw;
+		int nw = dataRows(whole, &lw), total = 0, same = 1;
 		/* 3 trials: case 1 one row each, case 2 34, case 3 8 */
 		ENSURE(nw == 3 * (1 + 34 + 8));
-		ENSURE(n0 + n1 == nw);
-		if (n0 + n1 == nw) {
-			char **both = malloc(sizeof(char *) * (size_t)nw);
-			memcpy(both, l0, sizeof(char *) * (size_t)n0);
-			memcpy(both + n0, l1, sizeof(char *) * (size_t)n1);
-			qsort(both, (size_t)nw, sizeof(char *), cmpStr);
-			qsort(lw, (size_t)nw, sizeof(char *), cmpStr);
-			int same = 1;
-			for (int i = 0; i < nw; ++i) {
-				same &= strcmp(both[i], lw[i]) == 0;
+		for (int s = 0; s < 3; ++s) {
+			char **ls;
+			int ns = dataRows(shards[s], &ls);
+			ENSURE(ns > 0);
+			for (int i = 0; i < ns; ++i) {
+				same &= total + i < nw && strcmp(ls[i], lw[total + i]) == 0;
 			}
-			ENSURE(same);
-			free(both);
+			total += ns;
+			free(ls);
 		}
+		ENSURE(total == nw);
+		ENSURE(same);
 		free(lw);
-		free(l0);
-		free(l1);
+	}
+	for (int s = 0; s < 3; ++s) {
+		free(shards[s]);
 	}
 	free(whole);
 	free(meta);
-	free(s0);
-	free(s1);
 	return ENSURE_DONE();
 }
