@@ -15,7 +15,7 @@
 #include <libqhull_r/libqhull_r.h>
 #include <mink_exp/exp.h>
 
-#define DEFAULT_SEED 20220622u
+#define DEFAULT_SEED 2022u
 #define DEFAULT_TRIALS 100
 #define MAX_TRIALS 1000000
 #define SCHEMA_VERSION 1
@@ -38,7 +38,7 @@ static void usage(FILE *f)
 		"                     2: polyhedra from n x n superquadric grids, n = %d..%d\n"
 		"                     3: cube, ellipsoid, cylinder, both models\n"
 		"  --trials N         trials per case and level, 1..%d (default %d)\n"
-		"  --seed S           run seed, 0..2^64-1 (default %u)\n"
+		"  --seed S           run seed, 0..2^64-1, decimal or 0x.. (default %u)\n"
 		"  --out PATH         results CSV (default results/fitting.csv, or\n"
 		"                     results/fitting-case<K>.csv for one case; a shard\n"
 		"                     adds .shard-I-of-N before .csv); PATH.meta is the sidecar\n"
