@@ -39,6 +39,27 @@ static ld psi3(mkShape3 s, const ld *x, ld *g)
 	return inner + powl(fabsl(x[2] / c), p1);
 }
 
+/* |(p, q)|_e for p, q >= 0, scaled by the larger. */
+static ld pnorm(ld p, ld q, ld e)
+{
+	ld m = fmaxl(p, q);
+	if (m == 0.0L) return 0.0L;
+	return m * powl(powl(p / m, e) + powl(q / m, e), 1.0L / e);
+}
+
+/* The support functions as dual norms (NUMERICS: ell_q with q = 2/(2-eps);
+ * nested for the superquadric), independent of the kernels' support points. */
+static ld h2(mkShape2 s, const ld *d)
+{
+	return pnorm(fabsl(s.a * d[0]), fabsl(s.b * d[1]), 2.0L / (2.0L - s.eps));
+}
+
+static ld h3(mkShape3 s, const ld *d)
+{
+	ld g = pnorm(fabsl(s.a * d[0]), fabsl(s.b * d[1]), 2.0L / (2.0L - s.eps2));
+	return pnorm(g, fabsl(s.c * d[2]), 2.0L / (2.0L - s.eps1));
+}
+
 /* Solve M y = r for y (d = 2 or 3) by the adjugate, in long double. */
 static void solve(const double *M, int d, const ld *r, ld *y)
 {
@@ -91,7 +112,7 @@ static void angle_metrics(const ld *n1, const ld *n2, int d, int plus, mkCheck *
 	c->angle = (double)atan2l(sqrtl(cr2), dot);
 }
 
-mkCheck mkCheck2(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 x, mkVec2 k)
+static mkCheck check2(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 x, mkVec2 k, const mkVec2 *given)
 {
 	mkCheck c;
 	int plus = set == MK_SET_PLUS;
@@ -106,10 +127,21 @@ mkCheck mkCheck2(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 x, mkVec2 k)
 	c.e_implicit1 = (double)fabsl(psi2(b1.shape, y1, g1) - 1.0L);
 	world_grad(&b1.M.m[0][0], 2, g1, n1);
 	angle_metrics(n1, n2, 2, plus, &c);
+	if (given) { n1[0] = given->x; n1[1] = given->y; }
+	ld d[2], s = plus ? 1.0L : -1.0L;
+	for (int i = 0; i < 2; ++i) d[i] = s * (b2.M.m[0][i] * n1[0] + b2.M.m[1][i] * n1[1]);
+	ld h = h2(b2.shape, d);
+	c.e_support = (double)((h - (d[0] * y[0] + d[1] * y[1])) / h);
 	return c;
 }
 
-mkCheck mkCheck3(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 x, mkVec3 k)
+mkCheck mkCheck2(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 x, mkVec2 k) { return check2(b1, b2, set, x, k, NULL); }
+mkCheck mkCheck2_Normal(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 x, mkVec2 k, mkVec2 n1)
+{
+	return check2(b1, b2, set, x, k, &n1);
+}
+
+static mkCheck check3(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 x, mkVec3 k, const mkVec3 *given)
 {
 	mkCheck c;
 	int plus = set == MK_SET_PLUS;
@@ -124,5 +156,16 @@ mkCheck mkCheck3(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 x, mkVec3 k)
 	c.e_implicit1 = (double)fabsl(psi3(b1.shape, y1, g1) - 1.0L);
 	world_grad(&b1.M.m[0][0], 3, g1, n1);
 	angle_metrics(n1, n2, 3, plus, &c);
+	if (given) { n1[0] = given->x; n1[1] = given->y; n1[2] = given->z; }
+	ld d[3], s = plus ? 1.0L : -1.0L;
+	for (int i = 0; i < 3; ++i) d[i] = s * (b2.M.m[0][i] * n1[0] + b2.M.m[1][i] * n1[1] + b2.M.m[2][i] * n1[2]);
+	ld h = h3(b2.shape, d);
+	c.e_support = (double)((h - (d[0] * y[0] + d[1] * y[1] + d[2] * y[2])) / h);
 	return c;
+}
+
+mkCheck mkCheck3(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 x, mkVec3 k) { return check3(b1, b2, set, x, k, NULL); }
+mkCheck mkCheck3_Normal(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 x, mkVec3 k, mkVec3 n1)
+{
+	return check3(b1, b2, set, x, k, &n1);
 }
