@@ -11,7 +11,9 @@
  *    2 - 1e-3}, each with three poses (mild; semi-axis ratio 1e4 with shear
  *    +-10; ratio 1e4 with shear -10 and 2.5), at angles on the axes, 1e-8 and
  *    1e-4 off them, on the diagonals, at the world normals of the bodies'
- *    faces (exactly and turned by 1e-13 and 1e-9 rad) and at random. */
+ *    faces (exactly and turned by 1e-13 and 1e-9 rad) and at random;
+ *  - parameter vectors that are not unit vectors (scaled by 3, 1e-5, 1e5,
+ *    1e-150, 1e150), which sum.h accepts. */
 #include "refcheck.h"
 
 #include <math.h>
@@ -132,6 +134,39 @@ static void extremes(void)
 	refGroup_Print(&g);
 }
 
+/* Parameter vectors of any length: sum.h takes any nonzero vector and uses
+ * only its direction. The validation draws' angles (unit vectors in the
+ * reference) are handed to the core scaled by 3, 1e-5, 1e5, 1e-150 and
+ * 1e150; the MPFR reference normalises the same scaled doubles. */
+static void scaledParameters(void)
+{
+	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150 };
+	refGroup g = { .name = "ref_sum2 scaled-u" };
+	refRng rng = { 6103u };
+	enum { N = 16 };
+	double ux0[N], uy0[N], ux[N], uy[N];
+	ENSURE(mkSample2_Angles(N, ux0, uy0) == MK_OK);
+	for (int trial = 0; trial < 10; ++trial) {
+		refCase c = { .dim = 2, .n = N, .ux = ux, .uy = uy };
+		for (int j = 0; j < N; ++j) {
+			double k = scale[(j + trial) % 5];
+			ux[j] = ux0[j] * k;
+			uy[j] = uy0[j] * k;
+		}
+		for (int k = 0; k < 2; ++k) {
+			mkBody2 B = body(refRng_Uniform(&rng, 0.5, 10.0), refRng_Uniform(&rng, 0.5, 10.0),
+				refRng_Uniform(&rng, 0.1, 1.9), 2.0 * REF_PI * refRng_Uniform(&rng, 0.0, 1.0),
+				refRng_Uniform(&rng, -2.0, 2.0), refRng_Uniform(&rng, -10.0, 10.0), refRng_Uniform(&rng, -10.0, 10.0));
+			if (k == 0)
+				c.a2 = B;
+			else
+				c.b2 = B;
+		}
+		refCheck_Case(&c, &g);
+	}
+	refGroup_Print(&g);
+}
+
 int main(int argc, char **argv)
 {
 	int which = argc > 1 ? atoi(argv[1]) : 0;
@@ -139,5 +174,7 @@ int main(int argc, char **argv)
 		validationDraws();
 	if (which == 0 || which == 2)
 		extremes();
+	if (which == 0 || which == 3)
+		scaledParameters();
 	return refTest_Result("ref_sum2");
 }

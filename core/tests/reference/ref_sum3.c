@@ -13,7 +13,9 @@
  *    poses (mild; semi-axis ratio 1e4 with shears of 10 and rotations), at
  *    the poles exactly, 1e-8 and 1e-4 rad from them, on and near the axes,
  *    at the world normals of the bodies' faces (exactly and tilted by 1e-13
- *    and 1e-9) and at random. */
+ *    and 1e-9) and at random;
+ *  - parameter vectors that are not unit vectors (scaled by 3, 1e-5, 1e5,
+ *    1e-150, 1e150), which sum.h accepts. */
 #include "refcheck.h"
 
 #include <math.h>
@@ -178,6 +180,45 @@ static void extremes(void)
 	refGroup_Print(&g);
 }
 
+/* Parameter vectors of any length: sum.h takes any nonzero vector and uses
+ * only its direction. The grid's unit vectors are handed to the core scaled
+ * by 3, 1e-5, 1e5, 1e-150 and 1e150; the MPFR reference normalises the same
+ * scaled doubles. */
+static void scaledParameters(void)
+{
+	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150 };
+	refGroup g = { .name = "ref_sum3 scaled-u" };
+	refRng rng = { 6203u };
+	enum { G = 4, N = G * G };
+	double ux0[N], uy0[N], uz0[N], ux[N], uy[N], uz[N];
+	ENSURE(mkSample3_Grid(G, ux0, uy0, uz0) == MK_OK);
+	for (int trial = 0; trial < 10; ++trial) {
+		refCase c = { .dim = 3, .n = N, .ux = ux, .uy = uy, .uz = uz };
+		for (int j = 0; j < N; ++j) {
+			double k = scale[(j + trial) % 5];
+			ux[j] = ux0[j] * k;
+			uy[j] = uy0[j] * k;
+			uz[j] = uz0[j] * k;
+		}
+		for (int k = 0; k < 2; ++k) {
+			mkShape3 s;
+			s.a = refRng_Uniform(&rng, 1.0, 10.0);
+			s.b = refRng_Uniform(&rng, 1.0, 10.0);
+			s.c = refRng_Uniform(&rng, 1.0, 10.0);
+			s.eps1 = refRng_Uniform(&rng, 0.1, 1.9);
+			s.eps2 = refRng_Uniform(&rng, 0.1, 1.9);
+			mkBody3 B = body(s, quatRotation(&rng), refRng_Uniform(&rng, -10.0, 10.0),
+				refRng_Uniform(&rng, -10.0, 10.0), refRng_Uniform(&rng, -10.0, 10.0));
+			if (k == 0)
+				c.a3 = B;
+			else
+				c.b3 = B;
+		}
+		refCheck_Case(&c, &g);
+	}
+	refGroup_Print(&g);
+}
+
 int main(int argc, char **argv)
 {
 	int which = argc > 1 ? atoi(argv[1]) : 0;
@@ -185,5 +226,7 @@ int main(int argc, char **argv)
 		validationDraws();
 	if (which == 0 || which == 2)
 		extremes();
+	if (which == 0 || which == 3)
+		scaledParameters();
 	return refTest_Result("ref_sum3");
 }

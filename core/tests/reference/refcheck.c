@@ -447,7 +447,7 @@ void refGroup_Print(const refGroup *g)
 	}
 	printf("%s: %ld reference points, %ld%s ill-conditioned (the exact point moves by > 1e-9 S under "
 		"a rounding-size change of direction), %ld non-finite outputs; worst error/tolerance: "
-		"point %.3f (well-conditioned), boundary %.3f\n",
+		"point %.3g (well-conditioned), boundary %.3g\n",
 		g->name, g->points, g->illConditioned, g->conditionAll ? "" : " found", g->nonfinite,
 		g->ratioA.max, g->ratioB.max);
 }
