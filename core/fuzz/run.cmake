@@ -1,0 +1,45 @@
+# Runs libFuzzer harnesses briefly, for CTest.
+#
+#   cmake -DNAMES="spec;sum" -DBIN_DIR=<dir of fuzz_*> -DCORPUS_ROOT=<seed corpus>
+#         -DWORK_ROOT=<scratch dir> [-DSECONDS=20] -P run.cmake
+#   cmake -DMISSING="<what to install>" -P run.cmake      (fails with that text)
+#
+# Each harness fuzz_<name> starts from the seed corpus CORPUS_ROOT/<name>
+# (read only: new inputs go to WORK_ROOT/<name>), with a fixed seed, and stops
+# after SECONDS seconds or 2,000,000 inputs, whichever comes first. A crash,
+# a sanitizer report or a failed check exits non-zero and leaves the input in
+# WORK_ROOT as <name>-crash-*.
+if(DEFINED MISSING)
+  message(FATAL_ERROR "${MISSING}")
+endif()
+if(NOT DEFINED SECONDS)
+  set(SECONDS 20)
+endif()
+foreach(name IN LISTS NAMES)
+  set(exe "${BIN_DIR}/fuzz_${name}")
+  set(work "${WORK_ROOT}/${name}")
+  if(NOT EXISTS "${exe}")
+    message(FATAL_ERROR "fuzz harness ${exe} was not built")
+  endif()
+  file(MAKE_DIRECTORY "${work}")
+  if(name STREQUAL "spec")
+    set(maxlen 256)
+  else()
+    set(maxlen 2048)
+  endif()
+  execute_process(
+    COMMAND "${exe}" -seed=1 -max_total_time=${SECONDS} -runs=2000000 -max_len=${maxlen}
+            -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
+            "-artifact_prefix=${WORK_ROOT}/${name}-" "${work}" "${CORPUS_ROOT}/${name}"
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE err)
+  # libFuzzer reports on stderr; keep its summary lines and any failure.
+  string(REGEX MATCHALL "(stat::[a-z_]+:[^\n]*|Done [^\n]*|fuzz_[a-z]+: [^\n]*|==[0-9]+==ERROR[^\n]*|SUMMARY[^\n]*|[^\n]*runtime error[^\n]*)" lines "${err}")
+  string(REPLACE ";" "\n  " lines "${lines}")
+  message("fuzz_${name}:\n  ${lines}")
+  if(NOT rc EQUAL 0)
+    message("${err}")
+    message(FATAL_ERROR "fuzz_${name} failed (exit ${rc}); the input is in ${WORK_ROOT}")
+  endif()
+endforeach()
