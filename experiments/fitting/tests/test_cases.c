@@ -128,10 +128,6 @@ int main(void)
 	/* ---- grid hulls of a rotated ellipsoid: the ratio is the sphere's ------ */
 	{
 		const double q[4] = { 0.9, 0.1, -0.3, 0.2 };
-		double n2 = 0;
-		for (int i = 0; i < 4; ++i) {
-			n2 += q[i] * q[i];
-		}
 		mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], NULL);
 		mkShape3 s = { 7.0, 2.5, 4.0, 1.0, 1.0 };
 		mkBody3 b = mkBody3_Make(s, R, (mkVec3){ 3.0, -1.0, 2.0 });
