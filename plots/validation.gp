@@ -8,6 +8,7 @@
 #
 #   gnuplot plots/validation.gp                          (results/validation.csv -> plots/)
 #   gnuplot -e "results='results/quick/validation.csv'; outdir='plots/quick'" plots/validation.gp
+#   gnuplot -e "table='results/summary/validation.md'" plots/validation.gp   (summary table only)
 #
 # Run from the top of the project. Values at or below `floor` (exact zeros
 # cannot be drawn on a log axis) are drawn at `floor`, and the key says so.
@@ -47,9 +48,44 @@ do for [d = 2:3] {
 		eval sprintf("dg_%d_%d = STATS_records > 0 ? STATS_median : NaN", d, i)
 		stats results using (sel(d, f, "nonfinite_count")) nooutput
 		eval sprintf("nf_%d_%d = STATS_records > 0 ? STATS_sum : 0", d, i)
+		stats results using (sel(d, f, "e_implicit_max")) nooutput
+		eval sprintf("xi_%d_%d = STATS_records > 0 ? STATS_max : NaN", d, i)
+		stats results using (sel(d, f, "e_gradient_max")) nooutput
+		eval sprintf("xg_%d_%d = STATS_records > 0 ? STATS_max : NaN", d, i)
+		stats results using (sel(d, f, "angle_max")) nooutput
+		eval sprintf("xa_%d_%d = STATS_records > 0 ? STATS_max : NaN", d, i)
+		eval sprintf("nt_%d_%d = STATS_records", d, i)
+		stats results using (sel(d, f, "n_points")) nooutput
+		eval sprintf("np_%d_%d = STATS_records > 0 ? STATS_sum : 0", d, i)
 	}
 }
 mean_of(kind, d, i) = value(sprintf("%s_%d_%d", kind, d, i))
+
+# Table mode: with -e "table='FILE'" write the summary as a Markdown table
+# and draw nothing.
+if (exists("table")) {
+	set print table
+	print sprintf("Numerical validation (paper Sec. 6.1), from %s.", results)
+	print "Per trial, means and maxima over the boundary points with finite metrics;"
+	print "here the mean and median over trials of the per-trial means, and the largest"
+	print "per-trial maximum. Published: the paper's means."
+	print ""
+	print "| dim | form | trials | points | e_implicit mean | median | max | published | e_gradient mean | median | max | published | angle max (rad) | non-finite points |"
+	print "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+	do for [d = 2:3] {
+		do for [i = 1:3] {
+			if (mean_of("nt", d, i) > 0) {
+				print sprintf("| %d | %s | %d | %d | %.3e | %.3e | %.3e | %.4e | %.3e | %.3e | %.3e | %.4e | %.3e | %d |", \
+					d, word(forms, i), int(mean_of("nt", d, i)), int(mean_of("np", d, i)), \
+					mean_of("mi", d, i), mean_of("di", d, i), mean_of("xi", d, i), (d == 2 ? pub_imp2 : pub_imp3), \
+					mean_of("mg", d, i), mean_of("dg", d, i), mean_of("xg", d, i), (d == 2 ? pub_grad2 : pub_grad3), \
+					mean_of("xa", d, i), int(mean_of("nf", d, i)))
+			}
+		}
+	}
+	unset print
+	exit
+}
 label_of(kind, d, i) = sprintf("%s: mean %.2e, median %.2e%s", word(forms, i), \
 	mean_of("m" . kind, d, i), mean_of("d" . kind, d, i), \
 	mean_of("nf", d, i) > 0 ? sprintf(" (%d non-finite pts)", int(mean_of("nf", d, i))) : "")
