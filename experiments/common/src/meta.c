@@ -183,8 +183,9 @@ static void mkCpuModel(char *buf, size_t len)
 	fclose(fp);
 }
 
-/* argv joined by spaces; an argument holding anything but plain characters
- * is single-quoted for the shell. */
+/* argv joined by spaces, the program by its file name only (where it was
+ * built or installed says nothing about the run); an argument holding
+ * anything but plain characters is single-quoted for the shell. */
 static char *mkJoinArgs(int argc, char **argv)
 {
 	size_t cap = 1;
@@ -196,6 +197,8 @@ static char *mkJoinArgs(int argc, char **argv)
 	char *p = out;
 	for (int i = 0; i < argc; ++i) {
 		const char *a = argv[i];
+		if (i == 0 && strrchr(a, '/') && strrchr(a, '/')[1])
+			a = strrchr(a, '/') + 1;
 		int plain = a[0] != '\0';
 		for (const char *q = a; *q; ++q) {
 			if (!strchr("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_=./,:+@%", *q))

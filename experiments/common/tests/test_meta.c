@@ -33,7 +33,7 @@ int main(void)
 	ENSURE(fd >= 0);
 	close(fd);
 
-	char *argv[] = { "validation", "--seed", "7", "--out", "a b.csv", "it's" };
+	char *argv[] = { "/some/build/dir/validation", "--seed", "7", "--out", "a b.csv", "it's" };
 	mkMeta m;
 	mkMeta_Init(&m, "validation", 3, 6, argv);
 	/* Before the driver's keys are set, writing is refused. */

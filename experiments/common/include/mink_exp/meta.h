@@ -7,7 +7,8 @@
  * mkMeta_Init records what the program can find out itself:
  *   experiment, schema_version       (from the driver)
  *   date_utc                         start of the run, ISO 8601
- *   command_line                     argv, shell-quoted where needed
+ *   command_line                     argv (the program by its file name),
+ *                                    shell-quoted where needed
  *   cpu_model, cpu_count, os         /proc/cpuinfo, sysconf, uname
  *   compiler, compiler_flags, build_type   of this build (CMake)
  *   git_commit, git_dirty            of the source tree at the last build
