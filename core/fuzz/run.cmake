@@ -1,21 +1,23 @@
 # Runs libFuzzer harnesses briefly, for CTest.
 #
-#   cmake -DNAMES="spec;sum" -DBIN_DIR=<dir of fuzz_*> -DCORPUS_ROOT=<seed corpus>
-#         -DWORK_ROOT=<scratch dir> [-DSECONDS=20] -P run.cmake
+#   cmake -DNAMES=spec,sum -DBIN_DIR=<dir of fuzz_*> -DCORPUS_ROOT=<seed corpus>
+#         -DWORK_ROOT=<scratch dir> [-DSECONDS=18] -P run.cmake
 #   cmake -DMISSING="<what to install>" -P run.cmake      (fails with that text)
 #
 # Each harness fuzz_<name> starts from the seed corpus CORPUS_ROOT/<name>
 # (read only: new inputs go to WORK_ROOT/<name>), with a fixed seed, and stops
-# after SECONDS seconds or 2,000,000 inputs, whichever comes first. A crash,
+# after SECONDS seconds (18 by default: about 20 with start-up and the final
+# pass) or 2,000,000 inputs, whichever comes first. A crash,
 # a sanitizer report or a failed check exits non-zero and leaves the input in
 # WORK_ROOT as <name>-crash-*.
 if(DEFINED MISSING)
   message(FATAL_ERROR "${MISSING}")
 endif()
 if(NOT DEFINED SECONDS)
-  set(SECONDS 20)
+  set(SECONDS 18)
 endif()
-foreach(name IN LISTS NAMES)
+string(REPLACE "," ";" names "${NAMES}")
+foreach(name IN LISTS names)
   set(exe "${BIN_DIR}/fuzz_${name}")
   set(work "${WORK_ROOT}/${name}")
   if(NOT EXISTS "${exe}")
