@@ -152,8 +152,8 @@ int main(void)
 			st.stableSum.max, refStat_Mean(&st.stableSum));
 		/* The test must actually reach the cancellation, or it shows nothing:
 		 * at eps1 = 0.5 the published form loses at least 1e-6 of the size
-		 * (NUMERICS.md measured up to 1e-3), and at eps1 >= 1.5 it fails
-		 * outright (NaN or the pole) on some points. */
+		 * somewhere (about 1e-4 here), and at eps1 >= 1.5 it fails outright
+		 * (NaN, or the point lands on the pole) on some points. */
 		if (ie == 0)
 			ENSURE_LE(1e-6, st.paper.max, "published form shows no cancellation at eps1 = 0.5");
 		else

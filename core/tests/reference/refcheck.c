@@ -23,8 +23,8 @@
  *     (one perturbation per axis; to first order their sum bounds any
  *     perturbation in the box). U is tiny for well-conditioned points and
  *     reaches the size of a face where the support point jumps across it
- *     (eps -> 0, or eps -> 2 near the corners), which is the geometry that
- *     NUMERICS.md describes.
+ *     (eps -> 0, or eps -> 2 near the corners): there a tiny turn of the
+ *     direction moves the exact point a long way, whatever the code does.
  * (ii) The support map itself. It takes the ratios |w_i|/h <= 1 to the power
  *     q - 1 (up to 1999 at eps = 2 - 1e-3); a relative error d of h (about
  *     4u) scales the components by (1 + d)^(q - 1), i.e. moves the point off
@@ -383,9 +383,8 @@ void refCheck_Case(const refCase *c, refGroup *g)
 						ENSURE_LE(eB, tolB, ctx, mkImpl_Name(impl), f ? "gradient" : "normal",
 							surface ? "surface" : "normal-param", plus ? "plus" : "contact", j, u[0], u[1], u[2]);
 						/* The distance to the ideal point means something only
-						 * where the problem is well-conditioned (NUMERICS.md,
-						 * 'Conditioning at the extremes'); the distance from
-						 * the boundary is quoted everywhere. */
+						 * where the problem is well-conditioned (see (i) above);
+						 * the distance from the boundary is quoted everywhere. */
 						int ill = p->condDone && (p->U1 + p->U2) / S > 1e-9;
 						if (!ill)
 							refStat_Add(&g->eA[impl][f], eA);
