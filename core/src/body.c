@@ -265,19 +265,29 @@ mkVec3 mkShape3_FromGradientPaper(mkShape3 s, mkVec3 m)
 	return x;
 }
 
-/* Lemma 1: Phi(m) = |g2(u2)| with u2 the normalised g2^-1(m): the norm of
- * the gradient at the boundary point whose gradient is parallel to m. That
- * point is f~~(m); Phi is the norm of Psi's gradient there. */
+/* Lemma 1: Phi(m) = |g2(u2)| with u2 the normalised g2^-1(m) (eq.
+ * Phi_m1_general): the norm of the gradient at the boundary point whose
+ * gradient is parallel to m. u2 comes from the same log-domain evaluation as
+ * f~~, so that neither 1/(2-eps) nor 2/eps exponents meet raw numbers. */
 double mkShape2_Phi(mkShape2 s, mkVec2 m)
 {
-	mkVec2 g = mkShape2_Gradient(s, mkShape2_FromGradient(s, m));
-	return hypot(g.x, g.y);
+	mkKShape2 k; mkKShape2_Prepare(&k, s);
+	double l[2], e = 2.0 - s.eps;
+	mkK2_GradInvLogs(&k, m.x, m.y, l);
+	/* g_i = 2/(eps a_i) |u_i|^(2-eps) (eq. 2d_sq_m_u) */
+	return hypot(2.0 / (s.eps * s.a) * exp(e * l[0]), 2.0 / (s.eps * s.b) * exp(e * l[1]));
 }
 
 double mkShape3_Phi(mkShape3 s, mkVec3 m)
 {
-	mkVec3 g = mkShape3_Gradient(s, mkShape3_FromGradient(s, m));
-	return sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+	mkKShape3 k; mkKShape3_Prepare(&k, s);
+	double l[4], e1 = 2.0 - s.eps1, e2 = 2.0 - s.eps2, f = 2.0 / s.eps1;
+	mkK3_GradInvLogs(&k, m.x, m.y, m.z, l);
+	/* eq. 3d_sq_m_u in the angles: rho^(2-e1) cw^(2-e2) / a, ..., |u3|^(2-e1) / c */
+	double g1 = f / s.a * exp(e1 * l[0] + e2 * l[2]);
+	double g2 = f / s.b * exp(e1 * l[0] + e2 * l[3]);
+	double g3 = f / s.c * exp(e1 * l[1]);
+	return sqrt(g1 * g1 + g2 * g2 + g3 * g3);
 }
 
 double mkShape2_Area(mkShape2 s)

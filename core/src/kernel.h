@@ -75,5 +75,9 @@ void mkK2_GradInv(const mkKShape2 *s, double m1, double m2, double *x);
 void mkK3_Surface(const mkKShape3 *s, double u1, double u2, double u3, double *x, double *m);
 void mkK3_Support(const mkKShape3 *s, double d1, double d2, double d3, double *x);
 void mkK3_GradInv(const mkKShape3 *s, double m1, double m2, double m3, double *x);
+/* Logarithms of the unit parameter u of the point f~~(m): 2D log|u1|,
+ * log|u2|; 3D log cos(eta), log|sin(eta)|, log|cos(omega)|, log|sin(omega)|. */
+void mkK2_GradInvLogs(const mkKShape2 *s, double m1, double m2, double *l);
+void mkK3_GradInvLogs(const mkKShape3 *s, double m1, double m2, double m3, double *l);
 
 #endif

@@ -107,6 +107,20 @@ static inline void KFN(se_gradinv)(const mkKShape2 *s, KV m1, KV m2, KV *x1, KV 
 	*x2 = s->b * KCOPYSIGN(KSEL(pg, xmin, xmax), m2);
 }
 
+/* log |u_i| of the unit parameter u = g^-1(m)/|g^-1(m)| of the point that
+ * se_gradinv finds (Lemma 1's Phi is |g(u)|, whose powers 2-eps must act on
+ * these logarithms: u_i itself may underflow where u_i^(2-eps) does not). */
+static inline void KFN(se_gradinv_logs)(const mkKShape2 *s, KV m1, KV m2, KV *l1, KV *l2)
+{
+	KV p1 = KABS(s->a * m1), p2 = KABS(s->b * m2);
+	KM pg = p1 >= p2;
+	KV mx = KSEL(pg, p1, p2), mn = KSEL(pg, p2, p1);
+	KV al = KLOG(mn / KFN(kmax)(mx, KSPLAT(KTINY))) * s->inv2me; /* log(w_min / w_max) */
+	KV lmax = -0.5 * KLOG1P1(KEXP(2.0 * al));
+	*l1 = KSEL(pg, lmax, al + lmax);
+	*l2 = KSEL(pg, al + lmax, lmax);
+}
+
 static inline void KFN(se_dir)(const mkKShape2 *s, int form, KV d1, KV d2, KV *x1, KV *x2)
 {
 	if (form == MK_FORM_NORMAL) KFN(se_support)(s, d1, d2, x1, x2);
@@ -117,6 +131,10 @@ static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const doubl
 	double *px, double *py, double *pkx, double *pky)
 {
 	KV u1 = KLOAD(pux), u2 = KLOAD(puy);
+	{ /* only the direction of u counts: make it a unit vector */
+		KV inv = 1.0 / KSQRT(u1 * u1 + u2 * u2);
+		u1 = u1 * inv; u2 = u2 * inv;
+	}
 	KV x1, x2, v1 = u1, v2 = u2; /* v: B1's gradient (surface) or the normal */
 	if (p->param == MK_PARAM_SURFACE) {
 		KFN(se_surface)(&p->s1, u1, u2, &x1, &x2, &v1, &v2);
@@ -209,9 +227,11 @@ static inline void KFN(sq_support)(const mkKShape3 *s, KV d1, KV d2, KV d3, KV *
 /* f~~(m) through g^-1 (paper eq. 3d_sq_u_m), normalised, then f. With
  * p = (a|m1|, b|m2|, c|m3|): w12 = |(w1, w2)| and w3 are compared in the log
  * domain, D = log(w12/w3), and cos(eta), sin(eta) follow from D alone. */
-static inline void KFN(sq_gradinv)(const mkKShape3 *s, KV m1, KV m2, KV m3, KV *x1, KV *x2, KV *x3)
+/* The logarithms of the unit parameter of the point whose gradient is
+ * parallel to m: log cos(eta), log |sin(eta)|, log |cos(omega)|, log |sin(omega)|. */
+static inline void KFN(sq_gradinv_logs)(const mkKShape3 *s, KV m1, KV m2, KV m3,
+	KV *lrho_out, KV *l3_out, KV *lc1_out, KV *lc2_out)
 {
-	if (s->ellipse) { KFN(sq_support)(s, m1, m2, m3, x1, x2, x3); return; }
 	KV p1 = KABS(s->a * m1), p2 = KABS(s->b * m2), p3 = KABS(s->c * m3);
 	KM pg = p1 >= p2;
 	KV P12 = KSEL(pg, p1, p2), mn = KSEL(pg, p2, p1);
@@ -226,7 +246,17 @@ static inline void KFN(sq_gradinv)(const mkKShape3 *s, KV m1, KV m2, KV m3, KV *
 	KV lrho = KSEL(dpos, -0.5 * le, D - 0.5 * le);  /* log cos(eta) */
 	KV l3 = KSEL(dpos, -D - 0.5 * le, -0.5 * le);    /* log |sin(eta)| */
 	KV lcmax = -0.5 * L12, lcmin = al - 0.5 * L12;  /* log cos/sin(omega) */
-	KV lc1 = KSEL(pg, lcmax, lcmin), lc2 = KSEL(pg, lcmin, lcmax);
+	*lc1_out = KSEL(pg, lcmax, lcmin);
+	*lc2_out = KSEL(pg, lcmin, lcmax);
+	*lrho_out = lrho;
+	*l3_out = l3;
+}
+
+static inline void KFN(sq_gradinv)(const mkKShape3 *s, KV m1, KV m2, KV m3, KV *x1, KV *x2, KV *x3)
+{
+	if (s->ellipse) { KFN(sq_support)(s, m1, m2, m3, x1, x2, x3); return; }
+	KV lrho, l3, lc1, lc2;
+	KFN(sq_gradinv_logs)(s, m1, m2, m3, &lrho, &l3, &lc1, &lc2);
 	*x1 = s->a * KCOPYSIGN(KEXP(s->e1 * lrho + s->e2 * lc1), m1);
 	*x2 = s->b * KCOPYSIGN(KEXP(s->e1 * lrho + s->e2 * lc2), m2);
 	*x3 = s->c * KCOPYSIGN(KEXP(s->e1 * l3), m3);
@@ -244,6 +274,10 @@ static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const doubl
 	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
 {
 	KV u1 = KLOAD(pux), u2 = KLOAD(puy), u3 = KLOAD(puz);
+	{
+		KV inv = 1.0 / KSQRT(u1 * u1 + u2 * u2 + u3 * u3);
+		u1 = u1 * inv; u2 = u2 * inv; u3 = u3 * inv;
+	}
 	KV x1, x2, x3, v1 = u1, v2 = u2, v3 = u3;
 	if (p->param == MK_PARAM_SURFACE) {
 		KFN(sq_surface)(&p->s1, u1, u2, u3, &x1, &x2, &x3, &v1, &v2, &v3);

@@ -50,3 +50,13 @@ void mkK3_GradInv(const mkKShape3 *s, double m1, double m2, double m3, double *x
 {
 	sq_gradinv_scalar(s, m1, m2, m3, &x[0], &x[1], &x[2]);
 }
+
+void mkK2_GradInvLogs(const mkKShape2 *s, double m1, double m2, double *l)
+{
+	se_gradinv_logs_scalar(s, m1, m2, &l[0], &l[1]);
+}
+
+void mkK3_GradInvLogs(const mkKShape3 *s, double m1, double m2, double m3, double *l)
+{
+	sq_gradinv_logs_scalar(s, m1, m2, m3, &l[0], &l[1], &l[2], &l[3]);
+}
