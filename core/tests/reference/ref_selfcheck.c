@@ -10,6 +10,9 @@
  *  6. h(d) is the maximum of <d, x> over the boundary: a dense sample of
  *     boundary points never exceeds it and comes within the sampling error
  *  7. M^T (M^-T v) = v
+ *  8. grad Psi(support(d)) = (2/e1) d / h(d): Psi is the p1-th power of the
+ *     body's norm, whose gradient at a boundary point with normal d is
+ *     d / h(d) (Lemma 1's Phi is then (2/e1) |m| / h(m))
  * Tolerance: every quantity is computed at 256 bits (unit roundoff 2^-256,
  * about 9e-78). The longest chain is a few dozen operations, and the powers
  * amplify relative errors by at most their exponent (below 2/1e-3 = 2000) and
@@ -101,6 +104,16 @@ static void checkShape(refShape s, refRng *rng, refStat *stat)
 		double e5 = fabs(mpfr_get_d(psi, MPFR_RNDN));
 		ENSURE_LE(e5, SELF_TOL, "Psi(s(d)) dim %d eps %g,%g", s.dim, s.e1, s.e2);
 		refStat_Add(stat, e5);
+		/* 8 */
+		refShape_Gradient(s, &x, &m);
+		mpfr_set_d(t, s.e1, MPFR_RNDN);
+		mpfr_ui_div(t, 2, t, MPFR_RNDN);
+		mpfr_div(t, t, h, MPFR_RNDN);
+		for (int i = 0; i < s.dim; ++i)
+			mpfr_mul(f.c[i], d.c[i], t, MPFR_RNDN);
+		double e6 = relDiff(&m, &f, s.dim);
+		ENSURE_LE(e6, SELF_TOL, "grad Psi(s(d)) = (2/e1) d/h dim %d eps %g,%g", s.dim, s.e1, s.e2);
+		refStat_Add(stat, e6);
 	}
 	refVec_Clear(&u);
 	refVec_Clear(&f);
