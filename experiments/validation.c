@@ -6,8 +6,9 @@
  * normal form (Theorem 1), the gradient form (Theorem 2, stable evaluation)
  * and the paper's printed formulas (MK_FORM_PAPER, the reference of what the
  * published code computes). Each boundary point x with its kissing point k
- * on B1 is checked by mkCheck2/mkCheck3 (e_implicit, e_gradient, the normal
- * angle), and one raw row per trial and form is written.
+ * on B1 is checked by mkCheck2_Normal/mkCheck3_Normal (e_implicit,
+ * e_gradient, the normal angle, and e_support with B1's normal taken from
+ * its parameter), and one raw row per trial and form is written.
  *
  * Draws (paper Sec. 6.1, with the reference code's distributions):
  *  2D: a, b ~ U(0,10), eps ~ U(0.1,1.9), M = rot(2 pi U(0,1)) [1 s; 0 1],
@@ -36,7 +37,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MK_SCHEMA_VERSION 1
+#define MK_SCHEMA_VERSION 2 /* 2: e_support_mean, e_support_max */
 #define MK_PI 3.14159265358979323846
 #define MK_MAX_REDRAWS 1000
 
@@ -264,14 +265,14 @@ static int mkDrawBody3(mkRng *r, double amax, mkRotDraw rot, mkBody3 *body, mkBo
 /* ---- metrics ------------------------------------------------------------- */
 
 typedef struct mkAgg {
-	double sum_i, max_i, sum_g, max_g, sum_a, max_a, max_i1;
+	double sum_i, max_i, sum_g, max_g, sum_a, max_a, max_i1, sum_s, max_s;
 	long finite, nonfinite;
 } mkAgg;
 
 static void mkAgg_Add(mkAgg *g, mkCheck c, int point_finite)
 {
 	if (!point_finite || !isfinite(c.e_implicit) || !isfinite(c.e_gradient)
-		|| !isfinite(c.angle) || !isfinite(c.e_implicit1)) {
+		|| !isfinite(c.angle) || !isfinite(c.e_implicit1) || !isfinite(c.e_support)) {
 		g->nonfinite += 1;
 		return;
 	}
@@ -283,6 +284,8 @@ static void mkAgg_Add(mkAgg *g, mkCheck c, int point_finite)
 	g->max_g = fmax(g->max_g, c.e_gradient);
 	g->max_a = fmax(g->max_a, c.angle);
 	g->max_i1 = fmax(g->max_i1, c.e_implicit1);
+	g->sum_s += fabs(c.e_support);
+	g->max_s = fmax(g->max_s, fabs(c.e_support));
 }
 
 /* ---- rows ---------------------------------------------------------------- */
@@ -290,7 +293,8 @@ static void mkAgg_Add(mkAgg *g, mkCheck c, int point_finite)
 static const char *const mkColumns[] = {
 	"dim", "trial", "form", "impl", "set", "n_points",
 	"e_implicit_mean", "e_implicit_max", "e_gradient_mean", "e_gradient_max",
-	"angle_mean", "angle_max", "e_implicit1_max", "nonfinite_count", "redraws",
+	"angle_mean", "angle_max", "e_implicit1_max", "e_support_mean", "e_support_max",
+	"nonfinite_count", "redraws",
 	"b1_a", "b1_b", "b1_c", "b1_eps1", "b1_eps2", "b1_angle", "b1_shear",
 	"b1_qw", "b1_qx", "b1_qy", "b1_qz",
 	"b2_a", "b2_b", "b2_c", "b2_eps1", "b2_eps2", "b2_angle", "b2_shear",
@@ -338,6 +342,8 @@ static void mkWriteRow(mkCsv *csv, int dim, long trial, mkForm form, mkImpl impl
 	mkCsv_Double(csv, g->finite ? g->sum_a / nf : NAN);
 	mkCsv_Double(csv, g->finite ? g->max_a : NAN);
 	mkCsv_Double(csv, g->finite ? g->max_i1 : NAN);
+	mkCsv_Double(csv, g->finite ? g->sum_s / nf : NAN);
+	mkCsv_Double(csv, g->finite ? g->max_s : NAN);
 	mkCsv_Int(csv, g->nonfinite);
 	mkCsv_Int(csv, redraws);
 	mkWriteBody(csv, r1);
@@ -442,19 +448,25 @@ static int mkRunTrial(int dim, long trial, const mkOptions *o, mkCsv *csv, mkBuf
 		}
 		mkAgg agg;
 		memset(&agg, 0, sizeof agg);
+		mkMat2 M1i2 = dim == 2 ? mkMat2_Inverse(p1.M) : mkMat2_Identity();
+		mkMat3 M1i3 = dim == 3 ? mkMat3_Inverse(q1.M) : mkMat3_Identity();
 		for (long i = 0; i < n; ++i) {
 			mkCheck c;
 			int finite;
 			if (dim == 2) {
 				mkVec2 x = { buf->x[i], buf->y[i] }, k = { buf->kx[i], buf->ky[i] };
 				finite = isfinite(x.x) && isfinite(x.y) && isfinite(k.x) && isfinite(k.y);
-				c = mkCheck2(p1, p2, o->set, x, k);
+				/* B1's normal from its parameter, for e_support */
+				mkVec2 n1 = mkMat2_MulTVec(M1i2, mkShape2_PointGradient(p1.shape, (mkVec2){ ux[i], uy[i] }));
+				c = mkCheck2_Normal(p1, p2, o->set, x, k, n1);
 			} else {
 				mkVec3 x = { buf->x[i], buf->y[i], buf->z[i] };
 				mkVec3 k = { buf->kx[i], buf->ky[i], buf->kz[i] };
 				finite = isfinite(x.x) && isfinite(x.y) && isfinite(x.z)
 					&& isfinite(k.x) && isfinite(k.y) && isfinite(k.z);
-				c = mkCheck3(q1, q2, o->set, x, k);
+				mkVec3 n1 = mkMat3_MulTVec(M1i3,
+					mkShape3_PointGradient(q1.shape, (mkVec3){ ux[i], uy[i], buf->u3z[i] }));
+				c = mkCheck3_Normal(q1, q2, o->set, x, k, n1);
 			}
 			mkAgg_Add(&agg, c, finite);
 		}
