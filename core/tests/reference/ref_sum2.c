@@ -13,7 +13,7 @@
  *    1e-4 off them, on the diagonals, at the world normals of the bodies'
  *    faces (exactly and turned by 1e-13 and 1e-9 rad) and at random;
  *  - parameter vectors that are not unit vectors (scaled by 3, 1e-5, 1e5,
- *    1e-150, 1e150), which sum.h accepts. */
+ *    1e-150, 1e150, 1e-300, 1e300), which sum.h accepts. */
 #include "refcheck.h"
 
 #include <math.h>
@@ -136,11 +136,12 @@ static void extremes(void)
 
 /* Parameter vectors of any length: sum.h takes any nonzero vector and uses
  * only its direction. The validation draws' angles (unit vectors in the
- * reference) are handed to the core scaled by 3, 1e-5, 1e5, 1e-150 and
- * 1e150; the MPFR reference normalises the same scaled doubles. */
+ * reference) are handed to the core scaled by 3, 1e-5, 1e5, 1e-150, 1e150,
+ * 1e-300 and 1e300 (where the squared length leaves the double range); the
+ * MPFR reference normalises the same scaled doubles. */
 static void scaledParameters(void)
 {
-	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150 };
+	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150, 1e-300, 1e300 };
 	refGroup g = { .name = "ref_sum2 scaled-u" };
 	refRng rng = { 6103u };
 	enum { N = 16 };
@@ -149,7 +150,7 @@ static void scaledParameters(void)
 	for (int trial = 0; trial < 10; ++trial) {
 		refCase c = { .dim = 2, .n = N, .ux = ux, .uy = uy };
 		for (int j = 0; j < N; ++j) {
-			double k = scale[(j + trial) % 5];
+			double k = scale[(j + trial) % 7];
 			ux[j] = ux0[j] * k;
 			uy[j] = uy0[j] * k;
 		}

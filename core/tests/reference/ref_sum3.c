@@ -15,7 +15,7 @@
  *    at the world normals of the bodies' faces (exactly and tilted by 1e-13
  *    and 1e-9) and at random;
  *  - parameter vectors that are not unit vectors (scaled by 3, 1e-5, 1e5,
- *    1e-150, 1e150), which sum.h accepts. */
+ *    1e-150, 1e150, 1e-300, 1e300), which sum.h accepts. */
 #include "refcheck.h"
 
 #include <math.h>
@@ -182,11 +182,12 @@ static void extremes(void)
 
 /* Parameter vectors of any length: sum.h takes any nonzero vector and uses
  * only its direction. The grid's unit vectors are handed to the core scaled
- * by 3, 1e-5, 1e5, 1e-150 and 1e150; the MPFR reference normalises the same
- * scaled doubles. */
+ * by 3, 1e-5, 1e5, 1e-150, 1e150, 1e-300 and 1e300 (where the squared length
+ * leaves the double range); the MPFR reference normalises the same scaled
+ * doubles. */
 static void scaledParameters(void)
 {
-	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150 };
+	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150, 1e-300, 1e300 };
 	refGroup g = { .name = "ref_sum3 scaled-u" };
 	refRng rng = { 6203u };
 	enum { G = 4, N = G * G };
@@ -195,7 +196,7 @@ static void scaledParameters(void)
 	for (int trial = 0; trial < 10; ++trial) {
 		refCase c = { .dim = 3, .n = N, .ux = ux, .uy = uy, .uz = uz };
 		for (int j = 0; j < N; ++j) {
-			double k = scale[(j + trial) % 5];
+			double k = scale[(j + trial) % 7];
 			ux[j] = ux0[j] * k;
 			uy[j] = uy0[j] * k;
 			uz[j] = uz0[j] * k;
