@@ -22,6 +22,7 @@
  * never NaN. */
 
 #define KTINY 1e-300 /* floor of a divisor that may be exactly zero */
+#define KUNIT_TOL 1e-15 /* |u|^2 - 1 of a unit vector rounded to double, with room */
 
 /* log(1 + t) for t in [0, 1]: through log rather than log1p (twice as fast
  * in SLEEF). Rounding 1 + t costs at most half an ulp of 1 in absolute
@@ -131,9 +132,15 @@ static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const doubl
 	double *px, double *py, double *pkx, double *pky)
 {
 	KV u1 = KLOAD(pux), u2 = KLOAD(puy);
-	{ /* only the direction of u counts: make it a unit vector */
-		KV inv = 1.0 / KSQRT(u1 * u1 + u2 * u2);
-		u1 = u1 * inv; u2 = u2 * inv;
+	{ /* Only the direction of u counts. A unit vector (to rounding) is used
+	   * as given, so the caller's parameters are not moved by an ulp;
+	   * others are scaled, by the largest component first so that no square
+	   * under- or overflows. */
+		KM unit = KABS(u1 * u1 + u2 * u2 - 1.0) <= KSPLAT(KUNIT_TOL);
+		KV m = KFN(kmax)(KABS(u1), KABS(u2));
+		KV v1 = u1 / m, v2 = u2 / m;
+		KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2);
+		u1 = KSEL(unit, u1, v1 * inv); u2 = KSEL(unit, u2, v2 * inv);
 	}
 	KV x1, x2, v1 = u1, v2 = u2; /* v: B1's gradient (surface) or the normal */
 	if (p->param == MK_PARAM_SURFACE) {
@@ -274,9 +281,12 @@ static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const doubl
 	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
 {
 	KV u1 = KLOAD(pux), u2 = KLOAD(puy), u3 = KLOAD(puz);
-	{
-		KV inv = 1.0 / KSQRT(u1 * u1 + u2 * u2 + u3 * u3);
-		u1 = u1 * inv; u2 = u2 * inv; u3 = u3 * inv;
+	{ /* as in block2 */
+		KM unit = KABS(u1 * u1 + u2 * u2 + u3 * u3 - 1.0) <= KSPLAT(KUNIT_TOL);
+		KV m = KFN(kmax)(KFN(kmax)(KABS(u1), KABS(u2)), KABS(u3));
+		KV v1 = u1 / m, v2 = u2 / m, v3 = u3 / m;
+		KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2 + v3 * v3);
+		u1 = KSEL(unit, u1, v1 * inv); u2 = KSEL(unit, u2, v2 * inv); u3 = KSEL(unit, u3, v3 * inv);
 	}
 	KV x1, x2, x3, v1 = u1, v2 = u2, v3 = u3;
 	if (p->param == MK_PARAM_SURFACE) {

@@ -71,8 +71,8 @@ MK_API int mkImpl_Available(mkImpl impl);
 /* The kernel AUTO resolves to on this machine. */
 MK_API mkImpl mkImpl_Resolve(mkImpl impl);
 
-/* Batch closed form over n parameter vectors (u may be any vectors of length
- * in [1e-150, 1e150]; only their directions matter). Fails with MK_ERR_ARGUMENT on n < 0, NULL
+/* Batch closed form over n parameter vectors (u may be any nonzero finite
+ * vectors; only their directions matter). Fails with MK_ERR_ARGUMENT on n < 0, NULL
  * required pointers or a bad option, MK_ERR_UNSUPPORTED for MK_FORM_PAPER
  * with MK_PARAM_NORMAL or a vector impl, or an impl this CPU lacks. Bodies
  * must be valid (mkBody2_IsValid); this is asserted, not checked. */
