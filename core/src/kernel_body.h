@@ -9,6 +9,7 @@
  *   KABS(v) KCOPYSIGN(mag, s) KSEL(mask, a, b)   (mask ? a : b)
  *   KLOAD(p) KSTORE(p, v)       unaligned load / store of KW doubles
  *   KSPLAT(s)    a lane value with every lane equal to the double s
+ *   KALL(mask)   nonzero when the mask holds in every lane
  *   KFN(name)    appends the ISA suffix to a function name
  *
  * Numerics (see NUMERICS notes in the README). Every power is taken in the
@@ -137,10 +138,12 @@ static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const doubl
 	   * others are scaled, by the largest component first so that no square
 	   * under- or overflows. */
 		KM unit = KABS(u1 * u1 + u2 * u2 - 1.0) <= KSPLAT(KUNIT_TOL);
-		KV m = KFN(kmax)(KABS(u1), KABS(u2));
-		KV v1 = u1 / m, v2 = u2 / m;
-		KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2);
-		u1 = KSEL(unit, u1, v1 * inv); u2 = KSEL(unit, u2, v2 * inv);
+		if (!KALL(unit)) {
+			KV m = KFN(kmax)(KABS(u1), KABS(u2));
+			KV v1 = u1 / m, v2 = u2 / m;
+			KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2);
+			u1 = KSEL(unit, u1, v1 * inv); u2 = KSEL(unit, u2, v2 * inv);
+		}
 	}
 	KV x1, x2, v1 = u1, v2 = u2; /* v: B1's gradient (surface) or the normal */
 	if (p->param == MK_PARAM_SURFACE) {
@@ -283,10 +286,12 @@ static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const doubl
 	KV u1 = KLOAD(pux), u2 = KLOAD(puy), u3 = KLOAD(puz);
 	{ /* as in block2 */
 		KM unit = KABS(u1 * u1 + u2 * u2 + u3 * u3 - 1.0) <= KSPLAT(KUNIT_TOL);
-		KV m = KFN(kmax)(KFN(kmax)(KABS(u1), KABS(u2)), KABS(u3));
-		KV v1 = u1 / m, v2 = u2 / m, v3 = u3 / m;
-		KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2 + v3 * v3);
-		u1 = KSEL(unit, u1, v1 * inv); u2 = KSEL(unit, u2, v2 * inv); u3 = KSEL(unit, u3, v3 * inv);
+		if (!KALL(unit)) {
+			KV m = KFN(kmax)(KFN(kmax)(KABS(u1), KABS(u2)), KABS(u3));
+			KV v1 = u1 / m, v2 = u2 / m, v3 = u3 / m;
+			KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2 + v3 * v3);
+			u1 = KSEL(unit, u1, v1 * inv); u2 = KSEL(unit, u2, v2 * inv); u3 = KSEL(unit, u3, v3 * inv);
+		}
 	}
 	KV x1, x2, x3, v1 = u1, v2 = u2, v3 = u3;
 	if (p->param == MK_PARAM_SURFACE) {

@@ -15,6 +15,7 @@
 #define KCOPYSIGN copysign
 #define KSEL(m, a, b) ((m) ? (a) : (b))
 #define KSPLAT(s) ((double)(s))
+#define KALL(m) (m)
 #define KLOAD(p) (*(p))
 #define KSTORE(p, v) (*(p) = (v))
 #define KFN(name) name##_scalar

@@ -36,6 +36,12 @@ static inline mkXV mkX_copysign(mkXV m, mkXV s)
 	return (mkXV)(((mkXM)m & MK_XABSMASK) | ((mkXM)s & ~MK_XABSMASK));
 }
 static inline mkXV mkX_sel(mkXM k, mkXV a, mkXV b) { return (mkXV)(((mkXM)a & k) | ((mkXM)b & ~k)); }
+static inline int mkX_all(mkXM k)
+{
+	long long acc = -1;
+	for (int i = 0; i < MK_X86_W; ++i) acc &= k[i];
+	return acc != 0;
+}
 static inline mkXV mkX_load(const double *p) { mkXV v; memcpy(&v, p, sizeof v); return v; }
 static inline void mkX_store(double *p, mkXV v) { memcpy(p, &v, sizeof v); }
 
@@ -46,6 +52,7 @@ static inline void mkX_store(double *p, mkXV v) { memcpy(p, &v, sizeof v); }
 #define KCOPYSIGN mkX_copysign
 #define KSEL mkX_sel
 #define KSPLAT(s) ((mkXV){0} + (double)(s))
+#define KALL mkX_all
 #define KLOAD mkX_load
 #define KSTORE mkX_store
 
