@@ -1,0 +1,85 @@
+/* mink/registry.h - every way of computing a Minkowski-sum boundary, in one
+ * table: the core's closed forms and the baselines of the paper's Table 1.
+ *
+ * Each entry is an mkMethod (mink/method.h). The experiments loop over the
+ * table; `mink methods` prints it; `mink sum --method NAME` runs one entry.
+ *
+ *   name             dims  exact  sampled  accepts
+ *   closed-normal    2D 3D  yes            any pair (Theorem 1)
+ *   closed-gradient  2D 3D  yes            any pair (Theorem 2)
+ *   closed-paper     2D 3D                 any pair (Theorem 2 as printed;
+ *                                          reference only, see mink/sum.h)
+ *   geometric        2D 3D  yes            body2 an ellipse / ellipsoid
+ *   hull-cgal-epick  2D 3D         yes     any pair
+ *   hull-cgal-epeck  2D 3D         yes     any pair
+ *   hull-qhull       2D 3D         yes     any pair
+ *   edge-sort        2D            yes     any pair
+ *
+ * Conventions every entry keeps, so that the referee (mink/referee.h) can
+ * check any of them:
+ *  - A method that is not MK_METHOD_SAMPLED returns one boundary point per
+ *    surface parameter of body 1: point k belongs to u_k of
+ *    mkSample2_Angles(n) (2D) or mkSample3_Grid(n) (3D, n*n points), so that
+ *    its outward normal is body 1's normal at u_k.
+ *  - A MK_METHOD_SAMPLED method samples each body at the same parameters
+ *    (n per body; 3D an n x n grid per body) as mkSampled2_Bodies /
+ *    mkSampled3_Bodies (mink/baselines.h) do, and returns the vertices of
+ *    the convex hull of the pairwise sums of those samples: counter-clockwise
+ *    in 2D, in no particular order in 3D.
+ *  - The contact set B1 (+) (-B2) is where B2's centre may go: its samples
+ *    are p - (q - t2) for p on B1 and q on B2, so B2's translation does not
+ *    enter it (as in mink/sum.h); the plus set adds p + q.
+ *
+ * Adding a method: write one file under baselines/src that defines a
+ * `const mkMethod` (name, summary, reference, flags, accepts and run
+ * functions), add one line to the table in registry.c, and add the method to
+ * the referee test. Nothing else changes. */
+#ifndef MINK_REGISTRY_H
+#define MINK_REGISTRY_H
+
+#include <stddef.h>
+#include <mink/mink.h>
+
+MK_EXTERN_C_BEGIN
+
+/* Number of registered methods, the i-th (NULL when i is out of range), and
+ * the method of a given name (NULL if unknown). The table is static: the
+ * pointers stay valid for the life of the program. */
+MK_API int mkRegistry_Count(void);
+MK_API const mkMethod *mkRegistry_At(int i);
+MK_API const mkMethod *mkRegistry_Find(const char *name);
+
+/* Resolution limits. Closed forms: n >= 1 in 2D, n >= 2 in 3D (an n x n
+ * grid with both poles). Sampled methods need n >= 3 per body (fewer samples
+ * span no area or volume). The hull methods hold all n^2 (2D) or n^4 (3D)
+ * pairwise sums in memory, so n is capped to keep that below about 400 MB;
+ * edge sorting is linear and only the int range caps it. */
+#define MK_CLOSED3_N_MAX 46340  /* n*n fits an int */
+#define MK_SAMPLED_N_MIN 3
+#define MK_HULL2_N_MAX 4096     /* 16.8 M sums of 2 doubles */
+#define MK_HULL3_N_MAX 64       /* 16.8 M sums of 3 doubles */
+#define MK_EDGESORT_N_MAX 100000000
+
+/* 1 when method m runs in dimension dim with resolution n; otherwise 0 and a
+ * one-line message naming the method, n and the allowed range. The run
+ * functions return MK_ERR_RANGE for such n. */
+MK_API int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen);
+
+/* m->accepts2/3 with the dimension checked first: 0 and a message when the
+ * method does not run in this dimension or does not take this pair. */
+MK_API int mkMethod_Accepts2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen);
+MK_API int mkMethod_Accepts3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen);
+
+/* The entries themselves, for code that wants one without a name lookup. */
+MK_API extern const mkMethod mkMethod_ClosedNormal;
+MK_API extern const mkMethod mkMethod_ClosedGradient;
+MK_API extern const mkMethod mkMethod_ClosedPaper;
+MK_API extern const mkMethod mkMethod_Geometric;
+MK_API extern const mkMethod mkMethod_HullCgalEpick;
+MK_API extern const mkMethod mkMethod_HullCgalEpeck;
+MK_API extern const mkMethod mkMethod_HullQhull;
+MK_API extern const mkMethod mkMethod_EdgeSort;
+
+MK_EXTERN_C_END
+
+#endif

@@ -1,0 +1,98 @@
+// hull_cgal.hpp - the convex hull of a point array with CGAL, for one kernel.
+// Included by hull_epick.cpp and hull_epeck.cpp only, so that each kernel is
+// compiled once, in its own translation unit (each costs seconds and about a
+// gigabyte to compile).
+#ifndef MINK_HULL_CGAL_HPP
+#define MINK_HULL_CGAL_HPP
+
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_2.h>
+#include <CGAL/convex_hull_3.h>
+
+#include <exception>
+#include <new>
+#include <vector>
+
+#include <mink/baselines.h>
+
+namespace mkcgal {
+
+// The lowest (then leftmost) of a counter-clockwise hull comes first.
+template <class Point>
+void RotateToLowest(std::vector<Point> &h)
+{
+	std::size_t best = 0;
+	for (std::size_t k = 1; k < h.size(); ++k)
+		if (h[k].y() < h[best].y() || (h[k].y() == h[best].y() && h[k].x() < h[best].x())) best = k;
+	std::rotate(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(best), h.end());
+}
+
+template <class K>
+mkResult Hull2(const double *xy, int count, mkPointSet *out)
+{
+	typedef typename K::Point_2 Point;
+	if (!xy || !out || count < 1) return MK_ERR_ARGUMENT;
+	try {
+		std::vector<Point> pts;
+		pts.reserve(static_cast<std::size_t>(count));
+		for (int k = 0; k < count; ++k) pts.emplace_back(xy[2 * k], xy[2 * k + 1]);
+		std::vector<Point> h;
+		CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(h));
+		if (h.size() < 3) return MK_ERR_ARGUMENT; // no area
+		RotateToLowest(h);
+		mkResult r = mkPointSet_Resize(out, 2, static_cast<int>(h.size()));
+		if (r != MK_OK) return r;
+		for (std::size_t k = 0; k < h.size(); ++k) {
+			out->x[k] = CGAL::to_double(h[k].x());
+			out->y[k] = CGAL::to_double(h[k].y());
+		}
+		return MK_OK;
+	} catch (const std::bad_alloc &) {
+		return MK_ERR_MEMORY;
+	} catch (const std::exception &) {
+		return MK_ERR_UNSUPPORTED;
+	}
+}
+
+template <class K>
+mkResult Hull3(const double *xyz, int count, mkPointSet *out)
+{
+	typedef typename K::Point_3 Point;
+	typedef CGAL::Surface_mesh<Point> Mesh;
+	if (!xyz || !out || count < 1) return MK_ERR_ARGUMENT;
+	try {
+		std::vector<Point> pts;
+		pts.reserve(static_cast<std::size_t>(count));
+		for (int k = 0; k < count; ++k) pts.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+		// Four points that span a volume, or the set is flat (no hull).
+		std::size_t a = 0, b = 1, c, d;
+		while (b < pts.size() && pts[b] == pts[a]) ++b;
+		for (c = b + 1; c < pts.size() && CGAL::collinear(pts[a], pts[b], pts[c]); ++c) {}
+		for (d = c + 1; d < pts.size() && CGAL::coplanar(pts[a], pts[b], pts[c], pts[d]); ++d) {}
+		if (d >= pts.size()) return MK_ERR_ARGUMENT;
+		Mesh mesh;
+		// The Surface_mesh overload: CGAL 5.5's (vertices, faces) overload
+		// returns wrong hulls with the inexact-constructions kernel.
+		CGAL::convex_hull_3(pts.begin(), pts.end(), mesh);
+		mkResult r = mkPointSet_Resize(out, 3, static_cast<int>(mesh.number_of_vertices()));
+		if (r != MK_OK) return r;
+		int k = 0;
+		for (typename Mesh::Vertex_index v : mesh.vertices()) {
+			const Point &p = mesh.point(v);
+			out->x[k] = CGAL::to_double(p.x());
+			out->y[k] = CGAL::to_double(p.y());
+			out->z[k] = CGAL::to_double(p.z());
+			++k;
+		}
+		out->count = k;
+		return MK_OK;
+	} catch (const std::bad_alloc &) {
+		return MK_ERR_MEMORY;
+	} catch (const std::exception &) {
+		return MK_ERR_UNSUPPORTED;
+	}
+}
+
+} // namespace mkcgal
+
+#endif
