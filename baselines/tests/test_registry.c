@@ -1,0 +1,101 @@
+/* test_registry.c - the method table: names, flags, lookups, resolution
+ * limits and the messages for pairs or sizes a method does not take. */
+#include <string.h>
+
+#include <mink/registry.h>
+
+#include "ensure.h"
+
+static mkBody2 superellipse(double a, double b, double eps)
+{
+	mkShape2 s = {a, b, eps};
+	return mkBody2_Make(s, mkMat2_Rotation(0.3), (mkVec2){1, 2});
+}
+
+static mkBody3 superquadric(double a, double b, double c, double e1, double e2)
+{
+	mkShape3 s = {a, b, c, e1, e2};
+	return mkBody3_Make(s, mkMat3_FromQuat(0.9, 0.1, 0.2, 0.3, NULL), (mkVec3){1, 2, 3});
+}
+
+int main(void)
+{
+	static const char *const names[] = {"closed-normal", "closed-gradient", "closed-paper", "geometric",
+		"hull-cgal-epick", "hull-cgal-epeck", "hull-qhull", "edge-sort"};
+	int count = mkRegistry_Count();
+	ENSURE(count >= 8);
+	for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k) {
+		const mkMethod *m = mkRegistry_Find(names[k]);
+		ENSURE(m != NULL);
+		if (m) ENSURE(strcmp(m->name, names[k]) == 0);
+	}
+	ENSURE(mkRegistry_Find("no-such-method") == NULL);
+	ENSURE(mkRegistry_Find(NULL) == NULL);
+	ENSURE(mkRegistry_At(-1) == NULL);
+	ENSURE(mkRegistry_At(count) == NULL);
+
+	/* Every entry: unique name, texts, a dimension, run and accept functions
+	 * exactly for its dimensions, and exact xor sampled where it says so. */
+	for (int i = 0; i < count; ++i) {
+		const mkMethod *m = mkRegistry_At(i);
+		ENSURE(m && m->name && m->summary && m->reference);
+		if (!m) continue;
+		ENSURE(mkRegistry_Find(m->name) == m);
+		ENSURE(m->flags & (MK_METHOD_2D | MK_METHOD_3D));
+		ENSURE(!!(m->flags & MK_METHOD_2D) == (m->run2 != NULL && m->accepts2 != NULL));
+		ENSURE(!!(m->flags & MK_METHOD_3D) == (m->run3 != NULL && m->accepts3 != NULL));
+		ENSURE(!((m->flags & MK_METHOD_EXACT) && (m->flags & MK_METHOD_SAMPLED)));
+		for (int j = 0; j < i; ++j) ENSURE(strcmp(mkRegistry_At(j)->name, m->name) != 0);
+	}
+	ENSURE(mkMethod_EdgeSort.flags == (MK_METHOD_2D | MK_METHOD_SAMPLED));
+	ENSURE(mkMethod_ClosedGradient.flags & MK_METHOD_EXACT);
+	ENSURE(!(mkMethod_ClosedPaper.flags & MK_METHOD_EXACT));
+
+	/* The geometric formula needs body 2 an ellipse / ellipsoid. */
+	char msg[512];
+	mkBody2 se = superellipse(3, 2, 0.5), el = superellipse(3, 2, 1.0);
+	ENSURE(mkMethod_Accepts2(&mkMethod_Geometric, se, el, MK_SET_CONTACT, msg, sizeof msg));
+	ENSURE(!mkMethod_Accepts2(&mkMethod_Geometric, el, se, MK_SET_CONTACT, msg, sizeof msg));
+	ENSURE(strstr(msg, "body2.eps") != NULL);
+	mkBody3 sq = superquadric(3, 2, 1, 0.5, 1.5), ed = superquadric(3, 2, 1, 1, 1);
+	ENSURE(mkMethod_Accepts3(&mkMethod_Geometric, sq, ed, MK_SET_PLUS, msg, sizeof msg));
+	ENSURE(!mkMethod_Accepts3(&mkMethod_Geometric, sq, sq, MK_SET_PLUS, msg, sizeof msg));
+	ENSURE(strstr(msg, "body2.eps1") != NULL);
+	/* Run anyway: refused, nothing computed. */
+	mkPointSet out = {0};
+	ENSURE(mkMethod_Geometric.run3(sq, sq, MK_SET_CONTACT, 10, &out) == MK_ERR_UNSUPPORTED);
+
+	/* Edge sorting is 2D only. */
+	ENSURE(!mkMethod_Accepts3(&mkMethod_EdgeSort, sq, ed, MK_SET_CONTACT, msg, sizeof msg));
+	ENSURE(strstr(msg, "does not run in 3D") != NULL);
+	ENSURE(!mkMethod_CheckN(&mkMethod_EdgeSort, 3, 10, msg, sizeof msg));
+
+	/* Resolution limits, with a message naming n and the range. */
+	ENSURE(mkMethod_CheckN(&mkMethod_ClosedGradient, 2, 1, msg, sizeof msg));
+	ENSURE(!mkMethod_CheckN(&mkMethod_ClosedGradient, 2, 0, msg, sizeof msg));
+	ENSURE(strstr(msg, "n = 0") != NULL);
+	ENSURE(!mkMethod_CheckN(&mkMethod_ClosedGradient, 3, 1, msg, sizeof msg));
+	ENSURE(mkMethod_CheckN(&mkMethod_HullQhull, 3, MK_HULL3_N_MAX, msg, sizeof msg));
+	ENSURE(!mkMethod_CheckN(&mkMethod_HullQhull, 3, MK_HULL3_N_MAX + 1, msg, sizeof msg));
+	ENSURE(strstr(msg, "[3, 64]") != NULL);
+	ENSURE(!mkMethod_CheckN(&mkMethod_HullCgalEpick, 2, 2, msg, sizeof msg));
+	ENSURE(mkMethod_CheckN(&mkMethod_EdgeSort, 2, 100000, msg, sizeof msg));
+	/* The run functions keep the same limits. */
+	ENSURE(mkMethod_HullCgalEpick.run2(se, el, MK_SET_CONTACT, 2, &out) == MK_ERR_RANGE);
+	ENSURE(mkMethod_HullQhull.run3(sq, ed, MK_SET_CONTACT, MK_HULL3_N_MAX + 1, &out) == MK_ERR_RANGE);
+	ENSURE(mkMethod_EdgeSort.run2(se, el, MK_SET_CONTACT, 0, &out) == MK_ERR_RANGE);
+	ENSURE(mkMethod_ClosedNormal.run3(sq, ed, MK_SET_CONTACT, 1, &out) == MK_ERR_RANGE);
+
+	/* Output sizes: n points (2D) or n*n (3D) for closed forms; a hull for
+	 * sampled methods. */
+	ENSURE(mkMethod_ClosedGradient.run2(se, el, MK_SET_CONTACT, 37, &out) == MK_OK);
+	ENSURE(out.dim == 2 && out.count == 37);
+	ENSURE(mkMethod_Geometric.run3(sq, ed, MK_SET_PLUS, 9, &out) == MK_OK);
+	ENSURE(out.dim == 3 && out.count == 81);
+	ENSURE(mkMethod_EdgeSort.run2(se, el, MK_SET_CONTACT, 40, &out) == MK_OK);
+	ENSURE(out.dim == 2 && out.count >= 3 && out.count <= 80);
+	ENSURE(mkMethod_HullQhull.run3(sq, ed, MK_SET_CONTACT, 6, &out) == MK_OK);
+	ENSURE(out.dim == 3 && out.count >= 4 && out.count <= 36 * 36);
+	mkPointSet_Free(&out);
+	return mk_summary("test_registry");
+}
