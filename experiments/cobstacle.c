@@ -536,6 +536,30 @@ static double mkNow(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* CPU time of this thread: beside the wall time, it shows whether other
+ * processes on a shared machine took the CPU away during a measurement
+ * (then wall > CPU). */
+static double mkCpuNow(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The system's load averages (Linux /proc/loadavg: 1, 5, 15 minutes), or
+ * "unknown", for the sidecar. */
+static void mkLoadAverage(char *buf, size_t len)
+{
+	FILE *fp = fopen("/proc/loadavg", "r");
+	double a = 0, b = 0, c = 0;
+	if (fp && fscanf(fp, "%lf %lf %lf", &a, &b, &c) == 3)
+		snprintf(buf, len, "%.2f %.2f %.2f", a, b, c);
+	else
+		snprintf(buf, len, "unknown");
+	if (fp)
+		fclose(fp);
+}
+
 /* The parameter samples and one C-slice's output (every obstacle's points
  * for one orientation; kept, like the reference code keeps each slice). */
 typedef struct mkWork {
@@ -580,6 +604,7 @@ static void mkWork_Free(mkWork *w)
 
 typedef struct mkLevelResult {
 	double total_s;
+	double cpu_s;
 	long nonfinite;
 	long clamped;
 	double checksum;
@@ -640,12 +665,13 @@ static int mkRunLevel2(const mkOptions *o, long nobs, long trial, mkWork *w, mkP
 	opt.impl = o->impl;
 	int n = (int)w->n;
 	for (long h = 0; h < o->headings; ++h) {
-		double t0 = mkNow();
+		double t0 = mkNow(), c0 = mkCpuNow();
 		mkBody2 rb = mkBody2_Make(robot, mkMat2_Rotation((double)h * MK_PI / (double)o->headings), origin);
 		mkResult rc = MK_OK;
 		for (long j = 0; j < nobs && rc == MK_OK; ++j)
 			rc = mkSum2_Batch(obs[j], rb, &opt, w->ux, w->uy, n,
 				w->x + j * n, w->y + j * n, NULL, NULL);
+		res->cpu_s += mkCpuNow() - c0;
 		res->total_s += mkNow() - t0;
 		if (rc != MK_OK) {
 			fprintf(stderr, "cobstacle: 2D trial %ld: the closed form failed: %s\n", trial, mkResult_Name(rc));
@@ -701,12 +727,13 @@ static int mkRunLevel3(const mkOptions *o, long nobs, long trial, const mkRotati
 	opt.impl = o->impl;
 	int n = (int)w->n;
 	for (long k = 0; k < rot->count; ++k) {
-		double t0 = mkNow();
+		double t0 = mkNow(), c0 = mkCpuNow();
 		mkBody3 rb = mkBody3_Make(robot, rot->R[k], origin);
 		mkResult rc = MK_OK;
 		for (long j = 0; j < nobs && rc == MK_OK; ++j)
 			rc = mkSum3_Batch(obs[j], rb, &opt, w->ux, w->uy, w->uz, n,
 				w->x + j * n, w->y + j * n, w->z + j * n, NULL, NULL, NULL);
+		res->cpu_s += mkCpuNow() - c0;
 		res->total_s += mkNow() - t0;
 		if (rc != MK_OK) {
 			fprintf(stderr, "cobstacle: 3D trial %ld: the closed form failed: %s\n", trial, mkResult_Name(rc));
@@ -724,7 +751,7 @@ static int mkRunLevel3(const mkOptions *o, long nobs, long trial, const mkRotati
 
 static const char *const mkColumns[] = {
 	"dim", "obstacles", "points", "orientations", "total_points", "total_s", "us_per_point",
-	"trial", "form", "impl", "published_total_s", "published_us_per_point",
+	"cpu_s", "trial", "form", "impl", "published_total_s", "published_us_per_point",
 	"nonfinite", "clamped", "checksum",
 	"robot_a", "robot_b", "robot_c", "robot_eps1", "robot_eps2"
 };
@@ -742,6 +769,7 @@ static void mkWriteRow(mkCsv *csv, int dim, long nobs, long points, long orienta
 	mkCsv_Int(csv, total);
 	mkCsv_Double(csv, res->total_s);
 	mkCsv_Double(csv, res->total_s * 1e6 / (double)total);
+	mkCsv_Double(csv, res->cpu_s);
 	mkCsv_Int(csv, trial);
 	mkCsv_Str(csv, mkForm_Name(form));
 	mkCsv_Str(csv, mkImpl_Name(impl));
@@ -1057,7 +1085,9 @@ int main(int argc, char **argv)
 	mkMeta_Set(&meta, "form", mkForm_Name(o.form));
 	mkMeta_Set(&meta, "impl_requested", mkImpl_Name(o.impl));
 	mkMeta_Set(&meta, "impl", mkImpl_Name(mkImpl_Resolve(o.impl)));
-	mkMeta_Set(&meta, "timer", "CLOCK_MONOTONIC, one thread");
+	mkMeta_Set(&meta, "timer", "CLOCK_MONOTONIC (total_s), CLOCK_THREAD_CPUTIME_ID (cpu_s), one thread");
+	mkLoadAverage(text, sizeof text);
+	mkMeta_Set(&meta, "loadavg_start", text);
 	mkMeta_Set(&meta, "timed_region",
 		"per orientation: turning the robot and one batch call per obstacle; "
 		"excludes the draws, the checksum and the output");
@@ -1115,6 +1145,8 @@ int main(int argc, char **argv)
 				"(counted in the row's 'nonfinite' column)\n", un->dim, un->obstacles, un->trial, res.nonfinite);
 	}
 	mkProgress_End(&prog);
+	mkLoadAverage(text, sizeof text);
+	mkMeta_Set(&meta, "loadavg_end", text);
 
 	if (!failed && mkCsv_Commit(&csv, &meta, msg, sizeof msg) != 0) {
 		fprintf(stderr, "cobstacle: %s\n", msg);

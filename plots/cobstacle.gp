@@ -56,7 +56,7 @@ pub(d, n, col) = (column("dim") == d && column("obstacles") == n) ? (strcol(col)
 
 # Per level: trials, time (mean, min, max), time per point, points,
 # orientations, non-finite points, published figures (NaN when none).
-array tm[nlvl]; array tmin[nlvl]; array tmax[nlvl]; array um[nlvl]; array nt[nlvl]
+array tm[nlvl]; array tmin[nlvl]; array tmax[nlvl]; array um[nlvl]; array nt[nlvl]; array cm[nlvl]
 array np[nlvl]; array no[nlvl]; array nf[nlvl]; array pt[nlvl]; array pu[nlvl]
 do for [l = 1:nlvl] {
 	d = lvl_dim[l]; n = lvl_obs[l]
@@ -64,6 +64,8 @@ do for [l = 1:nlvl] {
 	tm[l] = STATS_mean; tmin[l] = STATS_min; tmax[l] = STATS_max; nt[l] = STATS_records
 	stats results using (sel(d, n, "us_per_point")) nooutput
 	um[l] = STATS_mean
+	stats results using (sel(d, n, "cpu_s")) nooutput
+	cm[l] = STATS_mean
 	stats results using (sel(d, n, "points")) nooutput
 	np[l] = STATS_max
 	stats results using (sel(d, n, "orientations")) nooutput
@@ -81,15 +83,16 @@ if (exists("table")) {
 	set print table
 	print sprintf("C-obstacle generation (paper Sec. 7.1, Table 2), from %s.", results)
 	print "Measured: one thread, CLOCK_MONOTONIC around the closed-form batch calls (and turning the"
-	print "robot); per level the mean over the trials, with the fastest and the slowest trial."
+	print "robot); per level the mean over the trials, with the fastest and the slowest trial, and the"
+	print "thread's CPU time (CLOCK_THREAD_CPUTIME_ID; below the wall time when the machine was shared)."
 	print "Published: the paper's MATLAB figures (Xeon 2.8 GHz, one core)."
 	print "Speed-up = published total / measured mean total."
 	print ""
-	print "| dim | obstacles | points | orientations | trials | total (s) mean | min | max | per point (us) | published total (s) | published per point (us) | speed-up | non-finite points |"
-	print "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+	print "| dim | obstacles | points | orientations | trials | total (s) mean | min | max | CPU (s) mean | per point (us) | published total (s) | published per point (us) | speed-up | non-finite points |"
+	print "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 	do for [l = 1:nlvl] {
-		print sprintf("| %dD | %d | %d | %d | %d | %.4g | %.4g | %.4g | %.4f | %s | %s | %s | %d |", \
-			lvl_dim[l], lvl_obs[l], np[l], no[l], nt[l], tm[l], tmin[l], tmax[l], um[l], \
+		print sprintf("| %dD | %d | %d | %d | %d | %.4g | %.4g | %.4g | %.4g | %.4f | %s | %s | %s | %d |", \
+			lvl_dim[l], lvl_obs[l], np[l], no[l], nt[l], tm[l], tmin[l], tmax[l], cm[l], um[l], \
 			pt[l] == pt[l] ? sprintf("%.2f", pt[l]) : "-", pu[l] == pu[l] ? sprintf("%.3f", pu[l]) : "-", \
 			pt[l] == pt[l] ? sprintf("%.0fx", pt[l] / tm[l]) : "-", nf[l])
 	}

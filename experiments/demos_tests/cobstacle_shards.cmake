@@ -1,6 +1,7 @@
 # cobstacle's shards (--shard I/SHARDS), concatenated in order under one
-# header, give the unsplit run's rows except for the two measured columns
-# (total_s, us_per_point: columns 6 and 7), which differ from run to run.
+# header, give the unsplit run's rows except for the three measured columns
+# (total_s, us_per_point, cpu_s: columns 6 to 8), which differ from run to
+# run.
 # Each shard has its sidecar with the shard recorded. EXE, ARGS (";"-list),
 # WORK (scratch directory), SHARDS as in common/tests/shard_concat.cmake.
 function(drop_timing text out)
@@ -11,7 +12,7 @@ function(drop_timing text out)
       continue()
     endif()
     string(REPLACE "," ";" fields "${line}")
-    list(REMOVE_AT fields 5 6)
+    list(REMOVE_AT fields 5 6 7)
     string(REPLACE ";" "," kept "${fields}")
     string(APPEND result "${kept}\n")
   endforeach()

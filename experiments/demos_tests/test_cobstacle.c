@@ -108,7 +108,7 @@ static void checkRows(const char *path, long expected)
 	ENSURE(mkTable_Read(&t, path) == 0);
 	ENSURE(t.rows == expected);
 	static const char *const cols[] = { "dim", "obstacles", "points", "orientations", "total_points", "total_s",
-		"us_per_point", "trial", "form", "impl", "published_total_s", "published_us_per_point", "nonfinite",
+		"us_per_point", "cpu_s", "trial", "form", "impl", "published_total_s", "published_us_per_point", "nonfinite",
 		"clamped", "checksum", "robot_a", "robot_b", "robot_c", "robot_eps1", "robot_eps2" };
 	ENSURE(t.columns == (int)(sizeof cols / sizeof cols[0]));
 	for (int c = 0; c < t.columns && c < (int)(sizeof cols / sizeof cols[0]); ++c)
@@ -119,6 +119,7 @@ static void checkRows(const char *path, long expected)
 		double s = mkTable_Num(&t, r, "total_s"), us = mkTable_Num(&t, r, "us_per_point");
 		ENSURE(tot == n * p * o);
 		ENSURE(s > 0.0);
+		ENSURE(mkTable_Num(&t, r, "cpu_s") > 0.0);
 		/* One division and one product: a few units of 1e-16 apart. */
 		ENSURE_NEAR(us, s * 1e6 / tot, 1e-12 * us);
 		ENSURE(mkTable_Num(&t, r, "nonfinite") == 0.0);
