@@ -1,0 +1,295 @@
+/* cmd_verify.c - `mink verify`: put a method's output (a CSV of points, as
+ * `mink sum` writes it) through the referee and print the verdict. */
+#include <ctype.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <mink/referee.h>
+#include <mink/registry.h>
+
+#include "cli.h"
+#include "commands.h"
+
+static void help(void)
+{
+	printf("usage: mink verify --dim 2|3 --body1 SPEC --body2 SPEC --method NAME --points FILE [options]\n"
+		"\n"
+		"Check that the points in FILE are what method NAME claims for the two bodies,\n"
+		"with the referee of the baselines (exact CGAL predicates for sampled methods;\n"
+		"a two-sided support-function check for the others). Prints the verdict; the\n"
+		"exit status is 0 when the output passes, 1 when it fails, 2 on bad input.\n"
+		"\n"
+		"  --points FILE      CSV of points: a header naming columns x, y (and z), as\n"
+		"                     'mink sum' writes, or no header and x, y[, z] first;\n"
+		"                     '-' reads standard input; lines starting with # are skipped\n"
+		"  --method NAME      the method that made them (see 'mink methods')\n"
+		"  --set contact|plus contact space (default) or B1 (+) B2\n"
+		"  --n N              the N they were made with: required for sampled methods\n"
+		"                     (samples per body); for the others it follows from the\n"
+		"                     number of points (N in 2D, N x N in 3D) and is checked\n"
+		"  --dense N          the referee's own samples per body (2D count, 3D grid\n"
+		"                     side; default 8192 / 128)\n"
+		"  --quiet            print nothing; only the exit status\n"
+		"\n"
+		"Points of a method that is not sampled must be in its order: point k belongs\n"
+		"to body 1's surface parameter k (mink/registry.h).\n");
+}
+
+/* ---- reading the points ---------------------------------------------------- */
+
+typedef struct Text { char *data; size_t len; } Text;
+
+static int read_all(const char *path, Text *t)
+{
+	FILE *fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+	if (!fp) {
+		fprintf(stderr, "mink verify: --points %s: %s\n", path, strerror(errno));
+		return -1;
+	}
+	size_t cap = 1 << 16;
+	t->data = malloc(cap);
+	t->len = 0;
+	for (;;) {
+		if (!t->data) break;
+		if (t->len + 1 >= cap) {
+			char *bigger = realloc(t->data, cap *= 2);
+			if (!bigger) {
+				free(t->data);
+				t->data = NULL;
+				break;
+			}
+			t->data = bigger;
+		}
+		size_t got = fread(t->data + t->len, 1, cap - 1 - t->len, fp);
+		t->len += got;
+		if (got == 0) break;
+	}
+	int bad = ferror(fp);
+	if (fp != stdin) fclose(fp);
+	if (!t->data || bad) {
+		fprintf(stderr, "mink verify: --points %s: %s\n", path, t->data ? "read error" : "out of memory");
+		free(t->data);
+		return -1;
+	}
+	t->data[t->len] = '\0';
+	return 0;
+}
+
+/* Split a line at commas in place; returns the field count (at most max). */
+static int split(char *line, char **f, int max)
+{
+	int n = 0;
+	char *s = line;
+	for (;;) {
+		while (*s == ' ' || *s == '\t') ++s;
+		if (n < max) f[n] = s;
+		++n;
+		char *c = strchr(s, ',');
+		char *end = c ? c : s + strlen(s);
+		while (end > s && isspace((unsigned char)end[-1])) --end;
+		*end = '\0';
+		if (!c) break;
+		s = c + 1;
+	}
+	return n;
+}
+
+static int parse_points(char *text, int dim, mkPointSet *out)
+{
+	enum { MAXF = 64 };
+	int col[3] = {0, 1, 2}, header_seen = 0, lineno = 0, count = 0;
+	char *next = text;
+	while (next && *next) {
+		char *line = next, *nl = strchr(line, '\n');
+		if (nl) *nl = '\0';
+		next = nl ? nl + 1 : NULL;
+		++lineno;
+		size_t l = strlen(line);
+		if (l && line[l - 1] == '\r') line[l - 1] = '\0';
+		char *p = line;
+		while (isspace((unsigned char)*p)) ++p;
+		if (!*p || *p == '#') continue;
+		char *f[MAXF];
+		int nf = split(p, f, MAXF);
+		if (nf > MAXF) nf = MAXF;
+		char *end;
+		strtod(f[0], &end);
+		if (!header_seen && (end == f[0] || *end)) {
+			/* A header: find x, y (and z). */
+			static const char *const names[3] = {"x", "y", "z"};
+			for (int c = 0; c < dim; ++c) {
+				col[c] = -1;
+				for (int i = 0; i < nf; ++i)
+					if (strcmp(f[i], names[c]) == 0) col[c] = i;
+				if (col[c] < 0) {
+					fprintf(stderr, "mink verify: --points line %d: the header has no column '%s'\n", lineno,
+						names[c]);
+					return -1;
+				}
+			}
+			header_seen = 1;
+			continue;
+		}
+		header_seen = 1;
+		double v[3] = {0, 0, 0};
+		for (int c = 0; c < dim; ++c) {
+			if (col[c] >= nf) {
+				fprintf(stderr, "mink verify: --points line %d: %d fields, column %d expected\n", lineno, nf,
+					col[c] + 1);
+				return -1;
+			}
+			errno = 0;
+			v[c] = strtod(f[col[c]], &end);
+			if (end == f[col[c]] || *end) {
+				fprintf(stderr, "mink verify: --points line %d: '%s' is not a number\n", lineno, f[col[c]]);
+				return -1;
+			}
+		}
+		if (count == out->count) {
+			int cap = out->count ? 2 * out->count : 1024;
+			if (mkPointSet_Resize(out, dim, cap) != MK_OK) {
+				fprintf(stderr, "mink verify: out of memory reading the points\n");
+				return -1;
+			}
+		}
+		out->x[count] = v[0];
+		out->y[count] = v[1];
+		if (dim == 3) out->z[count] = v[2];
+		++count;
+	}
+	out->count = count;
+	if (!count) {
+		fprintf(stderr, "mink verify: --points holds no points\n");
+		return -1;
+	}
+	return 0;
+}
+
+/* ---- the command ----------------------------------------------------------- */
+
+int mkCmd_Verify(int argc, char **argv)
+{
+	const char *spec1 = NULL, *spec2 = NULL, *method = NULL, *points = NULL;
+	long dim = 0, n = 0, dense = 0;
+	int have_n = 0, quiet = 0, e;
+	mkSet set = MK_SET_CONTACT;
+	for (int i = 1; i < argc; ++i) {
+		const char *o = argv[i], *v;
+		if (mkCli_IsHelp(o)) {
+			help();
+			return 0;
+		}
+		if (strcmp(o, "--quiet") == 0) {
+			quiet = 1;
+			continue;
+		}
+		if (strcmp(o, "--dim") && strcmp(o, "--body1") && strcmp(o, "--body2") && strcmp(o, "--method")
+			&& strcmp(o, "--points") && strcmp(o, "--set") && strcmp(o, "--n") && strcmp(o, "--dense"))
+			return mkCli_Unknown("verify", o);
+		if (!(v = mkCli_Value(argc, argv, &i))) return 2;
+		if (strcmp(o, "--dim") == 0) {
+			if (mkCli_Int("--dim", v, 2, 3, &dim)) return 2;
+		} else if (strcmp(o, "--body1") == 0) spec1 = v;
+		else if (strcmp(o, "--body2") == 0) spec2 = v;
+		else if (strcmp(o, "--method") == 0) method = v;
+		else if (strcmp(o, "--points") == 0) points = v;
+		else if (strcmp(o, "--n") == 0) {
+			if (mkCli_Int("--n", v, 1, 100000000, &n)) return 2;
+			have_n = 1;
+		} else if (strcmp(o, "--dense") == 0) {
+			if (mkCli_Int("--dense", v, 8, 1 << 20, &dense)) return 2;
+		} else {
+			if (mkCli_Choice("--set", v, mkSet_Parse, "contact, plus", &e)) return 2;
+			set = (mkSet)e;
+		}
+	}
+	if (!dim || !spec1 || !spec2 || !method || !points) {
+		fprintf(stderr, "mink verify: --dim, --body1, --body2, --method and --points are required (see --help)\n");
+		return 2;
+	}
+	const mkMethod *m = mkRegistry_Find(method);
+	if (!m) {
+		fprintf(stderr, "mink verify: --method %s is unknown: see 'mink methods' for the list\n", method);
+		return 2;
+	}
+	mkSpec s1, s2;
+	char msg[512];
+	if (mkSpec_Parse(spec1, (int)dim, "body1", &s1, msg, sizeof msg) != MK_OK
+		|| mkSpec_Parse(spec2, (int)dim, "body2", &s2, msg, sizeof msg) != MK_OK) {
+		fprintf(stderr, "mink verify: %s\n", msg);
+		return 2;
+	}
+	int ok = dim == 2 ? mkMethod_Accepts2(m, s1.body2, s2.body2, set, msg, sizeof msg)
+		: mkMethod_Accepts3(m, s1.body3, s2.body3, set, msg, sizeof msg);
+	if (!ok) {
+		fprintf(stderr, "mink verify: method %s does not accept this pair: %s\n", m->name, msg);
+		return 2;
+	}
+
+	Text text;
+	mkPointSet pts = {0};
+	if (read_all(points, &text)) return 2;
+	int bad = parse_points(text.data, (int)dim, &pts);
+	free(text.data);
+	if (bad) {
+		mkPointSet_Free(&pts);
+		return 2;
+	}
+
+	/* The resolution: given, or (not sampled) read off the point count. */
+	int sampled = !!(m->flags & MK_METHOD_SAMPLED);
+	long implied = pts.count;
+	if (!sampled && dim == 3) {
+		implied = 0;
+		while ((implied + 1) * (implied + 1) <= pts.count) ++implied;
+		if (implied * implied != pts.count) {
+			fprintf(stderr, "mink verify: %d points: method %s gives N x N points in 3D\n", pts.count, m->name);
+			mkPointSet_Free(&pts);
+			return 2;
+		}
+	}
+	if (sampled && !have_n) {
+		fprintf(stderr, "mink verify: method %s is sampled: give --n, the samples per body it ran with\n", m->name);
+		mkPointSet_Free(&pts);
+		return 2;
+	}
+	if (!sampled && have_n && n != implied) {
+		fprintf(stderr, "mink verify: --n %ld, but %d points mean N = %ld for method %s in %ldD\n", n, pts.count,
+			implied, m->name, dim);
+		mkPointSet_Free(&pts);
+		return 2;
+	}
+	if (!have_n) n = implied;
+	if (!mkMethod_CheckN(m, (int)dim, (int)n, msg, sizeof msg)) {
+		fprintf(stderr, "mink verify: %s\n", msg);
+		mkPointSet_Free(&pts);
+		return 2;
+	}
+	if (sampled && n > (dim == 2 ? MK_HULL2_N_MAX : MK_HULL3_N_MAX)) {
+		fprintf(stderr, "mink verify: --n %ld: the referee holds all pairwise sums and takes n <= %d in %ldD\n", n,
+			dim == 2 ? MK_HULL2_N_MAX : MK_HULL3_N_MAX, dim);
+		mkPointSet_Free(&pts);
+		return 2;
+	}
+
+	mkRefereeOptions opt = {(int)dense, 0, 0};
+	mkVerdict v;
+	mkResult r = dim == 2 ? mkReferee_Check2(m, s1.body2, s2.body2, set, (int)n, &pts, &opt, &v)
+		: mkReferee_Check3(m, s1.body3, s2.body3, set, (int)n, &pts, &opt, &v);
+	mkPointSet_Free(&pts);
+	if (r != MK_OK) {
+		fprintf(stderr, "mink verify: the referee could not run: %s\n", mkResult_Name(r));
+		return 2;
+	}
+	if (!quiet) {
+		printf("method %s, %ldD, %s set, n = %ld\n", m->name, dim, mkSet_Name(set), n);
+		printf("%s\n", v.message);
+		if (fflush(stdout)) {
+			fprintf(stderr, "mink verify: writing to standard output failed\n");
+			return 2;
+		}
+	}
+	return v.pass ? 0 : 1;
+}
