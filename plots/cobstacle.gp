@@ -135,19 +135,21 @@ set xyplane 0; set border 4095 lc rgb '#888888'; \
 splot slices using 'x':'y':'heading' with lines lw 0.3 lc rgb '#d1495b'; \
 set border 3 lc rgb 'black'; \
 set origin 0.0, 0.0; set size 1.0, 0.40; \
-set title 'Table 2: time per C-obstacle boundary point, each trial (points) and the published value (bars)' font ',10'; \
+set title 'Table 2: time per C-obstacle boundary point, measured here (each trial a point, label: mean) and published (bars)' font ',10'; \
 set key outside right top vertical font ',9'; \
 set autoscale y; set ytics autofreq; set logscale y; set yrange [0.005:20]; set format y '%g'; \
-set ylabel 'time per point (µs)'; set xlabel 'level: dimension, obstacles x points x orientations'; \
+set ylabel 'time per point (µs)'; set xlabel 'level'; \
 set xrange [0.4:nlvl + 0.6]; \
 set xtics () font ',8'; \
-do for [l = 1:nlvl] { set xtics add (sprintf('%dD: %d obstacles', lvl_dim[l], lvl_obs[l]) l) }; \
+do for [l = 1:nlvl] { set xtics add (sprintf('%dD: %d obstacles\n%d points x %d %s', lvl_dim[l], lvl_obs[l], np[l], no[l], lvl_dim[l] == 2 ? 'headings' : 'rotations') l) }; \
+do for [l = 1:nlvl] { set label 100 + l sprintf('%.3f µs', um[l]) at l, um[l] * 2.2 center front font ',9' tc rgb '#d1495b' }; \
+do for [l = 1:nlvl] { if (pu[l] == pu[l]) { set label 200 + l sprintf('%.3f µs', pu[l]) at l, pu[l] * 1.6 center front font ',9' tc rgb '#555555' } }; \
 set style fill solid 1.0 border lc rgb '#666666'; set boxwidth 0.5; \
 plot for [l = 1:nlvl] results using (l):(sel(lvl_dim[l], lvl_obs[l], 'published_us_per_point')) \
 		with boxes lc rgb '#bbbbbb' title (l == 1 ? 'published (MATLAB, Xeon 2.8 GHz, one core)' : ''), \
-	for [l = 1:nlvl] results using (l + 0.12 * (column('trial') - 1)):(sel(lvl_dim[l], lvl_obs[l], 'us_per_point')) \
+	for [l = 1:nlvl] results using (l + 0.08 * (column('trial') - (nt[l] - 1) / 2.0)):(sel(lvl_dim[l], lvl_obs[l], 'us_per_point')) \
 		with points pt 7 ps 0.9 lc rgb '#d1495b' title (l == 1 ? 'measured here (one thread), each trial' : ''); \
-unset multiplot"
+unset label; unset multiplot"
 
 set terminal pdfcairo enhanced color size 12in,10in font "Helvetica,10"
 set output outdir . '/cobstacle.pdf'
