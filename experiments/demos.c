@@ -22,10 +22,11 @@
  *  Fig. 4  primitives: cubes eps = (0.1, 0.1), elliptic cylinders
  *          eps = (0.1, 1), parallelepipeds = cubes mapped by
  *          M1 = [1 0 .5; 0 1 .2; 0 0 1], M2 = [1 0 .47; 0 1 .14; 0 0 1]
- *          (after the body's rotation, M = R S, as in the reference code),
+ *          (the shear first, then the body's rotation: M = R S, as in the
+ *          reference code),
  *          50 x 50 grids.
  * Where the paper is silent the choices are fixed here and recorded in the
- * index and the sidecar (see mkChoices below and the experiments README):
+ * index and the sidecar (the constants below; the experiments README says why):
  * the Fig. 3 superellipses and transforms, the general superquadrics of
  * Fig. 4(a, b), the sizes of the primitives (taken from the reference code's
  * demo script where it has them), the rotations (the reference code draws
