@@ -74,6 +74,11 @@ if(MINK_BUILD_TESTS)
   set_tests_properties(demos.run PROPERTIES FIXTURES_SETUP demos_run)
   add_test(NAME demos.geometry COMMAND test_demos ${mkdemos_work}/run/demos.csv)
   set_tests_properties(demos.geometry PROPERTIES FIXTURES_REQUIRED demos_run)
+  # An existing result is kept unless --force is given.
+  add_test(NAME demos.noforce
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:demos> "-DARGS=--out|${mkdemos_work}/run/demos.csv"
+      "-DEXPECT=demos.csv exists; pass --force to replace it" -P ${mkdemos_tests}/expect_failure.cmake)
+  set_tests_properties(demos.noforce PROPERTIES FIXTURES_REQUIRED demos_run)
   add_test(NAME demos.shards
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:demos> -DWORK=${mkdemos_work}/shards
       "-DARGS=--figure;all" -DSHARDS=3 -P ${CMAKE_CURRENT_LIST_DIR}/common/tests/shard_concat.cmake)
@@ -92,6 +97,10 @@ if(MINK_BUILD_TESTS)
   set_tests_properties(cobstacle.run PROPERTIES FIXTURES_SETUP cobstacle_run)
   add_test(NAME cobstacle.check COMMAND test_cobstacle ${mkdemos_work}/cob/cobstacle.csv 6)
   set_tests_properties(cobstacle.check PROPERTIES FIXTURES_REQUIRED cobstacle_run)
+  add_test(NAME cobstacle.noforce
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:cobstacle> "-DARGS=--out|${mkdemos_work}/cob/cobstacle.csv"
+      "-DEXPECT=cobstacle.csv exists; pass --force to replace it" -P ${mkdemos_tests}/expect_failure.cmake)
+  set_tests_properties(cobstacle.noforce PROPERTIES FIXTURES_REQUIRED cobstacle_run)
   add_test(NAME cobstacle.shards
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:cobstacle> -DWORK=${mkdemos_work}/cob_shards
       "-DARGS=--trials;2;--obstacles2;3,7;--obstacles3;4;--headings;10;--points;12;--grid;4;--orientations;6;--so3;${CMAKE_CURRENT_LIST_DIR}/data/so3_double_coset_3600.csv;--fig-obstacles;0;--seed;77"
