@@ -92,6 +92,8 @@ MK_API mkVec3 mkSum3_Point(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkPar
  * 3D: an n x n grid, eta_i = -pi/2 + pi i/(n-1) (poles included),
  *     omega_j = -pi + 2 pi j / n, u = (cos eta cos omega, cos eta sin omega,
  *     sin eta), stored at index i*n + j: n >= 2. The outputs hold n*n values.
+ * Angles at multiples of pi/2 give exact axis vectors (cos(pi/2) = 0, not
+ * the 6e-17 of double arithmetic), so poles and axis points are on the axes.
  * Used as B1's surface angles (MK_PARAM_SURFACE) or the normal's angles
  * (MK_PARAM_NORMAL). Return MK_ERR_ARGUMENT on a bad n. */
 MK_API mkResult mkSample2_Angles(int n, double *ux, double *uy);
