@@ -54,6 +54,17 @@ mkResult Hull2(const double *xy, int count, mkPointSet *out)
 	}
 }
 
+// 1 when four of the points span a volume (exact tests).
+template <class Point>
+bool SpansVolume(const std::vector<Point> &pts)
+{
+	std::size_t a = 0, b = 1, c, d;
+	while (b < pts.size() && pts[b] == pts[a]) ++b;
+	for (c = b + 1; c < pts.size() && CGAL::collinear(pts[a], pts[b], pts[c]); ++c) {}
+	for (d = c + 1; d < pts.size() && CGAL::coplanar(pts[a], pts[b], pts[c], pts[d]); ++d) {}
+	return d < pts.size();
+}
+
 template <class K>
 mkResult Hull3(const double *xyz, int count, mkPointSet *out)
 {
@@ -64,12 +75,7 @@ mkResult Hull3(const double *xyz, int count, mkPointSet *out)
 		std::vector<Point> pts;
 		pts.reserve(static_cast<std::size_t>(count));
 		for (int k = 0; k < count; ++k) pts.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
-		// Four points that span a volume, or the set is flat (no hull).
-		std::size_t a = 0, b = 1, c, d;
-		while (b < pts.size() && pts[b] == pts[a]) ++b;
-		for (c = b + 1; c < pts.size() && CGAL::collinear(pts[a], pts[b], pts[c]); ++c) {}
-		for (d = c + 1; d < pts.size() && CGAL::coplanar(pts[a], pts[b], pts[c], pts[d]); ++d) {}
-		if (d >= pts.size()) return MK_ERR_ARGUMENT;
+		if (!SpansVolume(pts)) return MK_ERR_ARGUMENT; // flat: no hull
 		Mesh mesh;
 		// The Surface_mesh overload: CGAL 5.5's (vertices, faces) overload
 		// returns wrong hulls with the inexact-constructions kernel.

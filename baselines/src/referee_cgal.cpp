@@ -2,22 +2,24 @@
 // output exactly the set of extreme points of its input? Every test is one
 // of CGAL's exact predicates on the double coordinates (Epick filters them
 // through interval arithmetic and falls back to exact number types), so no
-// tolerance enters a yes/no answer. Distances are only reported.
+// tolerance enters a yes/no answer. Distances are only reported. The hull
+// of a 3D output is built by hull_epick.cpp (mkCgalHull3_Mesh) and then
+// certified here, face by face, against every input point.
 // Also here, as the other exact reference: CGAL's minkowski_sum_2 on the
 // exact kernel, the cross-check of edge sorting (collinear vertices, which
 // minkowski_sum_2 keeps where parallel edges meet, removed).
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
 #include <CGAL/minkowski_sum_2.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <memory>
 #include <new>
 #include <vector>
 
@@ -160,7 +162,6 @@ extern "C" int mkRefereeCgal_Polygon(const double *vx, const double *vy, int nv,
 extern "C" int mkRefereeCgal_Polytope(const double *vx, const double *vy, const double *vz, int nv,
 	const double *s, long ns, mkHullReport *r)
 {
-	typedef CGAL::Surface_mesh<P3> Mesh;
 	*r = mkHullReport();
 	try {
 		std::vector<P3> v;
@@ -188,19 +189,26 @@ extern "C" int mkRefereeCgal_Polytope(const double *vx, const double *vy, const 
 
 		// convex: the hull of the output has every output point as a vertex.
 		r->convex = 0;
-		Mesh mesh;
+		int hv = 0, ht = 0;
+		double *hxyz = nullptr;
+		int *tri = nullptr;
 		if (twice) Why(r, "an output point is given twice");
 		else if (nv < 4) Why(r, "fewer than 4 vertices");
 		else {
-			CGAL::convex_hull_3(v.begin(), v.end(), mesh);
-			if (mesh.number_of_faces() == 0) Why(r, "the output spans no volume");
-			else if (static_cast<int>(mesh.number_of_vertices()) != nv) {
+			std::vector<double> flat(3 * static_cast<std::size_t>(nv));
+			for (int k = 0; k < nv; ++k) flat[3 * k] = vx[k], flat[3 * k + 1] = vy[k], flat[3 * k + 2] = vz[k];
+			int rc = mkCgalHull3_Mesh(flat.data(), nv, &hxyz, &hv, &tri, &ht);
+			if (rc == -1) throw std::bad_alloc();
+			if (rc == -2) Why(r, "the output spans no volume");
+			else if (rc) Why(r, "a hull face is not a triangle");
+			else if (hv != nv) {
 				char text[160];
-				std::snprintf(text, sizeof text, "%d of %d output points are not vertices of their hull",
-					nv - static_cast<int>(mesh.number_of_vertices()), nv);
+				std::snprintf(text, sizeof text, "%d of %d output points are not vertices of their hull", nv - hv, nv);
 				Why(r, text);
 			} else r->convex = 1;
 		}
+		std::unique_ptr<double, void (*)(void *)> own_xyz(hxyz, std::free);
+		std::unique_ptr<int, void (*)(void *)> own_tri(tri, std::free);
 
 		// extreme: every input point on the inner side of (or on) every face
 		// plane of that hull.
@@ -208,17 +216,11 @@ extern "C" int mkRefereeCgal_Polytope(const double *vx, const double *vy, const 
 			std::vector<unsigned char> outside(static_cast<std::size_t>(ns), 0);
 			std::vector<K::Triangle_3> faces;
 			std::size_t probe = 0;
-			for (Mesh::Face_index f : mesh.faces()) {
+			for (int f = 0; f < ht; ++f) {
 				std::array<P3, 3> t;
-				int c = 0;
-				for (Mesh::Vertex_index w : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-					if (c == 3) break;
-					t[static_cast<std::size_t>(c++)] = mesh.point(w);
-				}
-				if (c != 3) {
-					Why(r, "a hull face is not a triangle");
-					r->convex = 0;
-					break;
+				for (int c = 0; c < 3; ++c) {
+					const double *p = hxyz + 3 * tri[3 * f + c];
+					t[static_cast<std::size_t>(c)] = P3(p[0], p[1], p[2]);
 				}
 				faces.emplace_back(t[0], t[1], t[2]);
 				// Which side is inside: that of any output vertex off the plane.

@@ -31,6 +31,15 @@ MK_API int mkRefereeCgal_Polygon(const double *vx, const double *vy, int nv, con
 MK_API int mkRefereeCgal_Polytope(const double *vx, const double *vy, const double *vz, int nv,
 	const double *s, long ns, mkHullReport *r);
 
+/* The convex hull of count points as a triangle mesh (CGAL, Epick kernel,
+ * Surface_mesh overload): *nv vertex coordinates (3 per vertex) and *nt
+ * triangles (3 vertex indices each, counter-clockwise seen from outside),
+ * both allocated with malloc for the caller to free. Returns 0, -1 when
+ * memory ran out, -2 when the points span no volume, -3 when a face is not
+ * a triangle. Lives in hull_epick.cpp, so that the referee's translation
+ * unit need not compile the hull code again. */
+MK_API int mkCgalHull3_Mesh(const double *xyz, int count, double **vertices, int *nv, int **triangles, int *nt);
+
 /* CGAL's exact orientation of (a, b, c) in the plane (+1 left turn), for
  * cross-checking the suite's own predicate. */
 MK_API int mkRefereeCgal_Orient2(const double *a, const double *b, const double *c);
