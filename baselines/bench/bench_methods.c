@@ -10,7 +10,8 @@
  * a superellipse, body 2 an ellipse: the geometric method needs body 2 an
  * ellipse), SQ (two superellipses). Every method runs on the same pair in a
  * trial. A call is repeated until 2 ms have passed and the time divided by
- * the repetitions. */
+ * the repetitions. In 2D, a row "edge-sort(merge)" times the O(m + n) merge
+ * alone on the two sample polygons, without sampling the bodies. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>
@@ -18,6 +19,7 @@
 #include <string.h>
 #include <time.h>
 
+#include <mink/baselines.h>
 #include <mink/registry.h>
 
 #define PI 3.14159265358979323846
@@ -186,6 +188,8 @@ int main(int argc, char **argv)
 		: "method,dim,case,n,trial,reps,ns_per_call,outputs\n");
 	fflush(stdout);
 
+	int merge_row = 0;
+	for (int m = 0; m < nmethods; ++m) merge_row |= methods[m] == &mkMethod_EdgeSort;
 	static const char *const case_names[3] = {"EE", "ES", "SQ"};
 	mkPointSet out = {0};
 	int status = 0;
@@ -194,7 +198,8 @@ int main(int argc, char **argv)
 		int skip[MAX_METHODS] = {0}, slow[MAX_METHODS] = {0};
 		for (int z = 0; z < nsizes; ++z) {
 			int n = sizes[z];
-			Stat st[MAX_METHODS] = {{0}};
+			Stat st[MAX_METHODS] = {{0}}, merge = {0};
+			int merge_out = 0;
 			int outputs[MAX_METHODS] = {0};
 			int applicable[MAX_METHODS];
 			for (int m = 0; m < nmethods; ++m) {
@@ -251,7 +256,41 @@ int main(int argc, char **argv)
 						printf("%s,%d,%s,%d,%d,%ld,%.1f,%d\n", me->name, dim, case_names[c], n, t, reps, ns, out.count);
 					if (ns * 1e-9 > max_call) slow[m] = 1; /* finish this size, then stop */
 				}
+				if (dim == 2 && merge_row) {
+					/* The merge alone, on polygons prepared outside the clock. */
+					double *pq = malloc(4 * (size_t)n * sizeof *pq), *poly = malloc(4 * (size_t)n * sizeof *poly);
+					int m1 = -1, m2 = -1;
+					if (pq && poly && mkSampled2_Bodies(a2, b2, MK_SET_CONTACT, n, pq, pq + 2 * n) == MK_OK) {
+						m1 = mkPolygon2_Convex(pq, n, poly);
+						m2 = mkPolygon2_Convex(pq + 2 * n, n, poly + 2 * n);
+					}
+					if (m1 > 0 && m2 > 0) {
+						long reps = 0;
+						double t0 = now(), t1;
+						do {
+							mkEdgeSort2_Merge(poly, m1, poly + 2 * n, m2, &out);
+							++reps;
+							t1 = now();
+						} while (t1 - t0 < 2e-3);
+						double ns = (t1 - t0) * 1e9 / (double)reps;
+						merge_out = out.count;
+						if (summary) {
+							merge.sum += ns;
+							merge.sum2 += ns * ns;
+							merge.min = merge.count ? fmin(merge.min, ns) : ns;
+							++merge.count;
+						} else
+							printf("edge-sort(merge),2,%s,%d,%d,%ld,%.1f,%d\n", case_names[c], n, t, reps, ns, out.count);
+					}
+					free(pq);
+					free(poly);
+				}
 				fflush(stdout);
+			}
+			if (summary && merge.count) {
+				double mean = merge.sum / merge.count;
+				printf("edge-sort(merge),2,%s,%d,%d,%.1f,%.1f,%.1f,%d\n", case_names[c], n, merge.count, mean,
+					sqrt(fmax(0.0, merge.sum2 / merge.count - mean * mean)), merge.min, merge_out);
 			}
 			for (int m = 0; m < nmethods; ++m) {
 				if (summary && st[m].count) {
