@@ -161,8 +161,12 @@ static int run_method(const SumArgs *a, const mkSpec *s1, const mkSpec *s2)
 		return 2;
 	}
 	char msg[512] = "";
-	int ok = a->dim == 2 ? m->accepts2(s1->body2, s2->body2, a->opt.set, msg, sizeof msg)
-		: m->accepts3(s1->body3, s2->body3, a->opt.set, msg, sizeof msg);
+	if (!mkMethod_CheckN(m, a->dim, (int)a->n, msg, sizeof msg)) {
+		fprintf(stderr, "mink sum: --n: %s\n", msg);
+		return 2;
+	}
+	int ok = a->dim == 2 ? mkMethod_Accepts2(m, s1->body2, s2->body2, a->opt.set, msg, sizeof msg)
+		: mkMethod_Accepts3(m, s1->body3, s2->body3, a->opt.set, msg, sizeof msg);
 	if (!ok) {
 		fprintf(stderr, "mink sum: method %s does not accept this pair: %s\n", m->name, msg);
 		return 2;
