@@ -32,8 +32,10 @@
  *
  * Adding a method: write one file under baselines/src that defines a
  * `const mkMethod` (name, summary, reference, flags, accepts and run
- * functions), add one line to the table in registry.c, and add the method to
- * the referee test. Nothing else changes. */
+ * functions) and add one line to the table in registry.c (with its range of
+ * n). The referee tests (test_referee2, test_referee3) loop over the table,
+ * so the new entry is put through the referee on random and extreme pairs
+ * without a test of its own. Nothing else changes. */
 #ifndef MINK_REGISTRY_H
 #define MINK_REGISTRY_H
 
