@@ -23,9 +23,10 @@
  * parameter whose normal is d, takes that point (a lower bound) and the
  * tangent planes of points 1e-7 to 0.3 rad around it (an upper bound, kept
  * valid whatever the inversion did by a residual term |d - sum l_k n_k| R,
- * R a bound on the body's radius). The sharpened gap is ~1e-14 of the size
- * in 2D and ~1e-13 in 3D. A boundary point has <n, p> = h(n), so the
- * referee asks
+ * R a bound on the body's radius). The sharpened gap is typically ~1e-14
+ * of the size in 2D and ~1e-13 in 3D, larger where the normal map is nearly
+ * singular (flat faces and sharp edges of 3D bodies with eps near 0 or 2).
+ * A boundary point has <n, p> = h(n), so the referee asks
  *   depth  = H(n_k) - <n_k, p_k> <= tol   (no dense pairwise sum lies beyond
  *                                          p_k: p_k is not inside the set)
  *   excess = <d, p_k> - U(d)     <= tol   (p_k is not outside the set), for
