@@ -1,4 +1,4 @@
-# Run `mink` with ARGS ("|"-separated) and check its exit status (RC), that
+# Run `mink` with ARGS (after PRE, piped, when given) ("|"-separated) and check its exit status (RC), that
 # its standard error matches ERR (a regex, when given), that its standard
 # output matches OUT (when given), and, when FILE is given, that FILE exists
 # afterwards exactly when EXISTS is 1.
@@ -6,7 +6,14 @@ string(REPLACE "|" ";" args "${ARGS}")
 if(FILE)
   file(REMOVE ${FILE})
 endif()
-execute_process(COMMAND ${EXE} ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(PRE)
+  # PRE ("|"-separated) runs first and its output is piped into the command.
+  string(REPLACE "|" ";" pre "${PRE}")
+  execute_process(COMMAND ${EXE} ${pre} COMMAND ${EXE} ${args}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+else()
+  execute_process(COMMAND ${EXE} ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+endif()
 if(NOT rc STREQUAL RC)
   message(FATAL_ERROR "exit status ${rc}, expected ${RC}\nstderr: ${err}")
 endif()
