@@ -243,7 +243,7 @@ static const struct { const char *utf8, *tex; } mkSymbols[] = {
 	{ "\xe2\x8a\x95", "$\\oplus$" }, { "\xce\xb5", "$\\varepsilon$" }, { "\xc2\xa7", "\\S{}" },
 	{ "\xc2\xb2", "$^2$" }, { "\xe2\x81\xb4", "$^4$" }, { "\xe2\x89\x88", "$\\approx$" },
 	{ "\xe2\x86\x92", "$\\to$" }, { "\xce\xb7", "$\\eta$" }, { "\xcf\x80", "$\\pi$" },
-	{ "\xe2\x80\xa6", "\\ldots{}" },
+	{ "\xe2\x80\xa6", "\\ldots{}" }, { "\xc3\xb6", "\\\"{o}" },
 };
 
 static void mkTex_Put(FILE *fp, const char *s)
@@ -1198,8 +1198,8 @@ static void mkCObstacles(mkDoc *d, const char *dir, mkTally *tally)
 		mkDoc_Source(d, path, &t, &m);
 		const char *d3 = mkSidecar_Get(&m, "draw_3d"), *so3 = mkSidecar_Get(&m, "so3_file");
 		const char *timed = mkSidecar_Get(&m, "timed_region");
-		mkDoc_Para(d, "Rotation draw: 3D obstacles %s; robot orientations from %s. Timed: %s. The paper ran "
-			"MATLAB on one core of a Xeon at 2.8 GHz. Means over the trials of each level.",
+		mkDoc_Para(d, "Rotation draw: in the 3D draws (%s); robot orientations from %s. Timed: %s. The paper "
+			"ran MATLAB on one core of a Xeon at 2.8 GHz. Means over the trials of each level.",
 			d3 ? d3 : "(draw not recorded)", so3 ? so3 : "(not recorded)", timed ? timed : "not recorded");
 	}
 	static const char *const head[] = { "dim", "obstacles", "points", "orientations", "published total (s)",
