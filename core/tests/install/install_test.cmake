@@ -1,6 +1,8 @@
 # Install the built project into a fresh prefix, then build a consumer
 # against it twice: through pkg-config and through find_package(mink).
-# Inputs: BUILD (the build tree), WORK (scratch), SRC (this folder), CC.
+# Inputs: BUILD (the build tree), WORK (scratch), SRC (this folder), CC, and
+# EXTRA: compiler flags the library was built with that a consumer needs too
+# (the sanitizers).
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(prefix ${WORK}/prefix)
@@ -17,7 +19,8 @@ if(rc)
   message(FATAL_ERROR "pkg-config does not find the installed mink.pc")
 endif()
 separate_arguments(flags UNIX_COMMAND "${flags}")
-execute_process(COMMAND ${CC} -std=c11 ${SRC}/consumer.c ${flags} -o ${WORK}/consumer_pc RESULT_VARIABLE rc)
+separate_arguments(extra UNIX_COMMAND "${EXTRA}")
+execute_process(COMMAND ${CC} -std=c11 ${extra} ${SRC}/consumer.c ${flags} -o ${WORK}/consumer_pc RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "compiling against pkg-config flags failed")
 endif()
@@ -28,6 +31,7 @@ endif()
 configure_file(${SRC}/CMakeLists.txt.in ${WORK}/cm/CMakeLists.txt COPYONLY)
 configure_file(${SRC}/consumer.c ${WORK}/cm/consumer.c COPYONLY)
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${WORK}/cm -B ${WORK}/cm/build -DCMAKE_PREFIX_PATH=${prefix}
+  "-DCMAKE_C_FLAGS=${EXTRA}" "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA}"
   RESULT_VARIABLE rc OUTPUT_QUIET)
 if(rc)
   message(FATAL_ERROR "find_package(mink) from the installed package config failed")
