@@ -114,7 +114,6 @@ typedef struct mkOptions {
 
 static const char *const mkDimNames[] = { "2", "3", "both" };
 static const char *const mkFormNames[] = { "normal", "gradient" };
-static const char *const mkImplNames[] = { "auto", "scalar", "avx2", "avx512" };
 
 static void mkUsage(FILE *fp)
 {
@@ -270,38 +269,22 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 		} else if (strcmp(name, "--grid") == 0) {
 			bad = mkArg_Long(name, value, 2, 1000, &o->grid3, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--so3") == 0) {
-			if (!value[0]) {
-				snprintf(msg, sizeof msg, "--so3: expected a file path, got ''");
-				bad = 1;
-			}
-			o->so3 = value;
+			bad = mkArg_Path(name, value, &o->so3, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--orientations") == 0) {
 			bad = mkArg_Long(name, value, 0, MK_SO3_MAX, &o->orient3, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--form") == 0) {
 			bad = mkArg_Choice(name, value, mkFormNames, 2, &choice, msg, sizeof msg) != 0;
 			o->form = choice == 0 ? MK_FORM_NORMAL : MK_FORM_GRADIENT;
 		} else if (strcmp(name, "--impl") == 0) {
-			bad = mkArg_Choice(name, value, mkImplNames, 4, &choice, msg, sizeof msg) != 0;
-			if (!bad) {
-				o->impl = (mkImpl)mkImpl_Parse(value);
-				if ((int)o->impl < 0 || !mkImpl_Available(o->impl)) {
-					snprintf(msg, sizeof msg, "--impl: '%s' is not available on this CPU or build "
-						"(available: auto, scalar%s%s)", value,
-						mkImpl_Available(MK_IMPL_AVX2) ? ", avx2" : "",
-						mkImpl_Available(MK_IMPL_AVX512) ? ", avx512" : "");
-					bad = 1;
-				}
-			}
+			bad = mkArg_Impl(name, value, &choice, msg, sizeof msg) != 0;
+			if (!bad)
+				o->impl = (mkImpl)choice;
 		} else if (strcmp(name, "--fig-obstacles") == 0) {
 			bad = mkArg_Long(name, value, 0, 100000, &o->fig_obstacles, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--fig-slices") == 0) {
 			bad = mkArg_Long(name, value, 1, 100000, &o->fig_slices, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--out") == 0) {
-			if (!value[0]) {
-				snprintf(msg, sizeof msg, "--out: expected a file path, got ''");
-				bad = 1;
-			}
-			o->out = value;
+			bad = mkArg_Path(name, value, &o->out, msg, sizeof msg) != 0;
 			o->out_given = 1;
 		} else if (strcmp(name, "--shard") == 0) {
 			bad = mkShard_Parse(value, name, &o->shard, msg, sizeof msg) != 0;

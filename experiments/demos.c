@@ -103,7 +103,6 @@ typedef struct mkOptions {
 } mkOptions;
 
 static const char *const mkFigureNames[] = { "1", "2", "3", "4", "all" };
-static const char *const mkImplNames[] = { "auto", "scalar", "avx2", "avx512" };
 
 static void mkUsage(FILE *fp)
 {
@@ -186,23 +185,11 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 		} else if (strcmp(name, "--trials") == 0) {
 			bad = mkArg_Long(name, value, 1, 1, &dummy, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--impl") == 0) {
-			bad = mkArg_Choice(name, value, mkImplNames, 4, &choice, msg, sizeof msg) != 0;
-			if (!bad) {
-				o->impl = (mkImpl)mkImpl_Parse(value);
-				if ((int)o->impl < 0 || !mkImpl_Available(o->impl)) {
-					snprintf(msg, sizeof msg, "--impl: '%s' is not available on this CPU or build "
-						"(available: auto, scalar%s%s)", value,
-						mkImpl_Available(MK_IMPL_AVX2) ? ", avx2" : "",
-						mkImpl_Available(MK_IMPL_AVX512) ? ", avx512" : "");
-					bad = 1;
-				}
-			}
+			bad = mkArg_Impl(name, value, &choice, msg, sizeof msg) != 0;
+			if (!bad)
+				o->impl = (mkImpl)choice;
 		} else if (strcmp(name, "--out") == 0) {
-			if (!value[0]) {
-				snprintf(msg, sizeof msg, "--out: expected a file path, got ''");
-				bad = 1;
-			}
-			o->out = value;
+			bad = mkArg_Path(name, value, &o->out, msg, sizeof msg) != 0;
 			o->out_given = 1;
 		} else if (strcmp(name, "--shard") == 0) {
 			bad = mkShard_Parse(value, name, &o->shard, msg, sizeof msg) != 0;

@@ -356,11 +356,7 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 		} else if (strcmp(name, "--min-trials") == 0) {
 			bad = mkArg_Long(name, value, 1, MK_TRIALS_MAX, &o->min_trials, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--out") == 0) {
-			if (!value[0]) {
-				snprintf(msg, sizeof msg, "--out: expected a file path, got ''");
-				bad = 1;
-			}
-			o->out = value;
+			bad = mkArg_Path(name, value, &o->out, msg, sizeof msg) != 0;
 			o->out_given = 1;
 		} else if (strcmp(name, "--shard") == 0) {
 			bad = mkShard_Parse(value, name, &o->shard, msg, sizeof msg) != 0;

@@ -69,7 +69,6 @@ typedef struct mkOptions {
 static const char *const mkRotNames[] = { "paper", "uniform" };
 static const char *const mkDimNames[] = { "2", "3", "both" };
 static const char *const mkSetNames[] = { "contact", "plus" };
-static const char *const mkImplNames[] = { "auto", "scalar", "avx2", "avx512" };
 static const mkForm mkForms[] = { MK_FORM_NORMAL, MK_FORM_GRADIENT, MK_FORM_PAPER };
 #define MK_FORM_COUNT 3
 
@@ -174,23 +173,11 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 			bad = mkArg_Choice(name, value, mkSetNames, 2, &choice, msg, sizeof msg) != 0;
 			o->set = choice == 0 ? MK_SET_CONTACT : MK_SET_PLUS;
 		} else if (strcmp(name, "--impl") == 0) {
-			bad = mkArg_Choice(name, value, mkImplNames, 4, &choice, msg, sizeof msg) != 0;
-			if (!bad) {
-				o->impl = mkImpl_Parse(value);
-				if ((int)o->impl < 0 || !mkImpl_Available(o->impl)) {
-					snprintf(msg, sizeof msg, "--impl: '%s' is not available on this CPU or build "
-						"(available: auto, scalar%s%s)", value,
-						mkImpl_Available(MK_IMPL_AVX2) ? ", avx2" : "",
-						mkImpl_Available(MK_IMPL_AVX512) ? ", avx512" : "");
-					bad = 1;
-				}
-			}
+			bad = mkArg_Impl(name, value, &choice, msg, sizeof msg) != 0;
+			if (!bad)
+				o->impl = (mkImpl)choice;
 		} else if (strcmp(name, "--out") == 0) {
-			if (!value[0]) {
-				snprintf(msg, sizeof msg, "--out: expected a file path, got ''");
-				bad = 1;
-			}
-			o->out = value;
+			bad = mkArg_Path(name, value, &o->out, msg, sizeof msg) != 0;
 			o->out_given = 1;
 		} else if (strcmp(name, "--shard") == 0) {
 			bad = mkShard_Parse(value, name, &o->shard, msg, sizeof msg) != 0;

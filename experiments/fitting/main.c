@@ -254,11 +254,8 @@ int main(int argc, char **argv)
 			bad = mkArg_U64(name, value, &seed, msg, sizeof msg);
 		} else if (strcmp(name, "--shard") == 0) {
 			bad = mkShard_Parse(value, name, &shard, msg, sizeof msg);
-		} else if (value[0] == '\0') {
-			snprintf(msg, sizeof msg, "--out: expected a file path, got ''");
-			bad = -1;
 		} else {
-			out = value;
+			bad = mkArg_Path(name, value, &out, msg, sizeof msg);
 		}
 		if (bad) {
 			return usageError(msg);

@@ -1,6 +1,8 @@
 /* args.c - command-line values. */
 #include "mink_exp/args.h"
 
+#include <mink/sum.h>
+
 #include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
@@ -85,4 +87,34 @@ const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const c
 		*value = a->argv[a->i++];
 	}
 	return a->name;
+}
+
+int mkArg_Impl(const char *flag, const char *text, int *out, char *msg, size_t msglen)
+{
+	static const char *const names[] = { "auto", "scalar", "avx2", "avx512" };
+	int choice = 0;
+	if (mkArg_Choice(flag, text, names, 4, &choice, msg, msglen) != 0)
+		return -1;
+	int impl = mkImpl_Parse(text);
+	if (impl < 0 || !mkImpl_Available((mkImpl)impl)) {
+		if (msg && msglen > 0)
+			snprintf(msg, msglen, "%s: '%s' is not available on this CPU or build "
+				"(available: auto, scalar%s%s)", flag, text,
+				mkImpl_Available(MK_IMPL_AVX2) ? ", avx2" : "",
+				mkImpl_Available(MK_IMPL_AVX512) ? ", avx512" : "");
+		return -1;
+	}
+	*out = impl;
+	return 0;
+}
+
+int mkArg_Path(const char *flag, const char *text, const char **out, char *msg, size_t msglen)
+{
+	if (!text || !text[0]) {
+		if (msg && msglen > 0)
+			snprintf(msg, msglen, "%s: expected a file path, got ''", flag);
+		return -1;
+	}
+	*out = text;
+	return 0;
 }

@@ -18,6 +18,12 @@ int mkArg_U64(const char *flag, const char *text, uint64_t *out, char *msg, size
 int mkArg_Choice(const char *flag, const char *text, const char *const *names, int count,
 	int *out, char *msg, size_t msglen);
 
+/* A kernel name (auto, scalar, avx2, avx512) that this CPU and build can
+ * run (mkImpl_Available); *out is an mkImpl value. */
+int mkArg_Impl(const char *flag, const char *text, int *out, char *msg, size_t msglen);
+/* A non-empty file path; *out points into text. */
+int mkArg_Path(const char *flag, const char *text, const char **out, char *msg, size_t msglen);
+
 /* Walk argv in the usual long-option forms "--name value" and
  * "--name=value". mkArgs_Next returns the flag name (with its dashes) and
  * sets *value to the attached or following value when the flag takes one
