@@ -55,5 +55,11 @@ static inline void mkX_store(double *p, mkXV v) { memcpy(p, &v, sizeof v); }
 #define KALL mkX_all
 #define KLOAD mkX_load
 #define KSTORE mkX_store
+/* Lane vectors interleaved per block (see kernel_body.h): four independent
+ * chains of SLEEF calls keep the out-of-order core busy; more add spills. */
+#ifndef MK_X86_P
+#  define MK_X86_P 4
+#endif
+#define KP MK_X86_P
 
 #include "kernel_body.h"
