@@ -156,10 +156,12 @@ static void mkUsage(FILE *fp)
 		fp);
 }
 
-static int mkTakesValue(const char *name)
-{
-	return strcmp(name, "--force") != 0 && strcmp(name, "--help") != 0 && strcmp(name, "-h") != 0;
-}
+static const mkOption mkOptionTable[] = {
+	{ "--trials", 1 }, { "--seed", 1 }, { "--dim", 1 }, { "--obstacles2", 1 }, { "--obstacles3", 1 },
+	{ "--headings", 1 }, { "--points", 1 }, { "--grid", 1 }, { "--so3", 1 }, { "--orientations", 1 },
+	{ "--form", 1 }, { "--impl", 1 }, { "--fig-obstacles", 1 }, { "--fig-slices", 1 }, { "--out", 1 },
+	{ "--shard", 1 }, { "--force", 0 },
+};
 
 /* A comma-separated list of counts into levels[]; 0 or -1 with a message. */
 static int mkParseLevels(const char *flag, const char *text, long *levels, int *count,
@@ -224,32 +226,17 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 	mkArgs_Begin(&args, argc, argv);
 	const char *name, *value;
 	int choice = 0, bad = 0;
-	while (!bad && (name = mkArgs_Next(&args, mkTakesValue, &value)) != NULL) {
-		if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0) {
+	mkArgsStep step;
+	while (!bad && (step = mkArgs_Step(&args, mkOptionTable, MK_COUNT(mkOptionTable), &name, &value,
+			msg, sizeof msg)) != MK_ARGS_END) {
+		if (step == MK_ARGS_HELP) {
 			mkUsage(stdout);
 			return 1;
 		}
-		if (!mkTakesValue(name)) {
-			if (value) {
-				snprintf(msg, sizeof msg, "%s: takes no value", name);
-				bad = 1;
-			} else {
-				o->force = 1;
-			}
-			continue;
-		}
-		static const char *const known[] = { "--trials", "--seed", "--dim", "--obstacles2",
-			"--obstacles3", "--headings", "--points", "--grid", "--so3", "--orientations",
-			"--form", "--impl", "--fig-obstacles", "--fig-slices", "--out", "--shard" };
-		int is_known = 0;
-		for (size_t i = 0; i < sizeof known / sizeof known[0]; ++i)
-			is_known = is_known || strcmp(name, known[i]) == 0;
-		if (!is_known) {
-			snprintf(msg, sizeof msg, "%s: unknown option (see --help)", name);
+		if (step == MK_ARGS_ERROR) {
 			bad = 1;
-		} else if (!value) {
-			snprintf(msg, sizeof msg, "%s: missing value (see --help)", name);
-			bad = 1;
+		} else if (strcmp(name, "--force") == 0) {
+			o->force = 1;
 		} else if (strcmp(name, "--trials") == 0) {
 			bad = mkArg_Long(name, value, 1, MK_TRIALS_MAX, &o->trials, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--seed") == 0) {

@@ -128,10 +128,10 @@ static void mkUsage(FILE *fp)
 		fp);
 }
 
-static int mkTakesValue(const char *name)
-{
-	return strcmp(name, "--force") != 0 && strcmp(name, "--help") != 0 && strcmp(name, "-h") != 0;
-}
+static const mkOption mkOptionTable[] = {
+	{ "--figure", 1 }, { "--outline", 1 }, { "--impl", 1 }, { "--out", 1 }, { "--shard", 1 },
+	{ "--seed", 1 }, { "--trials", 1 }, { "--force", 0 },
+};
 
 static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, size_t outlen)
 {
@@ -148,32 +148,19 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 	mkArgs_Begin(&args, argc, argv);
 	const char *name, *value;
 	int choice = 0, bad = 0;
-	while (!bad && (name = mkArgs_Next(&args, mkTakesValue, &value)) != NULL) {
-		if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0) {
+	long dummy;
+	uint64_t seed;
+	mkArgsStep step;
+	while (!bad && (step = mkArgs_Step(&args, mkOptionTable, MK_COUNT(mkOptionTable), &name, &value,
+			msg, sizeof msg)) != MK_ARGS_END) {
+		if (step == MK_ARGS_HELP) {
 			mkUsage(stdout);
 			return 1;
 		}
-		if (!mkTakesValue(name)) {
-			if (value) {
-				snprintf(msg, sizeof msg, "%s: takes no value", name);
-				bad = 1;
-			} else {
-				o->force = 1;
-			}
-			continue;
-		}
-		int known = strcmp(name, "--figure") == 0 || strcmp(name, "--outline") == 0
-			|| strcmp(name, "--impl") == 0 || strcmp(name, "--out") == 0
-			|| strcmp(name, "--shard") == 0 || strcmp(name, "--seed") == 0
-			|| strcmp(name, "--trials") == 0;
-		long dummy;
-		uint64_t seed;
-		if (!known) {
-			snprintf(msg, sizeof msg, "%s: unknown option (see --help)", name);
+		if (step == MK_ARGS_ERROR) {
 			bad = 1;
-		} else if (!value) {
-			snprintf(msg, sizeof msg, "%s: missing value (see --help)", name);
-			bad = 1;
+		} else if (strcmp(name, "--force") == 0) {
+			o->force = 1;
 		} else if (strcmp(name, "--figure") == 0) {
 			bad = mkArg_Choice(name, value, mkFigureNames, 5, &choice, msg, sizeof msg) != 0;
 			for (int f = 1; f <= 4 && !bad; ++f)

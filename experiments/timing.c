@@ -155,10 +155,11 @@ static void mkUsage(FILE *fp)
 		fp);
 }
 
-static int mkTakesValue(const char *name)
-{
-	return strcmp(name, "--force") != 0 && strcmp(name, "--help") != 0 && strcmp(name, "-h") != 0;
-}
+static const mkOption mkOptionTable[] = {
+	{ "--trials", 1 }, { "--seed", 1 }, { "--dims", 1 }, { "--cases", 1 }, { "--methods", 1 },
+	{ "--levels", 1 }, { "--rotations", 1 }, { "--budget", 1 }, { "--min-trials", 1 }, { "--out", 1 },
+	{ "--shard", 1 }, { "--force", 0 },
+};
 
 /* A non-negative number of seconds in [lo, hi]. */
 static int mkArgSeconds(const char *flag, const char *text, double lo, double hi, double *out,
@@ -309,31 +310,17 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 	mkArgs_Begin(&args, argc, argv);
 	const char *name, *value;
 	int choice = 0, bad = 0;
-	while (!bad && (name = mkArgs_Next(&args, mkTakesValue, &value)) != NULL) {
-		if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0) {
+	mkArgsStep step;
+	while (!bad && (step = mkArgs_Step(&args, mkOptionTable, MK_COUNT(mkOptionTable), &name, &value,
+			msg, sizeof msg)) != MK_ARGS_END) {
+		if (step == MK_ARGS_HELP) {
 			mkUsage(stdout);
 			return 1;
 		}
-		if (!mkTakesValue(name)) {
-			if (value) {
-				snprintf(msg, sizeof msg, "%s: takes no value", name);
-				bad = 1;
-			} else {
-				o->force = 1;
-			}
-			continue;
-		}
-		static const char *const known[] = { "--trials", "--seed", "--dims", "--cases", "--methods",
-			"--levels", "--rotations", "--budget", "--min-trials", "--out", "--shard" };
-		int is_known = 0;
-		for (size_t i = 0; i < sizeof known / sizeof known[0]; ++i)
-			is_known = is_known || strcmp(name, known[i]) == 0;
-		if (!is_known) {
-			snprintf(msg, sizeof msg, "%s: unknown option (see --help)", name);
+		if (step == MK_ARGS_ERROR) {
 			bad = 1;
-		} else if (!value) {
-			snprintf(msg, sizeof msg, "%s: missing value (see --help)", name);
-			bad = 1;
+		} else if (strcmp(name, "--force") == 0) {
+			o->force = 1;
 		} else if (strcmp(name, "--trials") == 0) {
 			bad = mkArg_Long(name, value, 1, MK_TRIALS_MAX, &o->trials, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--seed") == 0) {

@@ -102,10 +102,11 @@ static void mkUsage(FILE *fp)
 		fp);
 }
 
-static int mkTakesValue(const char *name)
-{
-	return strcmp(name, "--force") != 0 && strcmp(name, "--help") != 0 && strcmp(name, "-h") != 0;
-}
+static const mkOption mkOptionTable[] = {
+	{ "--trials", 1 }, { "--seed", 1 }, { "--dim", 1 }, { "--n", 1 }, { "--grid", 1 },
+	{ "--rotations", 1 }, { "--set", 1 }, { "--impl", 1 }, { "--out", 1 }, { "--shard", 1 },
+	{ "--force", 0 },
+};
 
 /* Parse argv into o. Returns 0 to run, 1 when --help was printed, 2 on a
  * usage error (message printed). */
@@ -129,31 +130,17 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 	mkArgs_Begin(&args, argc, argv);
 	const char *name, *value;
 	int choice = 0, bad = 0;
-	while (!bad && (name = mkArgs_Next(&args, mkTakesValue, &value)) != NULL) {
-		if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0) {
+	mkArgsStep step;
+	while (!bad && (step = mkArgs_Step(&args, mkOptionTable, MK_COUNT(mkOptionTable), &name, &value,
+			msg, sizeof msg)) != MK_ARGS_END) {
+		if (step == MK_ARGS_HELP) {
 			mkUsage(stdout);
 			return 1;
 		}
-		if (!mkTakesValue(name)) {
-			if (value) {
-				snprintf(msg, sizeof msg, "%s: takes no value", name);
-				bad = 1;
-			} else {
-				o->force = 1;
-			}
-			continue;
-		}
-		int known = strcmp(name, "--trials") == 0 || strcmp(name, "--seed") == 0
-			|| strcmp(name, "--dim") == 0 || strcmp(name, "--n") == 0
-			|| strcmp(name, "--grid") == 0 || strcmp(name, "--rotations") == 0
-			|| strcmp(name, "--set") == 0 || strcmp(name, "--impl") == 0
-			|| strcmp(name, "--out") == 0 || strcmp(name, "--shard") == 0;
-		if (!known) {
-			snprintf(msg, sizeof msg, "%s: unknown option (see --help)", name);
+		if (step == MK_ARGS_ERROR) {
 			bad = 1;
-		} else if (!value) {
-			snprintf(msg, sizeof msg, "%s: missing value (see --help)", name);
-			bad = 1;
+		} else if (strcmp(name, "--force") == 0) {
+			o->force = 1;
 		} else if (strcmp(name, "--trials") == 0) {
 			bad = mkArg_Long(name, value, 1, 10000000, &o->trials, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--seed") == 0) {

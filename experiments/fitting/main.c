@@ -199,11 +199,9 @@ static void summaryPrint(const Summary *s)
 	}
 }
 
-static int takesValue(const char *name)
-{
-	return strcmp(name, "--case") == 0 || strcmp(name, "--trials") == 0 || strcmp(name, "--seed") == 0
-		|| strcmp(name, "--out") == 0 || strcmp(name, "--shard") == 0;
-}
+static const mkOption OPTIONS[] = {
+	{ "--case", 1 }, { "--trials", 1 }, { "--seed", 1 }, { "--out", 1 }, { "--shard", 1 }, { "--force", 0 },
+};
 
 static int usageError(const char *msg)
 {
@@ -225,25 +223,19 @@ int main(int argc, char **argv)
 	mkArgs args;
 	mkArgs_Begin(&args, argc, argv); /* starts after argv[0] */
 	const char *name, *value;
-	while ((name = mkArgs_Next(&args, takesValue, &value)) != NULL) {
-		if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0 || strcmp(name, "--force") == 0) {
-			if (value != NULL) {
-				snprintf(msg, sizeof msg, "%s: takes no value", name);
-				return usageError(msg);
-			}
-			if (name[2] == 'f') {
-				force = 1;
-				continue;
-			}
+	mkArgsStep step;
+	while ((step = mkArgs_Step(&args, OPTIONS, MK_COUNT(OPTIONS), &name, &value, msg, sizeof msg))
+		!= MK_ARGS_END) {
+		if (step == MK_ARGS_HELP) {
 			usage(stdout);
 			return 0;
-		} else if (!takesValue(name)) {
-			snprintf(msg, sizeof msg, "%s: unknown option (see --help)", name);
+		}
+		if (step == MK_ARGS_ERROR) {
 			return usageError(msg);
 		}
-		if (value == NULL) {
-			snprintf(msg, sizeof msg, "%s: missing value", name);
-			return usageError(msg);
+		if (strcmp(name, "--force") == 0) {
+			force = 1;
+			continue;
 		}
 		int bad = 0;
 		if (strcmp(name, "--case") == 0) {

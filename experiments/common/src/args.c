@@ -118,3 +118,58 @@ int mkArg_Path(const char *flag, const char *text, const char **out, char *msg, 
 	*out = text;
 	return 0;
 }
+
+/* The table entry of name, or NULL. */
+static const mkOption *mkOption_Find(const mkOption *opts, int count, const char *name)
+{
+	for (int i = 0; i < count; ++i)
+		if (strcmp(opts[i].name, name) == 0)
+			return &opts[i];
+	return NULL;
+}
+
+mkArgsStep mkArgs_Step(mkArgs *a, const mkOption *opts, int count, const char **name,
+	const char **value, char *msg, size_t msglen)
+{
+	*name = NULL;
+	*value = NULL;
+	if (a->i >= a->argc)
+		return MK_ARGS_END;
+	const char *arg = a->argv[a->i++];
+	const char *eq = strncmp(arg, "--", 2) == 0 ? strchr(arg, '=') : NULL;
+	size_t n = eq ? (size_t)(eq - arg) : strlen(arg);
+	if (n >= sizeof a->name)
+		n = sizeof a->name - 1;
+	memcpy(a->name, arg, n);
+	a->name[n] = '\0';
+	*name = a->name;
+	int help = strcmp(a->name, "--help") == 0 || strcmp(a->name, "-h") == 0;
+	const mkOption *opt = help ? NULL : mkOption_Find(opts, count, a->name);
+	if (!help && !opt) {
+		if (msg && msglen > 0)
+			snprintf(msg, msglen, "%s: unknown option (see --help)", a->name);
+		return MK_ARGS_ERROR;
+	}
+	if (help || !opt->takes_value) {
+		if (eq) {
+			if (msg && msglen > 0)
+				snprintf(msg, msglen, "%s: takes no value", a->name);
+			return MK_ARGS_ERROR;
+		}
+		if (help)
+			return MK_ARGS_HELP;
+		*name = opt->name;
+		return MK_ARGS_OPTION;
+	}
+	if (eq) {
+		*value = eq + 1;
+	} else if (a->i < a->argc) {
+		*value = a->argv[a->i++];
+	} else {
+		if (msg && msglen > 0)
+			snprintf(msg, msglen, "%s: missing value (see --help)", a->name);
+		return MK_ARGS_ERROR;
+	}
+	*name = opt->name;
+	return MK_ARGS_OPTION;
+}

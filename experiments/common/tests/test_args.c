@@ -50,5 +50,24 @@ int main(void)
 	name = mkArgs_Next(&a, mkTakesValue, &value);
 	ENSURE(name && strcmp(name, "--out") == 0 && value == NULL); /* value missing */
 	ENSURE(mkArgs_Next(&a, mkTakesValue, &value) == NULL);
+
+	/* mkArgs_Step: the table decides which options take values. */
+	static const mkOption opts[] = { { "--n", 1 }, { "--seed", 1 }, { "--force", 0 } };
+	char *argv2[] = { "prog", "--n", "5", "--seed=9", "--force", "-h", "--force=1", "--bogus", "--n" };
+	mkArgs_Begin(&a, 9, argv2);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_OPTION);
+	ENSURE(strcmp(name, "--n") == 0 && value && strcmp(value, "5") == 0);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_OPTION);
+	ENSURE(strcmp(name, "--seed") == 0 && value && strcmp(value, "9") == 0);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_OPTION);
+	ENSURE(strcmp(name, "--force") == 0 && value == NULL);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_HELP);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
+	ENSURE(strcmp(msg, "--force: takes no value") == 0);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
+	ENSURE(strcmp(msg, "--bogus: unknown option (see --help)") == 0);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
+	ENSURE(strcmp(msg, "--n: missing value (see --help)") == 0);
+	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_END);
 	return mkTestFailures() != 0;
 }

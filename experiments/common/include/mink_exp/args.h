@@ -39,4 +39,29 @@ typedef struct mkArgs {
 void mkArgs_Begin(mkArgs *a, int argc, char **argv);
 const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const char **value);
 
+/* One option a command accepts: its name with dashes, and whether it takes a
+ * value ("--trials" 1) or is a flag ("--force" 0). */
+/* Entries of a static array. */
+#define MK_COUNT(table) ((int)(sizeof(table) / sizeof((table)[0])))
+
+typedef struct mkOption {
+	const char *name;
+	int takes_value;
+} mkOption;
+
+typedef enum mkArgsStep {
+	MK_ARGS_END,    /* no more arguments */
+	MK_ARGS_HELP,   /* --help or -h (always accepted) */
+	MK_ARGS_OPTION, /* *name is one of the table's names; *value its value (NULL for a flag) */
+	MK_ARGS_ERROR   /* msg says which: an unknown option, a missing value, or a value given to a flag */
+} mkArgsStep;
+
+/* The next option of argv checked against the table of `count` options: the
+ * whole loop of a command is
+ *   while ((step = mkArgs_Step(&a, opts, n, &name, &value, msg, len)) == MK_ARGS_OPTION)
+ *       ... one branch per name, each parsing value with an mkArg_ parser ...
+ * followed by the handling of MK_ARGS_HELP and MK_ARGS_ERROR. */
+mkArgsStep mkArgs_Step(mkArgs *a, const mkOption *opts, int count, const char **name,
+	const char **value, char *msg, size_t msglen);
+
 #endif
