@@ -69,11 +69,10 @@ void mkArgs_Begin(mkArgs *a, int argc, char **argv)
 	a->name[0] = '\0';
 }
 
-const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const char **value)
+/* Consumes the next argument: its name (up to any '=') into a->name;
+ * returns the '=' of "--name=value", or NULL. */
+static const char *mkArgs_Take(mkArgs *a)
 {
-	*value = NULL;
-	if (a->i >= a->argc)
-		return NULL;
 	const char *arg = a->argv[a->i++];
 	const char *eq = strncmp(arg, "--", 2) == 0 ? strchr(arg, '=') : NULL;
 	size_t n = eq ? (size_t)(eq - arg) : strlen(arg);
@@ -81,6 +80,15 @@ const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const c
 		n = sizeof a->name - 1;
 	memcpy(a->name, arg, n);
 	a->name[n] = '\0';
+	return eq;
+}
+
+const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const char **value)
+{
+	*value = NULL;
+	if (a->i >= a->argc)
+		return NULL;
+	const char *eq = mkArgs_Take(a);
 	if (eq) {
 		*value = eq + 1;
 	} else if (takes_value(a->name) && a->i < a->argc) {
@@ -135,13 +143,7 @@ mkArgsStep mkArgs_Step(mkArgs *a, const mkOption *opts, int count, const char **
 	*value = NULL;
 	if (a->i >= a->argc)
 		return MK_ARGS_END;
-	const char *arg = a->argv[a->i++];
-	const char *eq = strncmp(arg, "--", 2) == 0 ? strchr(arg, '=') : NULL;
-	size_t n = eq ? (size_t)(eq - arg) : strlen(arg);
-	if (n >= sizeof a->name)
-		n = sizeof a->name - 1;
-	memcpy(a->name, arg, n);
-	a->name[n] = '\0';
+	const char *eq = mkArgs_Take(a);
 	*name = a->name;
 	int help = strcmp(a->name, "--help") == 0 || strcmp(a->name, "-h") == 0;
 	const mkOption *opt = help ? NULL : mkOption_Find(opts, count, a->name);
