@@ -744,34 +744,21 @@ static int mkSpec3(char *buf, size_t len, const char *kind, const double s[3], d
 	return 0;
 }
 
-/* One surface on the grid: rows i (eta), columns j = 0..n with j = n
- * repeating j = 0 so that the surface closes around the axis; a blank line
- * after each row, two after the surface. The grid's first and last rows
- * are at eta = -pi/2 and pi/2 in double precision, where cos(eta) is about
- * 6e-17 rather than 0: for small eps1 (a box: rho^0.1 is about 0.02) they
- * are small rings, not the poles, and would leave holes in a drawn surface.
- * So rows i = -1 and i = n are added at the exact poles u = (0, 0, -1) and
- * (0, 0, 1), given in pole[0] and pole[1]. */
-static void mkWriteSurface(mkCsv *csv, const char *name, int n, const double *x, const double *y, const double *z,
-	const mkVec3 pole[2])
+/* One surface on the grid: rows i (eta) from the south pole (i = 0) to the
+ * north pole (i = n - 1; mkSample3_Grid gives the poles exactly), columns
+ * j = 0..n with j = n repeating j = 0 so that the surface closes around the
+ * axis; a blank line after each row, two after the surface. */
+static void mkWriteSurface(mkCsv *csv, const char *name, int n, const double *x, const double *y, const double *z)
 {
-	for (int i = -1; i <= n; ++i) {
+	for (int i = 0; i < n; ++i) {
 		for (int j = 0; j <= n; ++j) {
 			int idx = i * n + (j % n);
-			mkVec3 p;
-			if (i < 0 || i == n) {
-				p = pole[i < 0 ? 0 : 1];
-			} else {
-				p.x = x[idx];
-				p.y = y[idx];
-				p.z = z[idx];
-			}
 			mkCsv_Str(csv, name);
 			mkCsv_Int(csv, i);
 			mkCsv_Int(csv, j);
-			mkCsv_Double(csv, p.x);
-			mkCsv_Double(csv, p.y);
-			mkCsv_Double(csv, p.z);
+			mkCsv_Double(csv, x[idx]);
+			mkCsv_Double(csv, y[idx]);
+			mkCsv_Double(csv, z[idx]);
 			mkCsv_EndRow(csv);
 		}
 		fputc('\n', csv->file.fp);
@@ -880,18 +867,11 @@ static void mkFigure4(mkRun *run)
 			b2p.y[k] = b.y;
 			b2p.z[k] = b.z;
 		}
-		/* The exact poles of each surface (see mkWriteSurface). */
-		mkVec3 pb1[2], pb2[2], psum[2];
 		int finite = 1;
-		for (int side = 0; side < 2; ++side) {
-			mkVec3 u = { 0.0, 0.0, side == 0 ? -1.0 : 1.0 };
-			pb1[side] = mkBody3_Point(b1, u);
-			pb2[side] = mkBody3_Point(placed, u);
-			psum[side] = mkSum3_Point(b1, b2, MK_SET_CONTACT, opt.form, opt.param, u, NULL);
-			finite = finite && isfinite(psum[side].x) && isfinite(psum[side].y) && isfinite(psum[side].z);
-		}
+		for (int k = 0; k < N; ++k)
+			finite = finite && isfinite(pt.x[k]) && isfinite(pt.y[k]) && isfinite(pt.z[k]);
 		if (!finite) {
-			fprintf(stderr, "demos: fig. 4(%s): the sum at a pole is not finite\n", P[p].panel);
+			fprintf(stderr, "demos: fig. 4(%s): a point of the sum is not finite\n", P[p].panel);
 			run->failed = 1;
 			break;
 		}
@@ -900,12 +880,12 @@ static void mkFigure4(mkRun *run)
 		mkCsv csv;
 		if (mkRun_Open(run, file, cols, 6, &csv) != 0)
 			break;
-		mkWriteSurface(&csv, "b1", G, b1p.x, b1p.y, b1p.z, pb1);
-		mkWriteSurface(&csv, "sum", G, pt.x, pt.y, pt.z, psum);
-		mkWriteSurface(&csv, "b2", G, b2p.x, b2p.y, b2p.z, pb2);
+		mkWriteSurface(&csv, "b1", G, b1p.x, b1p.y, b1p.z);
+		mkWriteSurface(&csv, "sum", G, pt.x, pt.y, pt.z);
+		mkWriteSurface(&csv, "b2", G, b2p.x, b2p.y, b2p.z);
 		snprintf(content, sizeof content, "%s: surfaces b1 (data block 0), sum (1) and b2 placed on the sum (2) "
-			"on the 50 x 50 grid of B1's surface angles (eta_i, omega_j; j = 50 repeats j = 0), "
-			"added rows i = -1 and i = 50 at the exact poles u = (0, 0, -1) and (0, 0, 1)",
+			"on the 50 x 50 grid of B1's surface angles (eta_i, omega_j; i = 0 and 49 the exact poles; "
+			"j = 50 repeats j = 0)",
 			P[p].title);
 		snprintf(note, sizeof note, "B2 centred at the sum point of grid index (i, j) = (%d, %d), "
 			"at %.17g,%.17g,%.17g, where B1's normal is closest to (%g, %g, %g)",

@@ -344,13 +344,13 @@ static void checkFigure3(const mkTable *ix)
 
 /* ---- Fig. 4 --------------------------------------------------------------- */
 
-/* Surface points of one block of a fig4 file: rows i = -1..50, j = 0..50. */
-typedef struct mkGrid { long count; mkVec3 p[52 * 51]; int i[52 * 51], j[52 * 51]; } mkGrid;
+/* Surface points of one block of a fig4 file: rows i = 0..49, j = 0..50. */
+typedef struct mkGrid { long count; mkVec3 p[50 * 51]; int i[50 * 51], j[50 * 51]; } mkGrid;
 
 static void loadSurface(const mkTable *t, const char *name, mkGrid *g)
 {
 	g->count = 0;
-	for (long k = 0; k < t->rows && g->count < 52 * 51; ++k) {
+	for (long k = 0; k < t->rows && g->count < 50 * 51; ++k) {
 		if (strcmp(mkTable_Str(t, k, "surface"), name) != 0)
 			continue;
 		mkVec3 x = { mkTable_Num(t, k, "x"), mkTable_Num(t, k, "y"), mkTable_Num(t, k, "z") };
@@ -389,14 +389,14 @@ static void checkFigure4(const mkTable *ix)
 		ENSURE(parse3(mkTable_Str(ix, r, "body2"), &b2) == 0);
 		mkTable t;
 		ENSURE(readFile(&t, file) == 0);
-		/* Three surfaces of 52 rows of 51 points; a blank line after each
+		/* Three surfaces of 50 rows of 51 points; a blank line after each
 		 * grid row and one more after each surface. */
-		ENSURE(t.rows == 3 * 52 * 51);
-		ENSURE(t.blank == 3 * 52 + 3);
+		ENSURE(t.rows == 3 * 50 * 51);
+		ENSURE(t.blank == 3 * 50 + 3);
 		loadSurface(&t, "b1", &gb1);
 		loadSurface(&t, "sum", &gsum);
 		loadSurface(&t, "b2", &gb2);
-		ENSURE(gb1.count == 52 * 51 && gsum.count == 52 * 51 && gb2.count == 52 * 51);
+		ENSURE(gb1.count == 50 * 51 && gsum.count == 50 * 51 && gb2.count == 50 * 51);
 		/* Where B2 was placed: the grid index in the note. */
 		int ci = -1, cj = -1;
 		const char *note = strstr(mkTable_Str(ix, r, "note"), "(i, j) = (");
@@ -412,7 +412,7 @@ static void checkFigure4(const mkTable *ix)
 			on1 = fmax(on1, fabs(gauge3(b1, zero, gb1.p[k]) - 1.0));
 			/* With the surface parameters, B1's point at the same (i, j)
 			 * is the kissing point: B2 centred at the sum point touches it
-			 * (the added pole rows included). */
+			 * (the poles included). */
 			kiss2 = fmax(kiss2, fabs(gauge3(b2, gsum.p[k], gb1.p[k]) - 1.0));
 			on2 = fmax(on2, fabs(gauge3(b2, c2, gb2.p[k]) - 1.0));
 			outside = fmin(outside, gauge3(b1, zero, gb2.p[k]));
