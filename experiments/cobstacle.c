@@ -955,15 +955,9 @@ int main(int argc, char **argv)
 	if (parsed != 0)
 		return 2;
 
+	if (mkPath_PrepareOutput("cobstacle", o.out, o.force) != 0)
+		return 1;
 	char msg[1024];
-	if (!o.force && mkPath_Exists(o.out)) {
-		fprintf(stderr, "cobstacle: %s exists; pass --force to replace it\n", o.out);
-		return 1;
-	}
-	if (mkPath_MakeParents(o.out, msg, sizeof msg) != 0) {
-		fprintf(stderr, "cobstacle: %s\n", msg);
-		return 1;
-	}
 
 	/* The run's units: dimension, obstacle count, trial, in row order. */
 	long nunits = o.trials * ((o.dim2 ? o.nlevels2 : 0) + (o.dim3 ? o.nlevels3 : 0));
@@ -1118,13 +1112,10 @@ int main(int argc, char **argv)
 	mkLoadAverage(text, sizeof text);
 	mkMeta_Set(&meta, "loadavg_end", text);
 
-	if (!failed && mkCsv_Commit(&csv, &meta, msg, sizeof msg) != 0) {
-		fprintf(stderr, "cobstacle: %s\n", msg);
-		failed = 1;
-	} else if (failed && open) {
-		mkCsv_Discard(&csv);
-	}
-	mkMeta_Free(&meta);
+	if (open)
+		failed = mkCsv_Finish(&csv, &meta, failed, "cobstacle");
+	else
+		mkMeta_Free(&meta);
 	mkWork_Free(&w2);
 	mkWork_Free(&w3);
 	free(rot.R);

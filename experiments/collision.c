@@ -83,10 +83,10 @@ static void mkUsage(FILE *fp)
 		fp);
 }
 
-static int mkTakesValue(const char *name)
-{
-	return strcmp(name, "--force") != 0 && strcmp(name, "--help") != 0 && strcmp(name, "-h") != 0;
-}
+static const mkOption mkOptionTable[] = {
+	{ "--pair", 1 }, { "--trials", 1 }, { "--rotations", 1 }, { "--margin", 1 }, { "--seed", 1 },
+	{ "--out", 1 }, { "--shard", 1 }, { "--force", 0 },
+};
 
 /* Parse argv into o. Returns 0 to run, 1 when --help was printed, 2 on a
  * usage error (message printed). */
@@ -107,30 +107,17 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 	mkArgs_Begin(&args, argc, argv);
 	const char *name, *value;
 	int choice = 0, bad = 0;
-	while (!bad && (name = mkArgs_Next(&args, mkTakesValue, &value)) != NULL) {
-		if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0) {
+	mkArgsStep step;
+	while (!bad && (step = mkArgs_Step(&args, mkOptionTable, MK_COUNT(mkOptionTable), &name, &value,
+			msg, sizeof msg)) != MK_ARGS_END) {
+		if (step == MK_ARGS_HELP) {
 			mkUsage(stdout);
 			return 1;
 		}
-		if (!mkTakesValue(name)) {
-			if (value) {
-				snprintf(msg, sizeof msg, "%s: takes no value", name);
-				bad = 1;
-			} else {
-				o->force = 1;
-			}
-			continue;
-		}
-		int known = strcmp(name, "--trials") == 0 || strcmp(name, "--seed") == 0
-			|| strcmp(name, "--pair") == 0 || strcmp(name, "--rotations") == 0
-			|| strcmp(name, "--margin") == 0
-			|| strcmp(name, "--out") == 0 || strcmp(name, "--shard") == 0;
-		if (!known) {
-			snprintf(msg, sizeof msg, "%s: unknown option (see --help)", name);
+		if (step == MK_ARGS_ERROR) {
 			bad = 1;
-		} else if (!value) {
-			snprintf(msg, sizeof msg, "%s: missing value (see --help)", name);
-			bad = 1;
+		} else if (strcmp(name, "--force") == 0) {
+			o->force = 1;
 		} else if (strcmp(name, "--trials") == 0) {
 			bad = mkArg_Long(name, value, 1, 10000000, &o->trials, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--seed") == 0) {
@@ -143,14 +130,7 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 			bad = mkArg_Choice(name, value, mkRotNames, 2, &choice, msg, sizeof msg) != 0;
 			o->rotations = (mkRotDraw)choice;
 		} else if (strcmp(name, "--margin") == 0) {
-			char *end = NULL;
-			double v = strtod(value, &end);
-			if (end == value || *end != '\0' || !(v >= 0.0 && v <= 1.0)) {
-				snprintf(msg, sizeof msg, "%s: expected a number in [0, 1], got '%s'", name, value);
-				bad = 1;
-			} else {
-				o->margin = v;
-			}
+			bad = mkArg_Double(name, value, 0.0, 1.0, "a number", &o->margin, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--out") == 0) {
 			bad = mkArg_Path(name, value, &o->out, msg, sizeof msg) != 0;
 			o->out_given = 1;
@@ -312,15 +292,9 @@ int main(int argc, char **argv)
 	if (parsed != 0)
 		return 2;
 
+	if (mkPath_PrepareOutput("collision", o.out, o.force) != 0)
+		return 1;
 	char msg[1024];
-	if (!o.force && mkPath_Exists(o.out)) {
-		fprintf(stderr, "collision: %s exists; pass --force to replace it\n", o.out);
-		return 1;
-	}
-	if (mkPath_MakeParents(o.out, msg, sizeof msg) != 0) {
-		fprintf(stderr, "collision: %s\n", msg);
-		return 1;
-	}
 
 	mkMeta meta;
 	mkMeta_Init(&meta, "collision", MK_SCHEMA_VERSION, argc, argv);
@@ -373,16 +347,5 @@ int main(int argc, char **argv)
 	}
 	mkProgress_End(&prog);
 
-	if (failed) {
-		mkCsv_Discard(&csv);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	if (mkCsv_Commit(&csv, &meta, msg, sizeof msg) != 0) {
-		fprintf(stderr, "collision: %s\n", msg);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	mkMeta_Free(&meta);
-	return 0;
+	return mkCsv_Finish(&csv, &meta, failed, "collision");
 }

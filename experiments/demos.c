@@ -911,15 +911,9 @@ int main(int argc, char **argv)
 	if (parsed != 0)
 		return 2;
 
+	if (mkPath_PrepareOutput("demos", o.out, o.force) != 0)
+		return 1;
 	char msg[1024];
-	if (!o.force && mkPath_Exists(o.out)) {
-		fprintf(stderr, "demos: %s exists; pass --force to replace it\n", o.out);
-		return 1;
-	}
-	if (mkPath_MakeParents(o.out, msg, sizeof msg) != 0) {
-		fprintf(stderr, "demos: %s\n", msg);
-		return 1;
-	}
 
 	/* The chosen figures, in order, are the run's units. */
 	int units[4], nunits = 0;
@@ -971,11 +965,6 @@ int main(int argc, char **argv)
 		default: mkFigure4(&run); break;
 		}
 	}
-	if (run.failed) {
-		mkCsv_Discard(&run.index);
-		mkMeta_Free(&meta);
-		return 1;
-	}
 	/* The index's own sidecar describes the whole run. */
 	mkMeta_Set(&meta, "figure", "index");
 	mkMeta_Set(&meta, "panel", "all");
@@ -983,11 +972,5 @@ int main(int argc, char **argv)
 	mkMeta_Set(&meta, "body1", "see rows");
 	mkMeta_Set(&meta, "body2", "see rows");
 	mkMeta_Set(&meta, "note", "");
-	if (mkCsv_Commit(&run.index, &meta, msg, sizeof msg) != 0) {
-		fprintf(stderr, "demos: %s\n", msg);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	mkMeta_Free(&meta);
-	return 0;
+	return mkCsv_Finish(&run.index, &meta, run.failed, "demos");
 }

@@ -161,21 +161,6 @@ static const mkOption mkOptionTable[] = {
 	{ "--shard", 1 }, { "--force", 0 },
 };
 
-/* A non-negative number of seconds in [lo, hi]. */
-static int mkArgSeconds(const char *flag, const char *text, double lo, double hi, double *out,
-	char *msg, size_t msglen)
-{
-	char *end = NULL;
-	errno = 0;
-	double v = strtod(text, &end);
-	if (!text[0] || *end != '\0' || errno == ERANGE || !(v >= lo && v <= hi)) {
-		snprintf(msg, msglen, "%s: expected a number of seconds in [%g, %g], got '%s'", flag, lo, hi, text);
-		return -1;
-	}
-	*out = v;
-	return 0;
-}
-
 /* Parse "2d=LIST" or "3d=LIST" into o->levels. */
 static int mkParseLevels(const char *text, mkOptions *o, char *msg, size_t msglen)
 {
@@ -339,7 +324,8 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 			bad = mkArg_Choice(name, value, mkRotNames, 2, &choice, msg, sizeof msg) != 0;
 			o->rotations = (mkRotDraw)choice;
 		} else if (strcmp(name, "--budget") == 0) {
-			bad = mkArgSeconds(name, value, 0.0, MK_BUDGET_MAX, &o->budget, msg, sizeof msg) != 0;
+			bad = mkArg_Double(name, value, 0.0, MK_BUDGET_MAX, "a number of seconds", &o->budget, msg,
+				sizeof msg) != 0;
 		} else if (strcmp(name, "--min-trials") == 0) {
 			bad = mkArg_Long(name, value, 1, MK_TRIALS_MAX, &o->min_trials, msg, sizeof msg) != 0;
 		} else if (strcmp(name, "--out") == 0) {
@@ -697,15 +683,9 @@ int main(int argc, char **argv)
 	if (parsed != 0)
 		return 2;
 
+	if (mkPath_PrepareOutput("timing", o.out, o.force) != 0)
+		return 1;
 	char msg[1024];
-	if (!o.force && mkPath_Exists(o.out)) {
-		fprintf(stderr, "timing: %s exists; pass --force to replace it\n", o.out);
-		return 1;
-	}
-	if (mkPath_MakeParents(o.out, msg, sizeof msg) != 0) {
-		fprintf(stderr, "timing: %s\n", msg);
-		return 1;
-	}
 
 	long total = mkCells(&o, NULL);
 	mkCell *cells = malloc((size_t)(total > 0 ? total : 1) * sizeof *cells);
@@ -841,16 +821,5 @@ int main(int argc, char **argv)
 	free(cells);
 	free(st);
 
-	if (failed) {
-		mkCsv_Discard(&csv);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	if (mkCsv_Commit(&csv, &meta, msg, sizeof msg) != 0) {
-		fprintf(stderr, "timing: %s\n", msg);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	mkMeta_Free(&meta);
-	return 0;
+	return mkCsv_Finish(&csv, &meta, failed, "timing");
 }

@@ -459,15 +459,9 @@ int main(int argc, char **argv)
 	if (parsed != 0)
 		return 2;
 
+	if (mkPath_PrepareOutput("validation", o.out, o.force) != 0)
+		return 1;
 	char msg[1024];
-	if (!o.force && mkPath_Exists(o.out)) {
-		fprintf(stderr, "validation: %s exists; pass --force to replace it\n", o.out);
-		return 1;
-	}
-	if (mkPath_MakeParents(o.out, msg, sizeof msg) != 0) {
-		fprintf(stderr, "validation: %s\n", msg);
-		return 1;
-	}
 
 	mkMeta meta;
 	mkMeta_Init(&meta, "validation", MK_SCHEMA_VERSION, argc, argv);
@@ -538,16 +532,5 @@ int main(int argc, char **argv)
 	mkProgress_End(&prog);
 	mkBuffers_Free(&buf);
 
-	if (failed) {
-		mkCsv_Discard(&csv);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	if (mkCsv_Commit(&csv, &meta, msg, sizeof msg) != 0) {
-		fprintf(stderr, "validation: %s\n", msg);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	mkMeta_Free(&meta);
-	return 0;
+	return mkCsv_Finish(&csv, &meta, failed, "validation");
 }

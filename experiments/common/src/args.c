@@ -25,6 +25,22 @@ int mkArg_Long(const char *flag, const char *text, long lo, long hi, long *out,
 	return 0;
 }
 
+int mkArg_Double(const char *flag, const char *text, double lo, double hi, const char *what,
+	double *out, char *msg, size_t msglen)
+{
+	char *end = NULL;
+	errno = 0;
+	double v = text ? strtod(text, &end) : 0.0;
+	if (!text || !text[0] || *end != '\0' || errno == ERANGE || !(v >= lo && v <= hi)) {
+		if (msg && msglen > 0)
+			snprintf(msg, msglen, "%s: expected %s in [%g, %g], got '%s'", flag, what, lo, hi,
+				text ? text : "");
+		return -1;
+	}
+	*out = v;
+	return 0;
+}
+
 int mkArg_U64(const char *flag, const char *text, uint64_t *out, char *msg, size_t msglen)
 {
 	char *end = NULL;

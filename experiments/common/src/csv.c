@@ -131,3 +131,19 @@ void mkCsv_Discard(mkCsv *csv)
 {
 	mkOutFile_Discard(&csv->file);
 }
+
+int mkCsv_Finish(mkCsv *csv, struct mkMeta *meta, int failed, const char *prog)
+{
+	int status = 0;
+	char msg[1024];
+	if (failed) {
+		mkCsv_Discard(csv);
+		status = 1;
+	} else if (mkCsv_Commit(csv, meta, msg, sizeof msg) != 0) {
+		fprintf(stderr, "%s: %s\n", prog, msg);
+		status = 1;
+	}
+	if (meta)
+		mkMeta_Free(meta);
+	return status;
+}

@@ -308,3 +308,17 @@ int mkPath_Exists(const char *path)
 	struct stat st;
 	return stat(path, &st) == 0;
 }
+
+int mkPath_PrepareOutput(const char *prog, const char *path, int force)
+{
+	if (!force && mkPath_Exists(path)) {
+		fprintf(stderr, "%s: %s exists; pass --force to replace it\n", prog, path);
+		return 1;
+	}
+	char msg[1024];
+	if (mkPath_MakeParents(path, msg, sizeof msg) != 0) {
+		fprintf(stderr, "%s: %s\n", prog, msg);
+		return 1;
+	}
+	return 0;
+}

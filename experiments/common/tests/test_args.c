@@ -24,6 +24,18 @@ int main(void)
 	ENSURE(mkArg_Long("--trials", NULL, 1, 1000, &v, msg, sizeof msg) != 0);
 	ENSURE(mkArg_Long("--trials", "99999999999999999999999", 1, 1000, &v, msg, sizeof msg) != 0);
 
+	double d = 0.0;
+	ENSURE(mkArg_Double("--margin", "0.25", 0.0, 1.0, "a number", &d, msg, sizeof msg) == 0 && d == 0.25);
+	ENSURE(mkArg_Double("--margin", "1", 0.0, 1.0, "a number", &d, msg, sizeof msg) == 0 && d == 1.0);
+	ENSURE(mkArg_Double("--margin", "1.5", 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0 && d == 1.0);
+	ENSURE(strcmp(msg, "--margin: expected a number in [0, 1], got '1.5'") == 0);
+	ENSURE(mkArg_Double("--budget", "2s", 0.0, 10.0, "a number of seconds", &d, msg, sizeof msg) != 0);
+	ENSURE(strcmp(msg, "--budget: expected a number of seconds in [0, 10], got '2s'") == 0);
+	ENSURE(mkArg_Double("--margin", "nan", 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0);
+	ENSURE(mkArg_Double("--margin", "", 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0);
+	ENSURE(mkArg_Double("--margin", NULL, 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0);
+	ENSURE(mkArg_Double("--margin", "1e999", 0.0, 1e300, "a number", &d, msg, sizeof msg) != 0);
+
 	uint64_t u = 0;
 	ENSURE(mkArg_U64("--seed", "18446744073709551615", &u, msg, sizeof msg) == 0 && u == UINT64_MAX);
 	ENSURE(mkArg_U64("--seed", "0x10", &u, msg, sizeof msg) == 0 && u == 16);

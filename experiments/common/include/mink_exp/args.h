@@ -12,6 +12,11 @@
 
 int mkArg_Long(const char *flag, const char *text, long lo, long hi, long *out,
 	char *msg, size_t msglen);
+/* A finite real number in [lo, hi]; `what` names it in the message
+ * ("a number", "a number of seconds"). */
+int mkArg_Double(const char *flag, const char *text, double lo, double hi, const char *what,
+	double *out, char *msg, size_t msglen);
+
 /* Any unsigned 64-bit integer, decimal or 0x hexadecimal. */
 int mkArg_U64(const char *flag, const char *text, uint64_t *out, char *msg, size_t msglen);
 /* One of `count` names; *out is its index. */

@@ -54,4 +54,10 @@ int mkCsv_Commit(mkCsv *csv, struct mkMeta *meta, char *msg, size_t msglen);
 /* Drop everything written; the final name is untouched. */
 void mkCsv_Discard(mkCsv *csv);
 
+/* The end of a driver's run: discard when `failed`, else commit with the
+ * sidecar (printing "<prog>: <why>" on a failed commit); frees meta either
+ * way. Returns the driver's exit status: 0 when the result was written,
+ * 1 otherwise. */
+int mkCsv_Finish(mkCsv *csv, struct mkMeta *meta, int failed, const char *prog);
+
 #endif

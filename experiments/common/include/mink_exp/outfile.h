@@ -59,4 +59,9 @@ int mkPath_MakeParents(const char *path, char *msg, size_t msglen);
 /* 1 when a file (of any kind) exists at path. */
 int mkPath_Exists(const char *path);
 
+/* A driver's check of its --out before any work: refuses an existing file
+ * unless `force`, then creates the missing parent directories. Returns 0,
+ * or 1 after printing "<prog>: <why>" on stderr (the driver's exit status). */
+int mkPath_PrepareOutput(const char *prog, const char *path, int force);
+
 #endif
