@@ -19,7 +19,11 @@ int mkCli_Int(const char *opt, const char *s, long lo, long hi, long *out)
 	char *end;
 	errno = 0;
 	long v = strtol(s, &end, 10);
-	if (end == s || *end || errno == ERANGE || v < lo || v > hi) {
+	if (end == s || *end) {
+		fprintf(stderr, "mink: %s = '%s' is not an integer: must be an integer in [%ld, %ld]\n", opt, s, lo, hi);
+		return -1;
+	}
+	if (errno == ERANGE || v < lo || v > hi) {
 		fprintf(stderr, "mink: %s = '%s' is out of range: must be an integer in [%ld, %ld]\n", opt, s, lo, hi);
 		return -1;
 	}
