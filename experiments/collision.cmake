@@ -35,9 +35,16 @@ else()
     set_tests_properties(collision.help PROPERTIES PASS_REGULAR_EXPRESSION "--pair ellipsoids[|]superquadrics[|]both")
     # A tiny run writes the documented columns, the right algorithms per
     # pair, and the sidecar keys tables.c reads.
+    # With gnuplot, the figure's script draws the tiny run too.
+    find_program(MKCOLLISION_GNUPLOT gnuplot)
+    if(NOT MKCOLLISION_GNUPLOT)
+      message(STATUS "gnuplot not found: collision.tiny does not draw plots/collision.gp")
+      set(MKCOLLISION_GNUPLOT "")
+    endif()
     add_test(NAME collision.tiny
       COMMAND ${CMAKE_COMMAND} -DMODE=tiny -DEXE=$<TARGET_FILE:collision>
-        -DWORK=${CMAKE_CURRENT_BINARY_DIR}/collision_tiny -P ${mk_collision_script})
+        -DWORK=${CMAKE_CURRENT_BINARY_DIR}/collision_tiny "-DGNUPLOT=${MKCOLLISION_GNUPLOT}"
+        -DPLOT=${PROJECT_SOURCE_DIR}/plots/collision.gp -P ${mk_collision_script})
     # Shards concatenate to the unsplit run, the timing column aside.
     add_test(NAME collision.shards
       COMMAND ${CMAKE_COMMAND} -DMODE=shards -DEXE=$<TARGET_FILE:collision>
@@ -99,6 +106,21 @@ if(MODE STREQUAL "tiny")
   file(STRINGS ${WORK}/c.csv.meta ipopt REGEX "^ipopt_version: [0-9]")
   if(NOT rot OR NOT ipopt)
     message(FATAL_ERROR "sidecar lacks rotation_draw or ipopt_version")
+  endif()
+  # The figure: the script reads the rows alone and says how many trials
+  # per pair kind it found.
+  if(GNUPLOT)
+    execute_process(COMMAND ${GNUPLOT} -e "results='${WORK}/c.csv'; outdir='${WORK}'" ${PLOT}
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/collision.png OR NOT EXISTS ${WORK}/collision.pdf)
+      message(FATAL_ERROR "plots/collision.gp failed (${rc}): ${err}")
+    endif()
+    if(NOT "${out}${err}" MATCHES "2 trials per pair kind")
+      message(FATAL_ERROR "plots/collision.gp did not count 2 trials: ${out}${err}")
+    endif()
+    if("${err}" MATCHES "[Ww]arning")
+      message(FATAL_ERROR "plots/collision.gp warned: ${err}")
+    endif()
   endif()
 elseif(MODE STREQUAL "shards")
   set(args --trials 3 --seed 11)
