@@ -99,20 +99,6 @@ static const char *mkArgs_Take(mkArgs *a)
 	return eq;
 }
 
-const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const char **value)
-{
-	*value = NULL;
-	if (a->i >= a->argc)
-		return NULL;
-	const char *eq = mkArgs_Take(a);
-	if (eq) {
-		*value = eq + 1;
-	} else if (takes_value(a->name) && a->i < a->argc) {
-		*value = a->argv[a->i++];
-	}
-	return a->name;
-}
-
 int mkArg_Impl(const char *flag, const char *text, int *out, char *msg, size_t msglen)
 {
 	static const char *const names[] = { "auto", "scalar", "avx2", "avx512" };

@@ -6,11 +6,6 @@
 
 #include <string.h>
 
-static int mkTakesValue(const char *name)
-{
-	return strcmp(name, "--force") != 0;
-}
-
 int main(void)
 {
 	char msg[256];
@@ -49,20 +44,8 @@ int main(void)
 	ENSURE(mkArg_Choice("--dim", "4", dims, 3, &c, msg, sizeof msg) != 0);
 	ENSURE(strcmp(msg, "--dim: expected one of 2|3|both, got '4'") == 0);
 
-	char *argv[] = { "prog", "--n", "5", "--seed=9", "--force", "--out" };
 	mkArgs a;
-	mkArgs_Begin(&a, 6, argv);
 	const char *name, *value;
-	name = mkArgs_Next(&a, mkTakesValue, &value);
-	ENSURE(name && strcmp(name, "--n") == 0 && value && strcmp(value, "5") == 0);
-	name = mkArgs_Next(&a, mkTakesValue, &value);
-	ENSURE(name && strcmp(name, "--seed") == 0 && value && strcmp(value, "9") == 0);
-	name = mkArgs_Next(&a, mkTakesValue, &value);
-	ENSURE(name && strcmp(name, "--force") == 0 && value == NULL);
-	name = mkArgs_Next(&a, mkTakesValue, &value);
-	ENSURE(name && strcmp(name, "--out") == 0 && value == NULL); /* value missing */
-	ENSURE(mkArgs_Next(&a, mkTakesValue, &value) == NULL);
-
 	/* mkArgs_Step: the table decides which options take values. */
 	static const mkOption opts[] = { { "--n", 1 }, { "--seed", 1 }, { "--force", 0 } };
 	char *argv2[] = { "prog", "--n", "5", "--seed=9", "--force", "-h", "--force=1", "--bogus", "--n" };

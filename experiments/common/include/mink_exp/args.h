@@ -29,11 +29,8 @@ int mkArg_Impl(const char *flag, const char *text, int *out, char *msg, size_t m
 /* A non-empty file path; *out points into text. */
 int mkArg_Path(const char *flag, const char *text, const char **out, char *msg, size_t msglen);
 
-/* Walk argv in the usual long-option forms "--name value" and
- * "--name=value". mkArgs_Next returns the flag name (with its dashes) and
- * sets *value to the attached or following value when the flag takes one
- * (takes_value(name) != 0); it returns NULL at the end. A value that is
- * missing is reported as *value == NULL. */
+/* The state of a walk over argv in the usual long-option forms
+ * "--name value" and "--name=value" (see mkArgs_Step). */
 typedef struct mkArgs {
 	int argc;
 	char **argv;
@@ -42,7 +39,6 @@ typedef struct mkArgs {
 } mkArgs;
 
 void mkArgs_Begin(mkArgs *a, int argc, char **argv);
-const char *mkArgs_Next(mkArgs *a, int (*takes_value)(const char *name), const char **value);
 
 /* One option a command accepts: its name with dashes, and whether it takes a
  * value ("--trials" 1) or is a flag ("--force" 0). */
