@@ -33,7 +33,6 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #define RND MPFR_RNDN
 enum { TRIALS = 100, N = 1000 };
