@@ -50,7 +50,6 @@
 #include <time.h>
 
 #define MK_SCHEMA_VERSION 1
-#define MK_PI 3.14159265358979323846
 #define MK_MAX_LEVELS 16
 #define MK_OBSTACLES_MAX 10000000L   /* fits the 32 bits of the stream map */
 #define MK_TRIALS_MAX 1000000L       /* fits the 24 bits of the stream map */
@@ -372,7 +371,8 @@ static int mkDrawObstacle3(mkRng *r, long *clamped, mkBody3 *out)
 	for (int i = 0; i < 4; ++i)
 		q[i] = MK_PI * mkRng_Unit(r);
 	int ok = 0;
-	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+	ok = mkMat3_IsFinite(R);
 	*out = mkBody3_Make(s, R, t);
 	return ok;
 }

@@ -34,7 +34,6 @@
 #include <time.h>
 
 #define MK_SCHEMA_VERSION 1
-#define MK_PI 3.14159265358979323846
 #define MK_GJK_GRID 10
 #define MK_REFEREE_GRID 24
 
@@ -178,7 +177,8 @@ static int mkDrawBody(mkRng *r, double amax, double clo, double chi, int ellipso
 		q[3] = r2 * sin(2.0 * MK_PI * u3);
 	}
 	int ok = 0;
-	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+	ok = mkMat3_IsFinite(R);
 	if (!ok)
 		return 0;
 	*body = mkBody3_Make(s, R, t);

@@ -44,7 +44,6 @@
 #include <string.h>
 
 #define MK_SCHEMA_VERSION 1
-#define MK_PI 3.14159265358979323846
 
 /* ---- the choices where the paper is silent ------------------------------- */
 
@@ -723,7 +722,8 @@ static int mkSpec3(char *buf, size_t len, const char *kind, const double s[3], d
 	char pose[512];
 	if (S) {
 		int ok = 0;
-		mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+		mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+		ok = mkMat3_IsFinite(R);
 		mkMat3 Sm;
 		for (int i = 0; i < 9; ++i)
 			Sm.m[i / 3][i % 3] = S[i];

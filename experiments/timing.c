@@ -67,7 +67,6 @@
 #include <time.h>
 
 #define MK_SCHEMA_VERSION 1
-#define MK_PI 3.14159265358979323846
 #define MK_LEVELS_MAX 1000
 #define MK_METHODS_MAX 32
 #define MK_TRIALS_MAX 1000000L
@@ -400,7 +399,8 @@ static mkBody3 mkDrawBody3(mkRng *r, double amax, int super, mkRotDraw rot, int 
 		q[3] = r2 * sin(2.0 * MK_PI * u3);
 	}
 	int ok = 0;
-	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+	ok = mkMat3_IsFinite(R);
 	if (!ok)
 		R = mkMat3_Identity(); /* all four entries zero: probability 2^-212 */
 	mkVec3 t = { 0.0, 0.0, 0.0 };

@@ -38,7 +38,6 @@
 #include <string.h>
 
 #define MK_SCHEMA_VERSION 2 /* 2: e_support_mean, e_support_max */
-#define MK_PI 3.14159265358979323846
 #define MK_MAX_REDRAWS 1000
 
 typedef enum mkRotDraw { MK_ROT_PAPER = 0, MK_ROT_UNIFORM = 1 } mkRotDraw;
@@ -223,7 +222,8 @@ static int mkDrawBody3(mkRng *r, double amax, mkRotDraw rot, mkBody3 *body, mkBo
 	}
 	double norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
 	int ok = 0;
-	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+	ok = mkMat3_IsFinite(R);
 	if (!ok || !(norm > 0.0))
 		return 0;
 	rec->qw = q[0] / norm;

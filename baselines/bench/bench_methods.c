@@ -61,7 +61,7 @@ static mkBody3 draw3(Rng *r, int super, double amax)
 	double e1 = super ? fmin(uni(r, 0.2, 2.0), MK_EPS_MAX) : 1.0;
 	double e2 = super ? fmin(uni(r, 0.2, 2.0), MK_EPS_MAX) : 1.0;
 	mkShape3 s = {uni(r, 1, amax), uni(r, 1, amax), uni(r, 1, amax), e1, e2};
-	mkMat3 M = mkMat3_FromQuat(gauss(r), gauss(r), gauss(r), gauss(r), NULL);
+	mkMat3 M = mkMat3_FromQuat(gauss(r), gauss(r), gauss(r), gauss(r));
 	mkVec3 t = {uni(r, -5, 5), uni(r, -5, 5), uni(r, -5, 5)};
 	return mkBody3_Make(s, M, t);
 }

@@ -20,37 +20,13 @@
 #include <stddef.h>
 #include <string.h>
 
-#define MK_PI 3.14159265358979323846
 #define MK_LM_FD_STEP 1e-6
 /* Relative tolerances of lmder on the residual and the step: a few ulps,
  * so that LM stops on the residual criterion or the iteration limit, not
  * earlier. */
 #define MK_LM_TOL 1e-15
 
-static mkVec3 mkV(double x, double y, double z)
-{
-	mkVec3 v = { x, y, z };
-	return v;
-}
-
-static mkVec3 mkSub(mkVec3 a, mkVec3 b) { return mkV(a.x - b.x, a.y - b.y, a.z - b.z); }
-static mkVec3 mkAdd(mkVec3 a, mkVec3 b) { return mkV(a.x + b.x, a.y + b.y, a.z + b.z); }
-static mkVec3 mkScale(mkVec3 a, double s) { return mkV(a.x * s, a.y * s, a.z * s); }
-static double mkDot(mkVec3 a, mkVec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static double mkNorm(mkVec3 a) { return sqrt(mkDot(a, a)); }
-
-static mkVec3 mkCross(mkVec3 a, mkVec3 b)
-{
-	return mkV(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-
-static mkVec3 mkUnit(mkVec3 a)
-{
-	double n = mkNorm(a);
-	return n > 0.0 ? mkScale(a, 1.0 / n) : a;
-}
-
-static mkVec3 mkNaN3(void) { return mkV(NAN, NAN, NAN); }
+static mkVec3 mkNaN3(void) { return mkVec3_Make(NAN, NAN, NAN); }
 
 static mkCollide mkCollide_Empty(void)
 {
@@ -66,7 +42,7 @@ static mkCollide mkCollide_Empty(void)
 mkVec3 mkCollide_AnglesToUnit(double eta, double omega)
 {
 	double ce = cos(eta);
-	return mkV(ce * cos(omega), ce * sin(omega), sin(eta));
+	return mkVec3_Make(ce * cos(omega), ce * sin(omega), sin(eta));
 }
 
 void mkCollide_UnitToAngles(mkVec3 v, double *eta, double *omega)
@@ -78,7 +54,7 @@ void mkCollide_UnitToAngles(mkVec3 v, double *eta, double *omega)
 /* The world unit outward normal of a placed body at its surface parameter u. */
 static mkVec3 mkBodyNormal(mkBody3 b, mkMat3 Minv, mkVec3 u)
 {
-	return mkUnit(mkMat3_MulTVec(Minv, mkShape3_PointGradient(b.shape, u)));
+	return mkVec3_Normalize(mkMat3_MulTVec(Minv, mkShape3_PointGradient(b.shape, u)));
 }
 
 /* ---- Levenberg-Marquardt through lmder ----------------------------------- */
@@ -165,8 +141,8 @@ static void mkMink_Residual(const void *ctx, const double *phi, double *f)
 	mkVec3 n;
 	mkVec3 x = mkMinkPoint(c, phi, NULL, c->normal ? &n : NULL);
 	mkVec3 r = c->normal
-		? mkCross(n, mkSub(mkAdd(c->b1.t, c->d), x))  /* n x (c2 - x) */
-		: mkCross(mkSub(x, c->b1.t), c->d);            /* (x - c1) x d */
+		? mkVec3_Cross(n, mkVec3_Sub(mkVec3_Add(c->b1.t, c->d), x))  /* n x (c2 - x) */
+		: mkVec3_Cross(mkVec3_Sub(x, c->b1.t), c->d);            /* (x - c1) x d */
 	f[0] = r.x;
 	f[1] = r.y;
 	f[2] = r.z;
@@ -178,7 +154,7 @@ static mkCollide mkCollide_Mink(mkBody3 b1, mkBody3 b2, int max_iter, int normal
 	ctx.b1 = b1;
 	ctx.b2 = b2;
 	ctx.M1inv = mkMat3_Inverse(b1.M);
-	ctx.d = mkSub(b2.t, b1.t);
+	ctx.d = mkVec3_Sub(b2.t, b1.t);
 	ctx.normal = normal;
 	/* Initial guess: the angles of d seen in B1's frame. */
 	double phi[2];
@@ -191,12 +167,12 @@ static mkCollide mkCollide_Mink(mkBody3 b1, mkBody3 b2, int max_iter, int normal
 	mkVec3 c2 = b2.t;
 	out.x = x;
 	out.p1 = kiss;
-	out.p2 = mkAdd(kiss, mkSub(c2, x));  /* B2 moved so that its centre is at x touches B1 at kiss */
+	out.p2 = mkVec3_Add(kiss, mkVec3_Sub(c2, x));  /* B2 moved so that its centre is at x touches B1 at kiss */
 	if (normal) {
-		out.collide = mkDot(n, mkSub(c2, x)) <= 0.0;
+		out.collide = mkVec3_Dot(n, mkVec3_Sub(c2, x)) <= 0.0;
 	} else {
-		mkVec3 r = mkSub(x, b1.t);
-		out.collide = mkDot(r, ctx.d) > 0.0 && mkNorm(ctx.d) <= mkNorm(r);
+		mkVec3 r = mkVec3_Sub(x, b1.t);
+		out.collide = mkVec3_Dot(r, ctx.d) > 0.0 && mkVec3_Length(ctx.d) <= mkVec3_Length(r);
 	}
 	return out;
 }
@@ -232,7 +208,7 @@ static void mkCommon_Residual(const void *ctx, const double *phi, double *f)
 {
 	mkVec3 x1, x2, n1, n2;
 	mkCommon_Eval(ctx, phi, &x1, &x2, &n1, &n2);
-	mkVec3 a = mkCross(n1, n2), b = mkCross(n1, mkSub(x2, x1));
+	mkVec3 a = mkVec3_Cross(n1, n2), b = mkVec3_Cross(n1, mkVec3_Sub(x2, x1));
 	f[0] = a.x;
 	f[1] = a.y;
 	f[2] = a.z;
@@ -248,10 +224,10 @@ mkCollide mkCollide_CommonNormal(mkBody3 b1, mkBody3 b2, int max_iter)
 	ctx.b2 = b2;
 	ctx.M1inv = mkMat3_Inverse(b1.M);
 	ctx.M2inv = mkMat3_Inverse(b2.M);
-	mkVec3 d = mkSub(b2.t, b1.t);
+	mkVec3 d = mkVec3_Sub(b2.t, b1.t);
 	double phi[4];
 	mkCollide_UnitToAngles(mkMat3_MulVec(ctx.M1inv, d), &phi[0], &phi[1]);
-	mkCollide_UnitToAngles(mkMat3_MulVec(ctx.M2inv, mkScale(d, -1.0)), &phi[2], &phi[3]);
+	mkCollide_UnitToAngles(mkMat3_MulVec(ctx.M2inv, mkVec3_Scale(d, -1.0)), &phi[2], &phi[3]);
 	mkLm lm = { mkCommon_Residual, &ctx, 6, 4, 0, max_iter };
 	mkCollide out = mkCollide_Empty();
 	out.status = mkLm_Solve(&lm, phi, &out.residual, &out.iterations);
@@ -261,7 +237,7 @@ mkCollide mkCollide_CommonNormal(mkBody3 b1, mkBody3 b2, int max_iter)
 	out.p2 = x2;
 	/* As the reference code decides: separated when B2's point lies on the
 	 * outer side of B1's tangent plane at B1's point. */
-	out.collide = !(mkDot(n1, mkSub(x2, x1)) > 0.0);
+	out.collide = !(mkVec3_Dot(n1, mkVec3_Sub(x2, x1)) > 0.0);
 	return out;
 }
 
@@ -285,9 +261,9 @@ static double mkScaledImplicit(mkBody3 b, mkVec3 x, mkVec3 *grad)
 	double e = b.shape.eps1;
 	if (grad) {
 		if (psi > 0.0)
-			*grad = mkScale(mkBody3_Gradient(b, x), e * pow(psi, e - 1.0));
+			*grad = mkVec3_Scale(mkBody3_Gradient(b, x), e * pow(psi, e - 1.0));
 		else
-			*grad = mkV(0.0, 0.0, 0.0);
+			*grad = mkVec3_Make(0.0, 0.0, 0.0);
 	}
 	return pow(psi, e);
 }
@@ -317,7 +293,7 @@ static Bool mkIp_G(Index n, Number *x, Bool new_x, Index m, Number *g, UserDataP
 	(void)n; (void)new_x; (void)m;
 	mkImplicitCtx *c = user;
 	for (int k = 0; k < 2; ++k)
-		g[k] = mkScaledImplicit(c->b[k], mkV(x[3 * k], x[3 * k + 1], x[3 * k + 2]), NULL);
+		g[k] = mkScaledImplicit(c->b[k], mkVec3_Make(x[3 * k], x[3 * k + 1], x[3 * k + 2]), NULL);
 	return TRUE;
 }
 
@@ -335,7 +311,7 @@ static Bool mkIp_JacG(Index n, Number *x, Bool new_x, Index m, Index nele, Index
 	}
 	for (int k = 0; k < 2; ++k) {
 		mkVec3 gr;
-		mkScaledImplicit(c->b[k], mkV(x[3 * k], x[3 * k + 1], x[3 * k + 2]), &gr);
+		mkScaledImplicit(c->b[k], mkVec3_Make(x[3 * k], x[3 * k + 1], x[3 * k + 2]), &gr);
 		values[3 * k] = gr.x;
 		values[3 * k + 1] = gr.y;
 		values[3 * k + 2] = gr.z;
@@ -389,19 +365,19 @@ mkCollide mkCollide_Implicit(mkBody3 b1, mkBody3 b2, double tol)
 	/* Start halfway between each centre and its boundary point in the
 	 * direction of the other body: strictly inside, away from the centre
 	 * where the constraint's gradient vanishes. */
-	mkVec3 d = mkSub(b2.t, b1.t);
-	mkVec3 k1 = mkBody3_Point(b1, mkUnit(mkMat3_MulVec(mkMat3_Inverse(b1.M), d)));
-	mkVec3 k2 = mkBody3_Point(b2, mkUnit(mkMat3_MulVec(mkMat3_Inverse(b2.M), mkScale(d, -1.0))));
-	mkVec3 s1 = mkScale(mkAdd(b1.t, k1), 0.5), s2 = mkScale(mkAdd(b2.t, k2), 0.5);
+	mkVec3 d = mkVec3_Sub(b2.t, b1.t);
+	mkVec3 k1 = mkBody3_Point(b1, mkVec3_Normalize(mkMat3_MulVec(mkMat3_Inverse(b1.M), d)));
+	mkVec3 k2 = mkBody3_Point(b2, mkVec3_Normalize(mkMat3_MulVec(mkMat3_Inverse(b2.M), mkVec3_Scale(d, -1.0))));
+	mkVec3 s1 = mkVec3_Scale(mkVec3_Add(b1.t, k1), 0.5), s2 = mkVec3_Scale(mkVec3_Add(b2.t, k2), 0.5);
 	double x[6] = { s1.x, s1.y, s1.z, s2.x, s2.y, s2.z }, g[2], obj = NAN;
 	enum ApplicationReturnStatus st = IpoptSolve(p, x, g, &obj, NULL, NULL, NULL, &ctx);
 	FreeIpoptProblem(p);
 	out.status = (int)st;
 	out.iterations = ctx.last_iter;
 	out.residual = fmax(ctx.last_pr, ctx.last_du);
-	out.p1 = mkV(x[0], x[1], x[2]);
-	out.p2 = mkV(x[3], x[4], x[5]);
-	out.collide = mkNorm(mkSub(out.p1, out.p2)) <= MK_COLLIDE_IMPLICIT_DIST_TOL;
+	out.p1 = mkVec3_Make(x[0], x[1], x[2]);
+	out.p2 = mkVec3_Make(x[3], x[4], x[5]);
+	out.collide = mkVec3_Length(mkVec3_Sub(out.p1, out.p2)) <= MK_COLLIDE_IMPLICIT_DIST_TOL;
 	return out;
 }
 
@@ -416,7 +392,7 @@ mkResult mkCollide_GridVertices(mkBody3 b, int n, double *ux, double *uy, double
 	if (rc != MK_OK)
 		return rc;
 	for (int i = 0; i < n * n; ++i) {
-		mkVec3 p = mkBody3_Point(b, mkV(ux[i], uy[i], uz[i]));
+		mkVec3 p = mkBody3_Point(b, mkVec3_Make(ux[i], uy[i], uz[i]));
 		x[i] = p.x;
 		y[i] = p.y;
 		z[i] = p.z;
@@ -459,7 +435,7 @@ mkCollide mkCollide_GJK(mkVertices3 v1, mkVertices3 v2, int max_iter)
 
 static double mkRefG(mkBody3 b1, mkBody3 b2, mkVec3 n)
 {
-	return mkBody3_SupportValue(b1, n) + mkBody3_SupportValue(b2, mkScale(n, -1.0));
+	return mkBody3_SupportValue(b1, n) + mkBody3_SupportValue(b2, mkVec3_Scale(n, -1.0));
 }
 
 /* Pattern search on the sphere around n: steps in the tangent plane, the
@@ -472,13 +448,13 @@ static double mkRefSearch(mkBody3 b1, mkBody3 b2, mkVec3 *n, double step)
 	double best = mkRefG(b1, b2, *n), init = step;
 	int evals = 1;
 	while (step > 1e-11 && evals < MK_REF_MAX_EVAL) {
-		mkVec3 a = fabs(n->x) < 0.6 ? mkV(1, 0, 0) : mkV(0, 1, 0);
-		mkVec3 t1 = mkUnit(mkCross(*n, a)), t2 = mkCross(*n, t1);
+		mkVec3 a = fabs(n->x) < 0.6 ? mkVec3_Make(1, 0, 0) : mkVec3_Make(0, 1, 0);
+		mkVec3 t1 = mkVec3_Normalize(mkVec3_Cross(*n, a)), t2 = mkVec3_Cross(*n, t1);
 		int moved = 0;
 		for (int k = 0; k < 4 && !moved; ++k) {
 			mkVec3 t = k < 2 ? t1 : t2;
 			double s = (k % 2 == 0) ? step : -step;
-			mkVec3 c = mkUnit(mkAdd(*n, mkScale(t, s)));
+			mkVec3 c = mkVec3_Normalize(mkVec3_Add(*n, mkVec3_Scale(t, s)));
 			double v = mkRefG(b1, b2, c);
 			evals += 1;
 			if (v < best - 1e-14 * (1.0 + fabs(best))) {
@@ -500,7 +476,7 @@ double mkCollide_Referee(mkBody3 b1, mkBody3 b2, int grid, mkVec3 *nout)
 	mkVec3 bestn[KEEP];
 	for (int k = 0; k < KEEP; ++k) {
 		bestv[k] = INFINITY;
-		bestn[k] = mkV(0, 0, 1);
+		bestn[k] = mkVec3_Make(0, 0, 1);
 	}
 	int nw = 2 * grid;
 	for (int i = 0; i < grid; ++i) {

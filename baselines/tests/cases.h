@@ -24,7 +24,7 @@ static inline mkBody3 case_body3(double a, double b, double c, double e1, double
 	double tz)
 {
 	mkShape3 s = {a, b, c, e1, e2};
-	return mkBody3_Make(s, mkMat3_FromQuat(q[0], q[1], q[2], q[3], NULL), (mkVec3){tx, ty, tz});
+	return mkBody3_Make(s, mkMat3_FromQuat(q[0], q[1], q[2], q[3]), (mkVec3){tx, ty, tz});
 }
 
 /* Fills up to 10 cases; returns the count. */

@@ -80,8 +80,8 @@ int main(void)
 	 * Fibonacci sphere. */
 	double qa[4] = {0.8, 0.3, -0.4, 0.2}, qb[4] = {0.1, -0.7, 0.5, 0.5};
 	mkShape3 t1 = {3, 2, 1.5, 0.7, 1.3}, t2 = {1, 1.5, 2, 1.2, 0.8};
-	mkBody3 c = mkBody3_Make(t1, mkMat3_FromQuat(qa[0], qa[1], qa[2], qa[3], NULL), (mkVec3){1, 0, -1});
-	mkBody3 d = mkBody3_Make(t2, mkMat3_FromQuat(qb[0], qb[1], qb[2], qb[3], NULL), (mkVec3){-2, 1, 0});
+	mkBody3 c = mkBody3_Make(t1, mkMat3_FromQuat(qa[0], qa[1], qa[2], qa[3]), (mkVec3){1, 0, -1});
+	mkBody3 d = mkBody3_Make(t2, mkMat3_FromQuat(qb[0], qb[1], qb[2], qb[3]), (mkVec3){-2, 1, 0});
 	enum { D3 = 2000 };
 	static double ex[D3], ey[D3], ez[D3], h3[D3];
 	for (int i = 0; i < D3; ++i) {

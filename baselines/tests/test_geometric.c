@@ -102,9 +102,9 @@ int main(void)
 			t % 4 < 2 ? mk_test_uniform(&seed, 0.2, 1.9) : 1.0, t % 4 < 2 ? mk_test_uniform(&seed, 0.2, 1.9) : 1.0};
 		mkShape3 q2 = {mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1};
 		mkBody3 c = mkBody3_Make(q1, mkMat3_FromQuat(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
-			mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), NULL), (mkVec3){1, 2, 3});
+			mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)), (mkVec3){1, 2, 3});
 		mkBody3 d = mkBody3_Make(q2, mkMat3_FromQuat(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
-			mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), NULL), (mkVec3){-3, 0, 1});
+			mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)), (mkVec3){-3, 0, 1});
 		worst_random = fmax(worst_random, diff3(c, d, set, 30));
 	}
 
@@ -121,8 +121,8 @@ int main(void)
 				(mkVec2){5, 5});
 			worst_extreme = fmax(worst_extreme, diff2(a, b, (mkSet)set, 2000));
 			mkShape3 q1 = {1000, 1, 30, eps[k], eps[2 - k]}, q2 = {1, 1000, 3, 1, 1};
-			mkBody3 c = mkBody3_Make(q1, mkMat3_FromQuat(0.3, 0.5, -0.2, 0.7, NULL), (mkVec3){1e3, 0, -1e3});
-			mkBody3 d = mkBody3_Make(q2, mkMat3_FromQuat(-0.6, 0.1, 0.9, 0.2, NULL), (mkVec3){1, 1, 1});
+			mkBody3 c = mkBody3_Make(q1, mkMat3_FromQuat(0.3, 0.5, -0.2, 0.7), (mkVec3){1e3, 0, -1e3});
+			mkBody3 d = mkBody3_Make(q2, mkMat3_FromQuat(-0.6, 0.1, 0.9, 0.2), (mkVec3){1, 1, 1});
 			worst_extreme = fmax(worst_extreme, diff3(c, d, (mkSet)set, 60));
 		}
 	printf("geometric vs closed-normal, largest difference / scale: random pairs %.3g, extreme pairs %.3g\n",

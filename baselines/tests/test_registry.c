@@ -15,7 +15,7 @@ static mkBody2 superellipse(double a, double b, double eps)
 static mkBody3 superquadric(double a, double b, double c, double e1, double e2)
 {
 	mkShape3 s = {a, b, c, e1, e2};
-	return mkBody3_Make(s, mkMat3_FromQuat(0.9, 0.1, 0.2, 0.3, NULL), (mkVec3){1, 2, 3});
+	return mkBody3_Make(s, mkMat3_FromQuat(0.9, 0.1, 0.2, 0.3), (mkVec3){1, 2, 3});
 }
 
 int main(void)

@@ -159,7 +159,8 @@ static mkBody3 takeBody3(fuzzReader *r)
 		for (int i = 0; i < 4; ++i)
 			q[i] = -1.0 + 2.0 * takeUnit(r);
 		int ok = 0;
-		M = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+		M = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+		ok = mkMat3_IsFinite(M);
 		mkMat3 S = mkMat3_Identity();
 		S.m[0][1] = -10.0 + 20.0 * takeUnit(r);
 		S.m[1][2] = -10.0 + 20.0 * takeUnit(r);

@@ -28,12 +28,56 @@ mkMat2 mkMat2_Shear(double s)
 	return r;
 }
 
-mkMat3 mkMat3_FromQuat(double w, double x, double y, double z, int *ok)
+double mkVec2_Length(mkVec2 a)
+{
+	return sqrt(a.x * a.x + a.y * a.y);
+}
+
+mkVec2 mkVec2_Normalize(mkVec2 a)
+{
+	double n = mkVec2_Length(a);
+	if (!(n > 0.0) || !isfinite(n))
+		return mkVec2_Make(NAN, NAN);
+	return mkVec2_Scale(a, 1.0 / n);
+}
+
+double mkVec3_Length(mkVec3 a)
+{
+	return sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+}
+
+mkVec3 mkVec3_Normalize(mkVec3 a)
+{
+	double n = mkVec3_Length(a);
+	if (!(n > 0.0) || !isfinite(n))
+		return mkVec3_Make(NAN, NAN, NAN);
+	return mkVec3_Scale(a, 1.0 / n);
+}
+
+int mkMat2_IsFinite(mkMat2 a)
+{
+	for (int i = 0; i < 2; ++i)
+		for (int j = 0; j < 2; ++j)
+			if (!isfinite(a.m[i][j]))
+				return 0;
+	return 1;
+}
+
+int mkMat3_IsFinite(mkMat3 a)
+{
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			if (!isfinite(a.m[i][j]))
+				return 0;
+	return 1;
+}
+
+mkMat3 mkMat3_FromQuat(double w, double x, double y, double z)
 {
 	double n2 = w * w + x * x + y * y + z * z;
 	if (!(n2 > 0.0) || !isfinite(n2)) {
-		if (ok) *ok = 0;
-		return mkMat3_Identity();
+		mkMat3 bad = {{{NAN, NAN, NAN}, {NAN, NAN, NAN}, {NAN, NAN, NAN}}};
+		return bad;
 	}
 	double s = 1.0 / sqrt(n2);
 	w *= s; x *= s; y *= s; z *= s;
@@ -42,7 +86,6 @@ mkMat3 mkMat3_FromQuat(double w, double x, double y, double z, int *ok)
 		{2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
 		{2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)},
 	}};
-	if (ok) *ok = 1;
 	return r;
 }
 

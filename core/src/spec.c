@@ -207,7 +207,8 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 				if (!isfinite(q[i]) || fabs(q[i]) > 1e150)
 					return fail(MK_ERR_RANGE, msg, msglen, "%s.quat component %d = %g is out of range: must be "
 						"finite with magnitude at most 1e150", what, i + 1, q[i]);
-			b->M = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+			b->M = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+			ok = mkMat3_IsFinite(b->M);
 			if (!ok)
 				return fail(MK_ERR_RANGE, msg, msglen, "%s.quat = %g,%g,%g,%g is zero: must be a nonzero "
 					"quaternion w,x,y,z", what, q[0], q[1], q[2], q[3]);

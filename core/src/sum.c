@@ -10,9 +10,6 @@
 
 #include "kernel.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 mkSumOptions mkSumOptions_Default(void)
 {
@@ -257,7 +254,7 @@ mkResult mkSample2_Angles(int n, double *ux, double *uy)
 {
 	if (n < 1 || !ux || !uy) return MK_ERR_ARGUMENT;
 	for (int k = 0; k < n; ++k)
-		grid_sincos(-M_PI + 2.0 * M_PI * k / n, &ux[k], &uy[k]);
+		grid_sincos(-MK_PI + 2.0 * MK_PI * k / n, &ux[k], &uy[k]);
 	return MK_OK;
 }
 
@@ -266,10 +263,10 @@ mkResult mkSample3_Grid(int n, double *ux, double *uy, double *uz)
 	if (n < 2 || n > 46340 || !ux || !uy || !uz) return MK_ERR_ARGUMENT;
 	for (int i = 0; i < n; ++i) {
 		double ce, se;
-		grid_sincos(-0.5 * M_PI + M_PI * i / (n - 1), &ce, &se);
+		grid_sincos(-0.5 * MK_PI + MK_PI * i / (n - 1), &ce, &se);
 		for (int j = 0; j < n; ++j) {
 			double cw, sw;
-			grid_sincos(-M_PI + 2.0 * M_PI * j / n, &cw, &sw);
+			grid_sincos(-MK_PI + 2.0 * MK_PI * j / n, &cw, &sw);
 			ux[i * n + j] = ce * cw;
 			uy[i * n + j] = ce * sw;
 			uz[i * n + j] = se;

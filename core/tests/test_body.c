@@ -6,21 +6,18 @@
 
 #include "ensure.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static void test_area_volume(void)
 {
 	/* Circle and ellipse: pi r^2, pi a b (exact closed forms). */
 	mkShape2 c = {2.0, 2.0, 1.0}, e = {3.0, 0.5, 1.0};
-	ENSURE_NEAR(mkShape2_Area(c), M_PI * 4.0, 1e-14 * M_PI * 4.0);
-	ENSURE_NEAR(mkShape2_Area(e), M_PI * 1.5, 1e-14 * M_PI * 1.5);
+	ENSURE_NEAR(mkShape2_Area(c), MK_PI * 4.0, 1e-14 * MK_PI * 4.0);
+	ENSURE_NEAR(mkShape2_Area(e), MK_PI * 1.5, 1e-14 * MK_PI * 1.5);
 	/* |x|^4 + |y|^4 <= 1 (eps = 0.5): 4 Gamma(5/4)^2 / Gamma(3/2), with
 	 * Gamma(5/4) = 0.90640247705547707798 and Gamma(3/2) = sqrt(pi)/2 from
 	 * tables: 3.7081493546027438... */
 	mkShape2 q = {1.0, 1.0, 0.5};
-	ENSURE_NEAR(mkShape2_Area(q), 4.0 * 0.90640247705547707798 * 0.90640247705547707798 / (0.5 * sqrt(M_PI)), 1e-13);
+	ENSURE_NEAR(mkShape2_Area(q), 4.0 * 0.90640247705547707798 * 0.90640247705547707798 / (0.5 * sqrt(MK_PI)), 1e-13);
 	/* The limits: a box 4ab as eps -> 0, a diamond 2ab as eps -> 2. At
 	 * eps = 1e-6 the relative gap to the limit is O(eps) (Gamma'(1) terms). */
 	mkShape2 box = {2.0, 3.0, MK_EPS_MIN}, dia = {2.0, 3.0, MK_EPS_MAX};
@@ -30,18 +27,18 @@ static void test_area_volume(void)
 	/* Sphere, ellipsoid 4/3 pi abc; cube 8abc; octahedron 4/3 abc; elliptic
 	 * cylinder (eps1 -> 0, eps2 = 1) 2c pi a b. */
 	mkShape3 sph = {1.5, 1.5, 1.5, 1.0, 1.0}, ell = {1.0, 2.0, 3.0, 1.0, 1.0};
-	ENSURE_NEAR(mkShape3_Volume(sph), 4.0 / 3.0 * M_PI * 3.375, 1e-13 * 14.2);
-	ENSURE_NEAR(mkShape3_Volume(ell), 8.0 * M_PI, 1e-13 * 25.2);
+	ENSURE_NEAR(mkShape3_Volume(sph), 4.0 / 3.0 * MK_PI * 3.375, 1e-13 * 14.2);
+	ENSURE_NEAR(mkShape3_Volume(ell), 8.0 * MK_PI, 1e-13 * 25.2);
 	mkShape3 cube = {1.0, 2.0, 3.0, MK_EPS_MIN, MK_EPS_MIN};
 	mkShape3 oct = {1.0, 2.0, 3.0, MK_EPS_MAX, MK_EPS_MAX};
 	mkShape3 cyl = {1.0, 2.0, 3.0, MK_EPS_MIN, 1.0};
 	ENSURE_NEAR(mkShape3_Volume(cube), 48.0, 48.0 * 1e-5);
 	ENSURE_NEAR(mkShape3_Volume(oct), 8.0, 8.0 * 1e-5);
-	ENSURE_NEAR(mkShape3_Volume(cyl), 6.0 * M_PI * 2.0, 12.0 * M_PI * 1e-5);
+	ENSURE_NEAR(mkShape3_Volume(cyl), 6.0 * MK_PI * 2.0, 12.0 * MK_PI * 1e-5);
 
 	/* Placed bodies scale by |det M|. */
 	mkBody2 b = mkBody2_Make(e, mkMat2_Mul(mkMat2_Rotation(0.3), mkMat2_Shear(2.0)), (mkVec2){5, 6});
-	ENSURE_NEAR(mkBody2_Area(b), M_PI * 1.5, 1e-13);
+	ENSURE_NEAR(mkBody2_Area(b), MK_PI * 1.5, 1e-13);
 }
 
 /* Shapes over the exponent range the tests sweep. */
@@ -54,7 +51,7 @@ static void test_maps2(void)
 		mkShape2 s = {2.5, 0.75, eps_list[e]};
 		double ie = 2.0 / s.eps; /* Psi's exponent: relative errors in x grow by it */
 		for (int k = 0; k < 64; ++k) {
-			double t = -M_PI + 2.0 * M_PI * (k + 0.37) / 64;
+			double t = -MK_PI + 2.0 * MK_PI * (k + 0.37) / 64;
 			mkVec2 u = {cos(t), sin(t)};
 			mkVec2 x = mkShape2_Point(s, u);
 			/* f(u) lies on Psi = 1: each coordinate carries a few ulps, Psi
@@ -89,7 +86,7 @@ static void test_maps2(void)
 		mkVec2 n = {0.6, -0.8};
 		double h = mkShape2_SupportValue(s, n), best = -1e300;
 		for (int k = 0; k < 20000; ++k) {
-			double t = 2.0 * M_PI * k / 20000;
+			double t = 2.0 * MK_PI * k / 20000;
 			mkVec2 x = mkShape2_Point(s, (mkVec2){cos(t), sin(t)});
 			double v = n.x * x.x + n.y * x.y;
 			if (v > best) best = v;
@@ -106,7 +103,7 @@ static void test_maps3(void)
 			mkShape3 s = {2.5, 0.75, 1.5, eps_list[e], eps_list[f]};
 			double ie = 2.0 / (s.eps1 < s.eps2 ? s.eps1 : s.eps2);
 			for (int k = 0; k < 40; ++k) {
-				double eta = -0.5 * M_PI + M_PI * (k + 0.5) / 40, w = -M_PI + 2.0 * M_PI * (k * 7 % 40 + 0.3) / 40;
+				double eta = -0.5 * MK_PI + MK_PI * (k + 0.5) / 40, w = -MK_PI + 2.0 * MK_PI * (k * 7 % 40 + 0.3) / 40;
 				mkVec3 u = {cos(eta) * cos(w), cos(eta) * sin(w), sin(eta)};
 				mkVec3 x = mkShape3_Point(s, u);
 				ENSURE_NEAR(mkShape3_Implicit(s, x), 1.0, 16.0 * ie * 2.2e-16);
@@ -135,7 +132,7 @@ static void test_maps3(void)
 static void test_pole(void)
 {
 	mkShape3 s = {3.0, 2.0, 1.0, 1.5, 0.7};
-	double eta = 0.5 * M_PI - 1e-8, w = 0.4;
+	double eta = 0.5 * MK_PI - 1e-8, w = 0.4;
 	mkVec3 u = {cos(eta) * cos(w), cos(eta) * sin(w), sin(eta)};
 	mkVec3 x = mkShape3_Point(s, u), g = mkShape3_PointGradient(s, u);
 	mkVec3 y = mkShape3_FromGradient(s, g), yp = mkShape3_FromGradientPaper(s, g);

@@ -9,9 +9,6 @@
 
 #include "ensure.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 #define NMAX 4096
 static double ux[NMAX], uy[NMAX], uz[NMAX];
@@ -110,7 +107,7 @@ static void test_scaled_copy(void)
 		mkBody2 b1 = mkBody2_Make(s, M, (mkVec2){1, 2}), b2 = mkBody2_Make(s, cM, (mkVec2){-3, 4});
 		int n = 100;
 		for (int k = 0; k < n; ++k) {
-			double t = 2.0 * M_PI * (k + 0.25) / n;
+			double t = 2.0 * MK_PI * (k + 0.25) / n;
 			ux[k] = cos(t);
 			uy[k] = sin(t);
 		}
@@ -146,7 +143,7 @@ static void test_agreement(void)
 		mkBody2 b[2];
 		for (int j = 0; j < 2; ++j) {
 			mkShape2 s = {mk_test_uniform(&seed, 0.01, 10), mk_test_uniform(&seed, 0.01, 10), mk_test_uniform(&seed, 0.1, 1.9)};
-			mkMat2 M = mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * M_PI)), mkMat2_Shear(mk_test_uniform(&seed, -2, 2)));
+			mkMat2 M = mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * MK_PI)), mkMat2_Shear(mk_test_uniform(&seed, -2, 2)));
 			b[j] = mkBody2_Make(s, M, (mkVec2){mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5)});
 		}
 		double scale = 10 + 3 * (b[0].shape.a + b[0].shape.b + b[1].shape.a + b[1].shape.b);
@@ -184,7 +181,7 @@ static void test_agreement(void)
 			double hi = j ? 6 : 10;
 			mkShape3 s = {mk_test_uniform(&seed, 1, hi), mk_test_uniform(&seed, 1, hi), mk_test_uniform(&seed, 1, hi),
 				mk_test_uniform(&seed, 0.1, 1.9), mk_test_uniform(&seed, 0.1, 1.9)};
-			mkMat3 M = mkMat3_FromQuat(mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed), NULL);
+			mkMat3 M = mkMat3_FromQuat(mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed));
 			b[j] = mkBody3_Make(s, M, (mkVec3){1, 2, 3});
 		}
 		double scale = 10 + 3 * (b[0].shape.a + b[0].shape.b + b[0].shape.c + b[1].shape.a + b[1].shape.b + b[1].shape.c);
@@ -230,7 +227,7 @@ static void test_paper_metrics(void)
 		mkBody2 b[2];
 		for (int j = 0; j < 2; ++j) {
 			mkShape2 s = {mk_test_uniform(&seed, 0.01, 10), mk_test_uniform(&seed, 0.01, 10), mk_test_uniform(&seed, 0.1, 1.9)};
-			b[j] = mkBody2_Make(s, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * M_PI)),
+			b[j] = mkBody2_Make(s, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * MK_PI)),
 				mkMat2_Shear(mk_test_uniform(&seed, -2, 2))), (mkVec2){0, 0});
 		}
 		mkMat2 M1i = mkMat2_Inverse(b[0].M);
@@ -266,7 +263,7 @@ static void test_paper_metrics(void)
 			mkShape3 s = {mk_test_uniform(&seed, 1, hi), mk_test_uniform(&seed, 1, hi), mk_test_uniform(&seed, 1, hi),
 				mk_test_uniform(&seed, 0.1, 1.9), mk_test_uniform(&seed, 0.1, 1.9)};
 			b[j] = mkBody3_Make(s, mkMat3_FromQuat(mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed),
-				mk_test_unit(&seed), NULL), (mkVec3){0, 0, 0});
+				mk_test_unit(&seed)), (mkVec3){0, 0, 0});
 		}
 		mkMat3 M1i = mkMat3_Inverse(b[0].M);
 		ENSURE(run3(b[0], b[1], MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, MK_IMPL_AUTO, n, 0) == MK_OK);
@@ -310,8 +307,8 @@ static void test_extremes(void)
 						}
 			}
 			for (int k = 0; k < ne; k += 4) {
-				mkBody3 c1 = mkBody3_Make((mkShape3){1e4, 1.0, 30.0, eps[i], eps[k]}, mkMat3_FromQuat(0.3, 0.1, -0.7, 0.2, NULL), (mkVec3){0, 0, 0});
-				mkBody3 c2 = mkBody3_Make((mkShape3){1.0, 1e-2, 50.0, eps[j], eps[ne - 1 - k]}, mkMat3_FromQuat(-0.5, 0.5, 0.1, 0.9, NULL), (mkVec3){0, 0, 0});
+				mkBody3 c1 = mkBody3_Make((mkShape3){1e4, 1.0, 30.0, eps[i], eps[k]}, mkMat3_FromQuat(0.3, 0.1, -0.7, 0.2), (mkVec3){0, 0, 0});
+				mkBody3 c2 = mkBody3_Make((mkShape3){1.0, 1e-2, 50.0, eps[j], eps[ne - 1 - k]}, mkMat3_FromQuat(-0.5, 0.5, 0.1, 0.9), (mkVec3){0, 0, 0});
 				int g = 19;
 				mkSample3_Grid(g, ux, uy, uz);
 				for (int ii = 0; ii < 3; ++ii) {

@@ -19,9 +19,6 @@
 #include "cli.h"
 #include "commands.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static void help(void)
 {
@@ -138,14 +135,14 @@ int mkCmd_Bench(int argc, char **argv)
 				double e2 = super ? mkRng_Uniform(&rng, 0.1, 1.9) : 1.0;
 				if (dim == 2) {
 					mkShape2 s = {mkRng_Uniform(&rng, 1, 11), mkRng_Uniform(&rng, 1, 11), e1};
-					mkMat2 M = mkMat2_Mul(mkMat2_Rotation(2 * M_PI * mkRng_Unit(&rng)),
+					mkMat2 M = mkMat2_Mul(mkMat2_Rotation(2 * MK_PI * mkRng_Unit(&rng)),
 						mkMat2_Shear(mkRng_Uniform(&rng, -2, 2)));
 					mkVec2 t = {0, 0};
 					p2[j] = mkBody2_Make(s, M, t);
 				} else {
 					mkShape3 s = {mkRng_Uniform(&rng, 1, 10), mkRng_Uniform(&rng, 1, 10), mkRng_Uniform(&rng, 1, 10), e1, e2};
 					mkMat3 M = mkMat3_FromQuat(mkRng_Uniform(&rng, -1, 1), mkRng_Uniform(&rng, -1, 1),
-						mkRng_Uniform(&rng, -1, 1), mkRng_Uniform(&rng, -1, 1), NULL);
+						mkRng_Uniform(&rng, -1, 1), mkRng_Uniform(&rng, -1, 1));
 					mkVec3 t = {0, 0, 0};
 					p3[j] = mkBody3_Make(s, M, t);
 				}

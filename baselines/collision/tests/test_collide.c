@@ -9,7 +9,6 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#define MK_PI 3.14159265358979323846
 
 static mkBody3 mkPlace(double a, double b, double c, double e1, double e2, mkMat3 R, mkVec3 t)
 {
@@ -60,7 +59,8 @@ static void mkCheckAll(const char *what, mkBody3 b1, mkBody3 b2, int expect, int
 static mkMat3 mkTilt(void)
 {
 	int ok = 0;
-	mkMat3 R = mkMat3_FromQuat(0.8, 0.3, -0.4, 0.33, &ok);
+	mkMat3 R = mkMat3_FromQuat(0.8, 0.3, -0.4, 0.33);
+	ok = mkMat3_IsFinite(R);
 	ENSURE(ok);
 	return R;
 }
@@ -220,8 +220,8 @@ static mkBody3 mkDraw(double amax, double clo, double chi, int ellipsoid)
 	double a = mkU(1, amax), b = mkU(1, amax), c = mkU(1, amax);
 	double e1 = ellipsoid ? 1.0 : mkU(0.1, 1.9), e2 = ellipsoid ? 1.0 : mkU(0.1, 1.9);
 	mkVec3 t = { mkU(clo, chi), mkU(clo, chi), mkU(clo, chi) };
-	int ok = 0;
-	mkMat3 R = mkMat3_FromQuat(mkU(0, 1), mkU(0, 1), mkU(0, 1), mkU(0, 1), &ok);
+	mkMat3 R = mkMat3_FromQuat(mkU(0, 1), mkU(0, 1), mkU(0, 1), mkU(0, 1));
+	ENSURE(mkMat3_IsFinite(R));
 	return mkPlace(a, b, c, e1, e2, R, t);
 }
 

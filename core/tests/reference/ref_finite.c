@@ -117,7 +117,8 @@ static void sweep3(refRng *rng)
 					for (int c = 0; c < 4; ++c)
 						q[c] = refRng_Uniform(rng, -1.0, 1.0);
 					int ok = 0;
-					mkMat3 M = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+					mkMat3 M = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+					ok = mkMat3_IsFinite(M);
 					ENSURE(ok);
 					if (v == 1) {
 						mkMat3 S = mkMat3_Identity();

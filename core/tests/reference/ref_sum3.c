@@ -48,7 +48,8 @@ static mkMat3 quatRotation(refRng *rng)
 	for (int i = 0; i < 4; ++i)
 		q[i] = refRng_Uniform(rng, 0.0, 1.0);
 	int ok = 0;
-	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], &ok);
+	mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+	ok = mkMat3_IsFinite(R);
 	ENSURE(ok);
 	return R;
 }

@@ -128,7 +128,7 @@ int main(void)
 	/* ---- grid hulls of a rotated ellipsoid: the ratio is the sphere's ------ */
 	{
 		const double q[4] = { 0.9, 0.1, -0.3, 0.2 };
-		mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3], NULL);
+		mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
 		mkShape3 s = { 7.0, 2.5, 4.0, 1.0, 1.0 };
 		mkBody3 b = mkBody3_Make(s, R, (mkVec3){ 3.0, -1.0, 2.0 });
 		for (int n = 4; n <= 20; n += 8) {

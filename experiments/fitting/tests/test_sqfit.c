@@ -54,7 +54,7 @@ int main(void)
 		for (int i = 0; i < 4; ++i) {
 			mkMat3 r = mkSq_QuatToMat(qs[i]);
 			/* the same matrix as the core's */
-			mkMat3 c = mkMat3_FromQuat(qs[i][0], qs[i][1], qs[i][2], qs[i][3], NULL);
+			mkMat3 c = mkMat3_FromQuat(qs[i][0], qs[i][1], qs[i][2], qs[i][3]);
 			double q[4];
 			mkSq_MatToQuat(r, q);
 			double n = sqrt(qs[i][0] * qs[i][0] + qs[i][1] * qs[i][1] + qs[i][2] * qs[i][2] + qs[i][3] * qs[i][3]);
