@@ -37,7 +37,6 @@
 #define MK_GJK_GRID 10
 #define MK_REFEREE_GRID 24
 
-typedef enum mkRotDraw { MK_ROT_PAPER = 0, MK_ROT_UNIFORM = 1 } mkRotDraw;
 
 typedef struct mkOptions {
 	long trials;

@@ -194,12 +194,12 @@ static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, siz
 
 /* ---- the run: index rows, geometry files --------------------------------- */
 
-typedef struct mkRun {
+typedef struct mkDemoRun {
 	const mkOptions *o;
 	mkMeta *meta;
 	mkCsv index;
 	int failed;
-} mkRun;
+} mkDemoRun;
 
 /* What one geometry file shows, for its index row. */
 typedef struct mkEntry {
@@ -228,7 +228,7 @@ static void mkGeometryPath(const char *out, const char *name, char *buf, size_t 
 	snprintf(buf, len, "%.*s/%s", (int)(cut ? n - 4 : n), out, name);
 }
 
-static int mkRun_Open(mkRun *run, const char *name, const char *const *cols, int ncols, mkCsv *csv)
+static int mkDemoRun_Open(mkDemoRun *run, const char *name, const char *const *cols, int ncols, mkCsv *csv)
 {
 	char msg[1024], path[MK_PATH_MAX];
 	mkGeometryPath(run->o->out, name, path, sizeof path);
@@ -241,7 +241,7 @@ static int mkRun_Open(mkRun *run, const char *name, const char *const *cols, int
 }
 
 /* Commit a geometry file with its sidecar and add its index row. */
-static int mkRun_Commit(mkRun *run, mkCsv *csv, const mkEntry *e)
+static int mkDemoRun_Commit(mkDemoRun *run, mkCsv *csv, const mkEntry *e)
 {
 	char msg[1024];
 	long rows = csv->rows;
@@ -395,7 +395,7 @@ static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, lo
 
 /* ---- Fig. 1: definition vs closed form ------------------------------------ */
 
-static void mkFigure1(mkRun *run)
+static void mkFigure1(mkDemoRun *run)
 {
 	const mkOptions *o = run->o;
 	const int N = 50;
@@ -414,7 +414,7 @@ static void mkFigure1(mkRun *run)
 	/* The samples of B1 and of -B2 (closed outlines through them). */
 	static const char *const bcols[] = { "body", "k", "theta", "x", "y" };
 	mkCsv csv;
-	if (mkRun_Open(run, "fig1-bodies.csv", bcols, 5, &csv) == 0) {
+	if (mkDemoRun_Open(run, "fig1-bodies.csv", bcols, 5, &csv) == 0) {
 		for (int body = 0; body < 2; ++body) {
 			for (int k = 0; k <= N; ++k) {
 				int kk = k % N;
@@ -432,12 +432,12 @@ static void mkFigure1(mkRun *run)
 		mkEntry e = { 1, "a", "fig1-bodies.csv",
 			"samples x1(theta_k) of B1 and -x2(theta_k) of -B2, theta_k = -pi + 2 pi k / 50; k = 50 repeats k = 0",
 			s1, s2, "", "", N, "bodies centred at the origin" };
-		mkRun_Commit(run, &csv, &e);
+		mkDemoRun_Commit(run, &csv, &e);
 	}
 
 	/* The definition: every difference of a B1 sample and a B2 sample. */
 	static const char *const pcols[] = { "i", "j", "x", "y" };
-	if (!run->failed && mkRun_Open(run, "fig1-pairwise.csv", pcols, 4, &csv) == 0) {
+	if (!run->failed && mkDemoRun_Open(run, "fig1-pairwise.csv", pcols, 4, &csv) == 0) {
 		for (int i = 0; i < N; ++i) {
 			mkVec2 ui = { pt.ux[i], pt.uy[i] };
 			mkVec2 x1 = mkBody2_Point(b1, ui);
@@ -454,7 +454,7 @@ static void mkFigure1(mkRun *run)
 		mkEntry e = { 1, "a", "fig1-pairwise.csv",
 			"the definition: all 2500 differences x1_i - x2_j of the 50 samples of each body", s1, s2,
 			"", "", N, "their convex hull approximates the boundary of B1 (+) (-B2)" };
-		mkRun_Commit(run, &csv, &e);
+		mkDemoRun_Commit(run, &csv, &e);
 	}
 
 	/* The closed form at B1's 50 surface parameters, with B1's point at the
@@ -467,7 +467,7 @@ static void mkFigure1(mkRun *run)
 		run->failed = 1;
 	}
 	static const char *const ccols[] = { "k", "theta", "x", "y", "x1", "y1" };
-	if (!run->failed && mkRun_Open(run, "fig1-closed.csv", ccols, 6, &csv) == 0) {
+	if (!run->failed && mkDemoRun_Open(run, "fig1-closed.csv", ccols, 6, &csv) == 0) {
 		for (int k = 0; k <= N; ++k) {
 			int kk = k % N;
 			mkCsv_Int(&csv, k);
@@ -482,14 +482,14 @@ static void mkFigure1(mkRun *run)
 		mkEntry e = { 1, "b", "fig1-closed.csv",
 			"the closed form x(theta_k) at B1's 50 surface parameters, with B1's point x1(theta_k) at the same parameter; k = 50 repeats k = 0",
 			s1, s2, mkForm_Name(opt.form), mkParam_Name(opt.param), N, "" };
-		mkRun_Commit(run, &csv, &e);
+		mkDemoRun_Commit(run, &csv, &e);
 	}
 	mkPts_Free(&pt);
 }
 
 /* ---- Fig. 2: the two theorems --------------------------------------------- */
 
-static void mkFigure2(mkRun *run)
+static void mkFigure2(mkDemoRun *run)
 {
 	const mkOptions *o = run->o;
 	const int N = 100, K0 = 24;
@@ -521,7 +521,7 @@ static void mkFigure2(mkRun *run)
 	 * surface angles. */
 	static const char *const ccols[] = { "theorem", "k", "param_angle", "x", "y", "kx", "ky" };
 	mkCsv csv;
-	if (mkRun_Open(run, "fig2-curves.csv", ccols, 7, &csv) == 0) {
+	if (mkDemoRun_Open(run, "fig2-curves.csv", ccols, 7, &csv) == 0) {
 		for (int th = 1; th <= 2 && !run->failed; ++th) {
 			mkSumOptions opt = th == 1 ? mkOptionsFor(o, MK_FORM_NORMAL, MK_PARAM_NORMAL)
 				: mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
@@ -552,13 +552,13 @@ static void mkFigure2(mkRun *run)
 				"theorem 2: gradient form at B1's 100 surface angles; kx, ky the kissing point on B1",
 				s1, s2, "normal (theorem 1), gradient (theorem 2)", "normal (theorem 1), surface (theorem 2)",
 				N, "k = 100 repeats k = 0" };
-			mkRun_Commit(run, &csv, &e);
+			mkDemoRun_Commit(run, &csv, &e);
 		}
 	}
 
 	/* B1 and B2 placed at the contact, in both panels. */
 	static const char *const bcols[] = { "theorem", "body", "k", "x", "y" };
-	if (!run->failed && mkRun_Open(run, "fig2-bodies.csv", bcols, 5, &csv) == 0) {
+	if (!run->failed && mkDemoRun_Open(run, "fig2-bodies.csv", bcols, 5, &csv) == 0) {
 		for (int th = 1; th <= 2; ++th) {
 			mkBody2 placed = b2;
 			placed.t = xs[th - 1];
@@ -570,7 +570,7 @@ static void mkFigure2(mkRun *run)
 		snprintf(note, sizeof note, "outlines of %ld samples, closed; B2 centred at the contact's sum point", o->outline);
 		mkEntry e = { 2, "a,b", "fig2-bodies.csv", "B1 at the origin and B2 placed to touch it", s1, s2,
 			"", "", 0, note };
-		mkRun_Commit(run, &csv, &e);
+		mkDemoRun_Commit(run, &csv, &e);
 	}
 
 	/* The contact: centres, kissing point, and the vectors each theorem
@@ -578,7 +578,7 @@ static void mkFigure2(mkRun *run)
 	 * B1 and m2 of the placed B2 at the kissing point (theorem 2). */
 	static const char *const kcols[] = { "theorem", "c1x", "c1y", "c2x", "c2y", "px", "py",
 		"v1x", "v1y", "v2x", "v2y", "v1_norm", "v2_norm", "param_index", "param_angle", "x_difference" };
-	if (!run->failed && mkRun_Open(run, "fig2-contact.csv", kcols, 16, &csv) == 0) {
+	if (!run->failed && mkDemoRun_Open(run, "fig2-contact.csv", kcols, 16, &csv) == 0) {
 		double diff = hypot(xs[0].x - xs[1].x, xs[0].y - xs[1].y);
 		for (int th = 1; th <= 2; ++th) {
 			mkVec2 p = kiss[th - 1];
@@ -619,7 +619,7 @@ static void mkFigure2(mkRun *run)
 			"x_difference = distance between the two theorems' sum points",
 			s1, s2, "normal (theorem 1), gradient (theorem 2)", "normal (theorem 1), surface (theorem 2)", N,
 			"k = 24 is the reference code's idx = 25" };
-		mkRun_Commit(run, &csv, &e);
+		mkDemoRun_Commit(run, &csv, &e);
 	}
 	mkPts_Free(&pt);
 	mkPts_Free(&ol);
@@ -627,7 +627,7 @@ static void mkFigure2(mkRun *run)
 
 /* ---- Fig. 3: four 2D pairs, B2 at 10 places -------------------------------- */
 
-static void mkFigure3(mkRun *run)
+static void mkFigure3(mkDemoRun *run)
 {
 	const mkOptions *o = run->o;
 	const int N = MK_FIG3_N;
@@ -642,7 +642,7 @@ static void mkFigure3(mkRun *run)
 	static const char *const cols[] = { "panel", "curve", "place", "k", "x", "y", "kx", "ky" };
 	mkCsv csv;
 	char specs[4][2][256];
-	if (mkRun_Open(run, "fig3.csv", cols, 8, &csv) != 0) {
+	if (mkDemoRun_Open(run, "fig3.csv", cols, 8, &csv) != 0) {
 		mkPts_Free(&pt);
 		mkPts_Free(&ol);
 		return;
@@ -698,7 +698,7 @@ static void mkFigure3(mkRun *run)
 			"per panel: B1's outline, the closed-form sum at B1's 100 surface angles (with kissing points), "
 			"B2 at 10 places on it; closed curves (last row repeats the first)",
 			body1, body2, mkForm_Name(opt.form), mkParam_Name(opt.param), N, note };
-		mkRun_Commit(run, &csv, &e);
+		mkDemoRun_Commit(run, &csv, &e);
 	}
 	mkPts_Free(&pt);
 	mkPts_Free(&ol);
@@ -772,7 +772,7 @@ typedef struct mkPanel3 {
 	char spec1[512], spec2[512];
 } mkPanel3;
 
-static void mkFigure4(mkRun *run)
+static void mkFigure4(mkDemoRun *run)
 {
 	const mkOptions *o = run->o;
 	const int G = MK_FIG4_GRID, N = G * G;
@@ -878,7 +878,7 @@ static void mkFigure4(mkRun *run)
 		char file[64], content[512], note[512];
 		snprintf(file, sizeof file, "fig4-%s.csv", P[p].panel);
 		mkCsv csv;
-		if (mkRun_Open(run, file, cols, 6, &csv) != 0)
+		if (mkDemoRun_Open(run, file, cols, 6, &csv) != 0)
 			break;
 		mkWriteSurface(&csv, "b1", G, b1p.x, b1p.y, b1p.z);
 		mkWriteSurface(&csv, "sum", G, pt.x, pt.y, pt.z);
@@ -892,7 +892,7 @@ static void mkFigure4(mkRun *run)
 			best / G, best % G, placed.t.x, placed.t.y, placed.t.z, mkPlaceDir[0], mkPlaceDir[1], mkPlaceDir[2]);
 		mkEntry e = { 4, P[p].panel, file, content, P[p].spec1, P[p].spec2,
 			mkForm_Name(opt.form), mkParam_Name(opt.param), G, note };
-		mkRun_Commit(run, &csv, &e);
+		mkDemoRun_Commit(run, &csv, &e);
 	}
 	mkPts_Free(&pt);
 	mkPts_Free(&b1p);
@@ -948,7 +948,7 @@ int main(int argc, char **argv)
 		"ellipsoids a=(8.6,5.5,3.5) and (3.56,2.4,1.6); B2 placed where B1's normal is closest to (0.85,0.45,0.3)");
 	mkMeta_Set(&meta, "choices_fig2", "contact at B1's surface parameter k = 24 of 100 (the reference code's idx = 25)");
 
-	mkRun run;
+	mkDemoRun run;
 	memset(&run, 0, sizeof run);
 	run.o = &o;
 	run.meta = &meta;

@@ -68,7 +68,7 @@ if(MINK_BUILD_TESTS)
   # concatenate to the unsplit run's.
   add_executable(test_demos ${mkdemos_tests}/test_demos.c)
   target_include_directories(test_demos PRIVATE ${CMAKE_CURRENT_LIST_DIR}/common/tests)
-  target_link_libraries(test_demos PRIVATE mink::core m)
+  target_link_libraries(test_demos PRIVATE mink::core mink_ensure m)
   target_compile_options(test_demos PRIVATE ${MINK_C_WARNINGS})
   add_test(NAME demos.run COMMAND demos --force --out ${mkdemos_work}/run/demos.csv)
   set_tests_properties(demos.run PROPERTIES FIXTURES_SETUP demos_run)
@@ -88,7 +88,7 @@ if(MINK_BUILD_TESTS)
   # functions; and shards, equal to the unsplit run but for the timings.
   add_executable(test_cobstacle ${mkdemos_tests}/test_cobstacle.c)
   target_include_directories(test_cobstacle PRIVATE ${CMAKE_CURRENT_LIST_DIR}/common/tests)
-  target_link_libraries(test_cobstacle PRIVATE m)
+  target_link_libraries(test_cobstacle PRIVATE mink_ensure m)
   target_compile_options(test_cobstacle PRIVATE ${MINK_C_WARNINGS})
   set(mkc_args --trials 2 --obstacles2 3,7 --obstacles3 4 --headings 10 --points 12 --grid 4
     --orientations 6 --so3 ${CMAKE_CURRENT_LIST_DIR}/data/so3_double_coset_3600.csv

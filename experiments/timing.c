@@ -81,7 +81,6 @@
 #define MK_TIMING_CGAL_VERSION "unknown"
 #endif
 
-typedef enum mkRotDraw { MK_ROT_PAPER = 0, MK_ROT_UNIFORM = 1 } mkRotDraw;
 enum { MK_CASE_EE = 0, MK_CASE_ES = 1, MK_CASE_SQ = 2, MK_CASE_COUNT = 3 };
 
 static const char *const mkCaseNames[MK_CASE_COUNT] = { "EE", "ES", "SQ" };

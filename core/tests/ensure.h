@@ -17,6 +17,9 @@ static int mk_checks, mk_failures;
 	fprintf(stderr, "%s:%d: ENSURE_NEAR(%s, %s, %s) failed: %.17g vs %.17g (diff %.3g > %.3g)\n", \
 		__FILE__, __LINE__, #a, #b, #tol, mk_a, mk_b, fabs(mk_a - mk_b), mk_t); } } while (0)
 
+/* |actual - expected| <= tol |expected|, NaN never passes. */
+#define ENSURE_REL(actual, expected, tol) ENSURE_NEAR(actual, expected, (tol) * fabs(expected))
+
 /* a <= bound, NaN never passes. */
 #define ENSURE_LE(a, bound) do { double mk_a = (a), mk_b = (bound); ++mk_checks; \
 	if (!(mk_a <= mk_b)) { ++mk_failures; \

@@ -508,5 +508,5 @@ int main(int argc, char **argv)
 	checkFigure3(&ix);
 	checkFigure4(&ix);
 	mkTable_Free(&ix);
-	return mkTestFailures() != 0;
+	return mk_summary("demos");
 }

@@ -1,6 +1,7 @@
 /* meta.c - the metadata sidecar. */
 #define _POSIX_C_SOURCE 200809L
 
+#include "mink_exp/clock.h"
 #include "mink_exp/meta.h"
 #include "mink_exp_buildinfo.h"
 
@@ -15,13 +16,6 @@
 #include <unistd.h>
 
 static const char *const mkRequiredKeys[] = { MK_META_REQUIRED_KEYS };
-
-static double mkMonotonic(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static char *mkStrDup(const char *s)
 {
@@ -54,7 +48,7 @@ void mkMeta_UtcNow(char *buf, size_t len)
 void mkMeta_InitEmpty(mkMeta *meta)
 {
 	memset(meta, 0, sizeof *meta);
-	meta->start = mkMonotonic();
+	meta->start = mkClock_Wall();
 }
 
 void mkMeta_Free(mkMeta *meta)
@@ -299,7 +293,7 @@ int mkMeta_Write(mkMeta *meta, FILE *fp, char *msg, size_t msglen)
 	char buf[64];
 	mkMeta_UtcNow(buf, sizeof buf);
 	mkMeta_Set(meta, "finished_utc", buf);
-	snprintf(buf, sizeof buf, "%.3f", mkMonotonic() - meta->start);
+	snprintf(buf, sizeof buf, "%.3f", mkClock_Wall() - meta->start);
 	mkMeta_Set(meta, "wall_seconds", buf);
 	if (meta->overflow) {
 		if (msg && msglen > 0)

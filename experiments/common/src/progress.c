@@ -1,6 +1,7 @@
 /* progress.c - the progress line. */
 #define _POSIX_C_SOURCE 200809L
 
+#include "mink_exp/clock.h"
 #include "mink_exp/progress.h"
 
 #include <stdio.h>
@@ -8,13 +9,6 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-
-static double mkNow(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void mkProgress_Draw(mkProgress *p, double now, int final)
 {
@@ -37,7 +31,7 @@ void mkProgress_Begin(mkProgress *p, const char *label, long total)
 	p->label = label;
 	p->total = total;
 	p->done = 0;
-	p->start = mkNow();
+	p->start = mkClock_Wall();
 	p->last = p->start;
 	const char *env = getenv("MINK_PROGRESS");
 	if (env && strcmp(env, "never") == 0)
@@ -55,7 +49,7 @@ void mkProgress_Add(mkProgress *p, long steps)
 	p->done += steps;
 	if (p->mode == 0)
 		return;
-	double now = mkNow();
+	double now = mkClock_Wall();
 	double every = p->mode == 1 ? 0.1 : 10.0;
 	if (now - p->last >= every)
 		mkProgress_Draw(p, now, 0);
@@ -64,6 +58,6 @@ void mkProgress_Add(mkProgress *p, long steps)
 void mkProgress_End(mkProgress *p)
 {
 	if (p->mode != 0)
-		mkProgress_Draw(p, mkNow(), 1);
+		mkProgress_Draw(p, mkClock_Wall(), 1);
 	p->mode = 0;
 }

@@ -64,5 +64,5 @@ int main(void)
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
 	ENSURE(strcmp(msg, "--n: missing value (see --help)") == 0);
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_END);
-	return mkTestFailures() != 0;
+	return mk_summary("common.test_args");
 }

@@ -104,5 +104,5 @@ int main(void)
 	mkMeta_Free(&r);
 
 	unlink(path);
-	return mkTestFailures() != 0;
+	return mk_summary("common.test_meta");
 }

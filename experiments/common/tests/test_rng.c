@@ -73,5 +73,5 @@ int main(void)
 	ENSURE_NEAR(sum / count, 3.5, 4.4e-3);
 	ENSURE_NEAR(sumsq / count, 0.75, 3.4e-3);
 	ENSURE(mkRng_Uniform(&u, 1.5, 1.5) == 1.5);
-	return mkTestFailures() != 0;
+	return mk_summary("common.test_rng");
 }

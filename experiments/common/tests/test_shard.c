@@ -68,5 +68,5 @@ int main(void)
 		ENSURE(rc != 0);
 		ENSURE(strncmp(msg, "--shard: ", 9) == 0);
 	}
-	return mkTestFailures() != 0;
+	return mk_summary("common.test_shard");
 }

@@ -205,5 +205,5 @@ int main(void)
 	ENSURE(mkFitStream(1, 0, 5) != mkFitStream(2, 0, 5));
 	ENSURE(mkFitStream(2, 4, 5) != mkFitStream(2, 5, 5));
 	ENSURE(mkFitStream(3, 1, 0) != mkFitStream(3, 1, 1));
-	return ENSURE_DONE();
+	return mk_summary("fitting.test_cases");
 }

@@ -141,5 +141,5 @@ int main(int argc, char **argv)
 	}
 	free(whole);
 	free(meta);
-	return ENSURE_DONE();
+	return mk_summary("fitting.test_cli");
 }

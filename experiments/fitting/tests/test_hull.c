@@ -137,5 +137,5 @@ int main(void)
 		z[4] = NAN;
 		ENSURE(mkHull3_Volume(x, y, z, 5, &v, NULL, NULL) == MK_ERR_UNSUPPORTED);
 	}
-	return ENSURE_DONE();
+	return mk_summary("fitting.test_hull");
 }

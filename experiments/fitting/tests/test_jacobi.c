@@ -139,5 +139,5 @@ int main(void)
 		ENSURE(mkSym3_Eigen(a, w, &v) == -1);
 		ENSURE(isnan(w[0]) && isnan(v.m[0][0]));
 	}
-	return ENSURE_DONE();
+	return mk_summary("fitting.test_jacobi");
 }

@@ -178,5 +178,5 @@ int main(void)
 		ENSURE(fit.shape.eps2 >= MK_SQFIT_EPS_LO && fit.shape.eps2 <= MK_SQFIT_EPS_HI);
 		ENSURE(fit.shape.a > 0 && fit.shape.b > 0 && fit.shape.c > 0);
 	}
-	return ENSURE_DONE();
+	return mk_summary("fitting.test_sqfit");
 }

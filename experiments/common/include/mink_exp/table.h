@@ -1,0 +1,33 @@
+/* mink_exp/table.h - a CSV result file read back whole: for the tables,
+ * the summaries and the tests.
+ *
+ * RFC 4180 as mink_exp/csv.h writes it: fields may be quoted ("" is a
+ * quote), rows end in "\n" or "\r\n", every row has the header's number of
+ * fields. Blank lines (gnuplot's block separators in the geometry files)
+ * are not rows: such files are read by line, not with this reader. */
+#ifndef MINK_EXP_TABLE_H
+#define MINK_EXP_TABLE_H
+
+/* cells[r * cols + c] point into buf (unquoted, NUL-terminated); row 0 of
+ * the file is the header (names). */
+typedef struct mkTable {
+	int cols;
+	long rows;        /* data rows, header excluded */
+	char **names;
+	char **cells;
+	char *buf;
+	int present;      /* 0: missing or malformed (then reported on stderr) */
+} mkTable;
+
+/* Load path into t. A missing file leaves t->present = 0 silently; a
+ * malformed one is reported on stderr and treated as missing. */
+void mkTable_Load(mkTable *t, const char *path);
+void mkTable_Free(mkTable *t);
+/* The index of the column `name`, or -1. */
+int mkTable_Col(const mkTable *t, const char *name);
+/* The text of row r, column c ("" when c < 0). */
+const char *mkTable_Str(const mkTable *t, long r, int c);
+/* A number, NaN when empty or not a number ("nan" reads as NaN). */
+double mkTable_Num(const mkTable *t, long r, int c);
+
+#endif
