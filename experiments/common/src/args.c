@@ -15,10 +15,11 @@ int mkArg_Long(const char *flag, const char *text, long lo, long hi, long *out,
 	char *end = NULL;
 	errno = 0;
 	long v = text ? strtol(text, &end, 10) : 0;
-	if (!text || !text[0] || *end != '\0' || errno != 0 || v < lo || v > hi) {
+	int number = text && text[0] && *end == '\0';
+	if (!number || errno != 0 || v < lo || v > hi) {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: expected an integer in [%ld, %ld], got '%s'",
-				flag, lo, hi, text ? text : "");
+			snprintf(msg, msglen, "%s = '%s' is %s: must be an integer in [%ld, %ld]", flag,
+				text ? text : "", number ? "out of range" : "not an integer", lo, hi);
 		return -1;
 	}
 	*out = v;
@@ -31,10 +32,11 @@ int mkArg_Double(const char *flag, const char *text, double lo, double hi, const
 	char *end = NULL;
 	errno = 0;
 	double v = text ? strtod(text, &end) : 0.0;
-	if (!text || !text[0] || *end != '\0' || errno == ERANGE || !(v >= lo && v <= hi)) {
+	int number = text && text[0] && *end == '\0';
+	if (!number || errno == ERANGE || !(v >= lo && v <= hi)) {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: expected %s in [%g, %g], got '%s'", flag, what, lo, hi,
-				text ? text : "");
+			snprintf(msg, msglen, "%s = '%s' is %s: must be %s in [%g, %g]", flag, text ? text : "",
+				number ? "out of range" : "not a number", what, lo, hi);
 		return -1;
 	}
 	*out = v;
@@ -50,8 +52,8 @@ int mkArg_U64(const char *flag, const char *text, uint64_t *out, char *msg, size
 	ok = ok && *end == '\0' && errno == 0 && v <= UINT64_MAX;
 	if (!ok) {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: expected an integer in [0, 2^64-1] (decimal or 0x...), got '%s'",
-				flag, text ? text : "");
+			snprintf(msg, msglen, "%s = '%s' is not allowed: must be an integer in [0, 2^64-1] "
+				"(decimal or 0x...)", flag, text ? text : "");
 		return -1;
 	}
 	*out = (uint64_t)v;
@@ -68,11 +70,9 @@ int mkArg_Choice(const char *flag, const char *text, const char *const *names, i
 		}
 	}
 	if (msg && msglen > 0) {
-		int n = snprintf(msg, msglen, "%s: expected one of ", flag);
+		int n = snprintf(msg, msglen, "%s = '%s' is not allowed: must be one of ", flag, text ? text : "");
 		for (int i = 0; i < count && n >= 0 && (size_t)n < msglen; ++i)
-			n += snprintf(msg + n, msglen - (size_t)n, "%s%s", i ? "|" : "", names[i]);
-		if (n >= 0 && (size_t)n < msglen)
-			snprintf(msg + n, msglen - (size_t)n, ", got '%s'", text ? text : "");
+			n += snprintf(msg + n, msglen - (size_t)n, "%s%s", i ? ", " : "", names[i]);
 	}
 	return -1;
 }
@@ -108,8 +108,8 @@ int mkArg_Impl(const char *flag, const char *text, int *out, char *msg, size_t m
 	int impl = mkImpl_Parse(text);
 	if (impl < 0 || !mkImpl_Available((mkImpl)impl)) {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: '%s' is not available on this CPU or build "
-				"(available: auto, scalar%s%s)", flag, text,
+			snprintf(msg, msglen, "%s = '%s' is not available on this CPU or build: must be one of "
+				"auto, scalar%s%s", flag, text,
 				mkImpl_Available(MK_IMPL_AVX2) ? ", avx2" : "",
 				mkImpl_Available(MK_IMPL_AVX512) ? ", avx512" : "");
 		return -1;
@@ -122,7 +122,7 @@ int mkArg_Path(const char *flag, const char *text, const char **out, char *msg, 
 {
 	if (!text || !text[0]) {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: expected a file path, got ''", flag);
+			snprintf(msg, msglen, "%s = '' is not allowed: must be a file path", flag);
 		return -1;
 	}
 	*out = text;
@@ -151,13 +151,13 @@ mkArgsStep mkArgs_Step(mkArgs *a, const mkOption *opts, int count, const char **
 	const mkOption *opt = help ? NULL : mkOption_Find(opts, count, a->name);
 	if (!help && !opt) {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: unknown option (see --help)", a->name);
+			snprintf(msg, msglen, "unknown option '%s' (see --help)", a->name);
 		return MK_ARGS_ERROR;
 	}
 	if (help || !opt->takes_value) {
 		if (eq) {
 			if (msg && msglen > 0)
-				snprintf(msg, msglen, "%s: takes no value", a->name);
+				snprintf(msg, msglen, "option %s takes no value", a->name);
 			return MK_ARGS_ERROR;
 		}
 		if (help)
@@ -171,7 +171,7 @@ mkArgsStep mkArgs_Step(mkArgs *a, const mkOption *opts, int count, const char **
 		*value = a->argv[a->i++];
 	} else {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: missing value (see --help)", a->name);
+			snprintf(msg, msglen, "option %s needs a value (see --help)", a->name);
 		return MK_ARGS_ERROR;
 	}
 	*name = opt->name;

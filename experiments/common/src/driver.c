@@ -38,7 +38,7 @@ static int mkFlag_Store(mkFlag *f, const char *value, char *msg, size_t msglen)
 		if (f->parse) {
 			char why[768] = "";
 			if (f->parse(f->value, value, why, sizeof why) != 0) {
-				snprintf(msg, msglen, "%s: %s", f->name, why);
+				snprintf(msg, msglen, "%s = '%s' %s", f->name, value, why);
 				return -1;
 			}
 		} else {
@@ -74,7 +74,7 @@ int mkFlags_Parse(mkFlag *flags, int count, int argc, char **argv, char *msg, si
 			if (strcmp(flags[i].name, name) != 0)
 				continue;
 			if (flags[i].given && flags[i].kind != MK_FLAG_REPEAT && flags[i].kind != MK_FLAG_SWITCH) {
-				snprintf(msg, msglen, "%s: given twice", name);
+				snprintf(msg, msglen, "option %s is given twice", name);
 				return -1;
 			}
 			flags[i].given += 1;
@@ -115,9 +115,9 @@ static int mkShard_ParseFlag(void *context, const char *text, char *msg, size_t 
 	char why[512];
 	if (mkShard_Parse(text, "--shard", (mkShard *)context, why, sizeof why) == 0)
 		return 0;
-	/* mkShard_Parse names the flag itself: keep only its explanation */
-	const char *colon = strstr(why, ": ");
-	snprintf(msg, msglen, "%s", colon ? colon + 2 : why);
+	/* mkShard_Parse names the flag and the value itself: keep the rest */
+	const char *is = strstr(why, "' is ");
+	snprintf(msg, msglen, "%s", is ? is + 2 : why);
 	return -1;
 }
 

@@ -34,8 +34,8 @@ int mkShard_Parse(const char *text, const char *flag, mkShard *out, char *msg, s
 	ok = ok && b > 0 && text[a + 1 + b] == '\0' && n >= 1 && n <= MK_SHARD_MAX && i < n;
 	if (!ok) {
 		if (msg && msglen > 0)
-			snprintf(msg, msglen, "%s: expected I/N with 1 <= N <= %d and 0 <= I < N, got '%s'",
-				flag, MK_SHARD_MAX, text);
+			snprintf(msg, msglen, "%s = '%s' is not allowed: must be I/N with 1 <= N <= %d and 0 <= I < N",
+				flag, text, MK_SHARD_MAX);
 		return -1;
 	}
 	out->index = (int)i;

@@ -13,7 +13,7 @@ int main(void)
 	ENSURE(mkArg_Long("--trials", "100", 1, 1000, &v, msg, sizeof msg) == 0 && v == 100);
 	ENSURE(mkArg_Long("--trials", "1000", 1, 1000, &v, msg, sizeof msg) == 0 && v == 1000);
 	ENSURE(mkArg_Long("--trials", "0", 1, 1000, &v, msg, sizeof msg) != 0);
-	ENSURE(strcmp(msg, "--trials: expected an integer in [1, 1000], got '0'") == 0);
+	ENSURE(strcmp(msg, "--trials = '0' is out of range: must be an integer in [1, 1000]") == 0);
 	ENSURE(mkArg_Long("--trials", "12x", 1, 1000, &v, msg, sizeof msg) != 0);
 	ENSURE(mkArg_Long("--trials", "", 1, 1000, &v, msg, sizeof msg) != 0);
 	ENSURE(mkArg_Long("--trials", NULL, 1, 1000, &v, msg, sizeof msg) != 0);
@@ -23,9 +23,9 @@ int main(void)
 	ENSURE(mkArg_Double("--margin", "0.25", 0.0, 1.0, "a number", &d, msg, sizeof msg) == 0 && d == 0.25);
 	ENSURE(mkArg_Double("--margin", "1", 0.0, 1.0, "a number", &d, msg, sizeof msg) == 0 && d == 1.0);
 	ENSURE(mkArg_Double("--margin", "1.5", 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0 && d == 1.0);
-	ENSURE(strcmp(msg, "--margin: expected a number in [0, 1], got '1.5'") == 0);
+	ENSURE(strcmp(msg, "--margin = '1.5' is out of range: must be a number in [0, 1]") == 0);
 	ENSURE(mkArg_Double("--budget", "2s", 0.0, 10.0, "a number of seconds", &d, msg, sizeof msg) != 0);
-	ENSURE(strcmp(msg, "--budget: expected a number of seconds in [0, 10], got '2s'") == 0);
+	ENSURE(strcmp(msg, "--budget = '2s' is not a number: must be a number of seconds in [0, 10]") == 0);
 	ENSURE(mkArg_Double("--margin", "nan", 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0);
 	ENSURE(mkArg_Double("--margin", "", 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0);
 	ENSURE(mkArg_Double("--margin", NULL, 0.0, 1.0, "a number", &d, msg, sizeof msg) != 0);
@@ -36,13 +36,13 @@ int main(void)
 	ENSURE(mkArg_U64("--seed", "0x10", &u, msg, sizeof msg) == 0 && u == 16);
 	ENSURE(mkArg_U64("--seed", "18446744073709551616", &u, msg, sizeof msg) != 0);
 	ENSURE(mkArg_U64("--seed", "-1", &u, msg, sizeof msg) != 0);
-	ENSURE(strncmp(msg, "--seed: ", 8) == 0);
+	ENSURE(strncmp(msg, "--seed = '", 10) == 0);
 
 	static const char *const dims[] = { "2", "3", "both" };
 	int c = -1;
 	ENSURE(mkArg_Choice("--dim", "both", dims, 3, &c, msg, sizeof msg) == 0 && c == 2);
 	ENSURE(mkArg_Choice("--dim", "4", dims, 3, &c, msg, sizeof msg) != 0);
-	ENSURE(strcmp(msg, "--dim: expected one of 2|3|both, got '4'") == 0);
+	ENSURE(strcmp(msg, "--dim = '4' is not allowed: must be one of 2, 3, both") == 0);
 
 	mkArgs a;
 	const char *name, *value;
@@ -58,11 +58,11 @@ int main(void)
 	ENSURE(strcmp(name, "--force") == 0 && value == NULL);
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_HELP);
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
-	ENSURE(strcmp(msg, "--force: takes no value") == 0);
+	ENSURE(strcmp(msg, "option --force takes no value") == 0);
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
-	ENSURE(strcmp(msg, "--bogus: unknown option (see --help)") == 0);
+	ENSURE(strcmp(msg, "unknown option '--bogus' (see --help)") == 0);
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
-	ENSURE(strcmp(msg, "--n: missing value (see --help)") == 0);
+	ENSURE(strcmp(msg, "option --n needs a value (see --help)") == 0);
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_END);
 	return mk_summary("common.test_args");
 }

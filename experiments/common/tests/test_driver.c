@@ -49,21 +49,21 @@ static void mkTestFlags(void)
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--n", "7", "--x=0.25", "--fruit", "pear", "--flag")) == 0);
 	ENSURE(o.n == 7 && o.x == 0.25 && o.fruit == 1 && o.flag == 1);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--n", "0")) == -1);
-	ENSURE(strcmp(msg, "--n: expected an integer in [1, 100], got '0'") == 0);
+	ENSURE(strcmp(msg, "--n = '0' is out of range: must be an integer in [1, 100]") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--x", "2")) == -1);
-	ENSURE(strcmp(msg, "--x: expected a number in [0, 1], got '2'") == 0);
+	ENSURE(strcmp(msg, "--x = '2' is out of range: must be a number in [0, 1]") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--fruit", "plum")) == -1);
-	ENSURE(strcmp(msg, "--fruit: expected one of apple|pear, got 'plum'") == 0);
+	ENSURE(strcmp(msg, "--fruit = 'plum' is not allowed: must be one of apple, pear") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--bogus", "1")) == -1);
-	ENSURE(strcmp(msg, "--bogus: unknown option (see --help)") == 0);
+	ENSURE(strcmp(msg, "unknown option '--bogus' (see --help)") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--n")) == -1);
-	ENSURE(strcmp(msg, "--n: missing value (see --help)") == 0);
+	ENSURE(strcmp(msg, "option --n needs a value (see --help)") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--flag=1")) == -1);
-	ENSURE(strcmp(msg, "--flag: takes no value") == 0);
+	ENSURE(strcmp(msg, "option --flag takes no value") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--n", "3", "--n", "4")) == -1);
-	ENSURE(strcmp(msg, "--n: given twice") == 0);
+	ENSURE(strcmp(msg, "option --n is given twice") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--path", "")) == -1);
-	ENSURE(strcmp(msg, "--path: expected a file path, got ''") == 0);
+	ENSURE(strcmp(msg, "--path = '' is not allowed: must be a file path") == 0);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("--help")) == 1);
 	ENSURE(mkParse(&o, msg, sizeof msg, MK_ARGS("-h")) == 1);
 }
@@ -97,13 +97,13 @@ static void mkTestShared(const char *dir)
 	mkRun run;
 	char err[1024], path[512];
 	ENSURE(mkBegin(&run, err, sizeof err, MK_ARGS("--trials", "0")) == MK_RUN_USAGE);
-	ENSURE(strcmp(err, "demo: --trials: expected an integer in [1, 1000], got '0'\n") == 0);
+	ENSURE(strcmp(err, "demo: --trials = '0' is out of range: must be an integer in [1, 1000]\n") == 0);
 	ENSURE(mkBegin(&run, err, sizeof err, MK_ARGS("--seed", "x")) == MK_RUN_USAGE);
-	ENSURE(strcmp(err, "demo: --seed: expected an integer in [0, 2^64-1] (decimal or 0x...), got 'x'\n") == 0);
+	ENSURE(strcmp(err, "demo: --seed = 'x' is not allowed: must be an integer in [0, 2^64-1] (decimal or 0x...)\n") == 0);
 	ENSURE(mkBegin(&run, err, sizeof err, MK_ARGS("--shard", "2/2")) == MK_RUN_USAGE);
-	ENSURE(strcmp(err, "demo: --shard: expected I/N with 1 <= N <= 1000000 and 0 <= I < N, got '2/2'\n") == 0);
+	ENSURE(strcmp(err, "demo: --shard = '2/2' is not allowed: must be I/N with 1 <= N <= 1000000 and 0 <= I < N\n") == 0);
 	ENSURE(mkBegin(&run, err, sizeof err, MK_ARGS("--force=1")) == MK_RUN_USAGE);
-	ENSURE(strcmp(err, "demo: --force: takes no value\n") == 0);
+	ENSURE(strcmp(err, "demo: option --force takes no value\n") == 0);
 	ENSURE(mkRun_Status(MK_RUN_USAGE) == 2 && mkRun_Status(MK_RUN_HELP) == 0 && mkRun_Status(MK_RUN_FAILED) == 1);
 
 	/* a run: shared keys in the sidecar, the CSV committed */

@@ -66,7 +66,7 @@ int main(void)
 		if (rc == 0)
 			fprintf(stderr, "accepted bad shard '%s'\n", bad[i]);
 		ENSURE(rc != 0);
-		ENSURE(strncmp(msg, "--shard: ", 9) == 0);
+		ENSURE(strncmp(msg, "--shard = '", 11) == 0 && strstr(msg, "is not allowed: must be I/N") != NULL);
 	}
 	return mk_summary("common.test_shard");
 }

@@ -2,7 +2,9 @@
  *
  * Each parser takes the flag name (for the message), the text and the
  * allowed range; on failure it returns -1 and writes one line such as
- *   --trials: expected an integer in [1, 10000000], got '0'
+ *   --trials = '0' is out of range: must be an integer in [1, 10000000]
+ * (the style of the core's SPEC messages: "<field> = <value> is <what>:
+ * must be <allowed>")
  * and on success returns 0. */
 #ifndef MINK_EXP_ARGS_H
 #define MINK_EXP_ARGS_H

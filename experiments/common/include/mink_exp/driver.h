@@ -26,8 +26,9 @@
  *       return mkRun_End(&run, failed);
  *   }
  *
- * Messages: every bad option gives one line "<driver>: <flag>: <why>", e.g.
- *   validation: --trials: expected an integer in [1, 10000000], got '0'
+ * Messages: every bad option gives one line "<driver>: <flag> = '<value>'
+ * is <what>: must be <allowed>" (the style of the core's SPEC messages), e.g.
+ *   validation: --trials = '0' is out of range: must be an integer in [1, 10000000]
  * and exit status 2; a failure to write gives "<driver>: <why>" and 1. */
 #ifndef MINK_EXP_DRIVER_H
 #define MINK_EXP_DRIVER_H
@@ -67,8 +68,9 @@ typedef struct mkFlag {
 	const char *const *choices;    /* MK_FLAG_CHOICE */
 	int choice_count;
 	/* MK_FLAG_TEXT / MK_FLAG_REPEAT: check (and store) one value; returns 0,
-	 * or -1 with a message of the form "expected ..., got '...'" (the flag's
-	 * name is added in front). `context` is the flag's value pointer. */
+	 * or -1 with a message of the form "is <what>: must be <allowed>" (the
+	 * harness puts "<flag> = '<value>' " in front). `context` is the flag's
+	 * value pointer. */
 	int (*parse)(void *context, const char *text, char *msg, size_t msglen);
 	int given;                     /* set by the harness: how often it appeared */
 } mkFlag;
