@@ -11,38 +11,25 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include <mink/mink.h>
+#include <mink_exp/clock.h>
 #include <mink_exp/rng.h>
 
 #include "cli.h"
 #include "commands.h"
 
 
-static void help(void)
+static void help(FILE *fp)
 {
-	printf(
+	fprintf(fp,
 		"usage: mink bench [--n2 N] [--n3 N] [--reps R] [--impl auto|scalar|avx2|avx512] [--seed S]\n"
 		"\n"
 		"Prints CSV  dim,case,form,n,ns_per_point  for 2D and 3D x EE (two ellipses/ellipsoids),\n"
 		"ES (ellipse/ellipsoid and superellipse/superquadric), SQ (two super shapes) x the\n"
 		"normal and gradient forms: the median over R measurements of the time of one batch\n"
 		"call divided by its number of points. Random bodies from a fixed seed: 2D rotated\n"
-		"and sheared, 3D rotated. The kernel used is printed on standard error.\n"
-		"\n"
-		"  --n2 N     2D points per call (default 1000, in [3, 1000000])\n"
-		"  --n3 N     3D grid side, N x N points per call (default 50, in [3, 1000])\n"
-		"  --reps R   measurements per row (default 21, in [1, 10000])\n"
-		"  --impl K   kernel (default auto: the widest this CPU runs)\n"
-		"  --seed S   seed of the random bodies (default 1)\n");
-}
-
-static double now_s(void)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+		"and sheared, 3D rotated. The kernel used is printed on standard error.\n\n");
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -69,7 +56,7 @@ static double measure(Bench *b, mkBody2 *p2, mkBody3 *p3, mkForm form)
 	double *t = malloc((size_t)b->reps * sizeof *t);
 	if (!t) return NAN;
 	for (int r = -1; r < b->reps; ++r) {
-		double t0 = now_s();
+		double t0 = mkClock_Wall();
 		for (int c = 0; c < (r < 0 ? 1 : calls); ++c) {
 			if (b->dim == 2)
 				mkSum2_Batch(p2[0], p2[1], &opt, b->u[0], b->u[1], (int)b->count, b->o[0], b->o[1], b->o[2], b->o[3]);
@@ -77,7 +64,7 @@ static double measure(Bench *b, mkBody2 *p2, mkBody3 *p3, mkForm form)
 				mkSum3_Batch(p3[0], p3[1], &opt, b->u[0], b->u[1], b->u[2], (int)b->count,
 					b->o[0], b->o[1], b->o[2], b->o[3], b->o[4], b->o[5]);
 		}
-		if (r >= 0) t[r] = (now_s() - t0) / calls / (double)b->count * 1e9;
+		if (r >= 0) t[r] = (mkClock_Wall() - t0) / calls / (double)b->count * 1e9;
 	}
 	qsort(t, (size_t)b->reps, sizeof *t, cmp_double);
 	double med = t[b->reps / 2];
@@ -89,22 +76,16 @@ int mkCmd_Bench(int argc, char **argv)
 {
 	long n2 = 1000, n3 = 50, reps = 21, seed = 1;
 	int impl = MK_IMPL_AUTO;
-	for (int i = 1; i < argc; ++i) {
-		const char *o = argv[i], *v;
-		if (mkCli_IsHelp(o)) { help(); return 0; }
-		if (strcmp(o, "--n2") && strcmp(o, "--n3") && strcmp(o, "--reps") && strcmp(o, "--impl") && strcmp(o, "--seed"))
-			return mkCli_Unknown("bench", o);
-		if (!(v = mkCli_Value(argc, argv, &i))) return 2;
-		if (strcmp(o, "--n2") == 0 && mkCli_Int(o, v, 3, 1000000, &n2)) return 2;
-		if (strcmp(o, "--n3") == 0 && mkCli_Int(o, v, 3, 1000, &n3)) return 2;
-		if (strcmp(o, "--reps") == 0 && mkCli_Int(o, v, 1, 10000, &reps)) return 2;
-		if (strcmp(o, "--seed") == 0 && mkCli_Int(o, v, 0, 2147483647L, &seed)) return 2;
-		if (strcmp(o, "--impl") == 0 && mkCli_Choice(o, v, mkImpl_Parse, "auto, scalar, avx2, avx512", &impl)) return 2;
-	}
-	if (!mkImpl_Available((mkImpl)impl)) {
-		fprintf(stderr, "mink bench: --impl %s is not available on this CPU or build\n", mkImpl_Name((mkImpl)impl));
-		return 2;
-	}
+	mkFlag flags[] = {
+		MK_FLAG_LONG("--n2", "N", "2D points per call (default 1000, in [3, 1000000])", &n2, 3, 1000000),
+		MK_FLAG_LONG("--n3", "N", "3D grid side, N x N points per call (default 50, in [3, 1000])", &n3, 3, 1000),
+		MK_FLAG_LONG("--reps", "R", "measurements per row (default 21, in [1, 10000])", &reps, 1, 10000),
+		MK_FLAG_IMPL("--impl", "kernel (default auto: the widest this CPU runs)", &impl),
+		MK_FLAG_LONG("--seed", "S", "seed of the random bodies (default 1)", &seed, 0, 2147483647L),
+	};
+	int rc = mkCli_Parse("bench", flags, MK_COUNT(flags), argc, argv, help);
+	if (rc != MK_CLI_GO)
+		return rc;
 	fprintf(stderr, "mink bench: kernel %s\n", mkImpl_Name(mkImpl_Resolve((mkImpl)impl)));
 	mkRng rng;
 	mkRng_Seed(&rng, (uint64_t)seed, 0);

@@ -7,19 +7,18 @@
 #include "cli.h"
 #include "commands.h"
 
-static void help(void)
+static void help(FILE *fp)
 {
-	printf("usage: mink methods [--csv]\n"
+	fprintf(fp, "usage: mink methods [--csv]\n"
 		"\n"
 		"List the registered ways of computing a Minkowski-sum boundary: the closed\n"
 		"forms and the baselines of the paper's Table 1. Each runs with\n"
 		"  mink sum --method NAME --dim 2|3 --body1 SPEC --body2 SPEC --n N\n"
 		"and its output is checked with 'mink verify'.\n"
-		"\n"
 		"  exact    its points lie on the smooth boundary (to rounding)\n"
 		"  sampled  N is samples per body (3D: an N x N grid per body) and the output\n"
 		"           is the vertices of the hull of all pairwise sums\n"
-		"  --csv    one row per method: name,dims,exact,sampled,n2,n3,summary,reference\n");
+		"With --csv, one row per method: name,dims,exact,sampled,n2,n3,summary,reference\n\n");
 }
 
 static const char *dims(const mkMethod *m)
@@ -59,14 +58,10 @@ static void csv_field(const char *s)
 int mkCmd_Methods(int argc, char **argv)
 {
 	int csv = 0;
-	for (int i = 1; i < argc; ++i) {
-		if (mkCli_IsHelp(argv[i])) {
-			help();
-			return 0;
-		}
-		if (strcmp(argv[i], "--csv") == 0) csv = 1;
-		else return mkCli_Unknown("methods", argv[i]);
-	}
+	mkFlag flags[] = { MK_FLAG_SWITCH("--csv", "the table as CSV", &csv) };
+	int rc = mkCli_Parse("methods", flags, MK_COUNT(flags), argc, argv, help);
+	if (rc != MK_CLI_GO)
+		return rc;
 	int count = mkRegistry_Count();
 	if (csv) printf("name,dims,exact,sampled,n2,n3,summary,reference\n");
 	else printf("%-16s %-6s %-5s %-7s %-16s %-11s %s\n", "name", "dims", "exact", "sampled", "n (2D)", "n (3D)", "summary");

@@ -15,39 +15,21 @@
 #define N2_MAX 10000000L /* 2D points */
 #define N3_MAX 3000L     /* 3D grid side: 9e6 points */
 
-static void help(void)
+static void help(FILE *fp)
 {
-	printf(
+	fprintf(fp,
 		"usage: mink sum --dim 2|3 --body1 SPEC --body2 SPEC [options]\n"
 		"\n"
 		"Boundary points of the contact space B1 (+) (-B2) (where B2's centre may go\n"
-		"so that B2 touches B1) or of B1 (+) B2, as CSV with header x,y or x,y,z.\n"
-		"\n"
-		"  --dim 2|3          dimension (required)\n"
-		"  --body1 SPEC       the first body, e.g. \"superellipse a=3 b=2 eps=0.5 rot=0.3\"\n"
-		"  --body2 SPEC       the second body\n"
-		"  --n N              2D: N points (default 100); 3D: an N x N parameter grid\n"
-		"                     (default 50); N >= 3, at most %ld (2D) or %ld (3D)\n"
-		"  --set contact|plus contact space (default) or B1 (+) B2\n"
-		"  --form normal|gradient|paper\n"
-		"                     Theorem 1 (normal), Theorem 2 (gradient, default), or the\n"
-		"                     published gradient formula as printed (paper; reference only)\n"
-		"  --param surface|normal\n"
-		"                     points uniform in B1's surface angles (default, the paper's)\n"
-		"                     or uniform in the normal's angles\n"
-		"  --impl auto|scalar|avx2|avx512   which compiled kernel (default auto)\n"
-		"  --contact          add columns kx,ky[,kz]: the kissing point on B1's boundary\n"
-		"  --method NAME      run a registered method instead (see 'mink methods'); for\n"
-		"                     sampled methods N is the number of samples per body\n"
-		"  --out FILE         write to FILE (atomically: complete or not at all);\n"
-		"                     default standard output\n"
+		"so that B2 touches B1) or of B1 (+) B2, as CSV with header x,y or x,y,z\n"
+		"(and kx,ky[,kz] with --contact).\n"
 		"\n"
 		"SPEC: KIND key=value ...  with KIND circle, ellipse, superellipse (2D) or sphere,\n"
 		"ellipsoid, superquadric (3D); keys a, b, c, eps (2D), eps1, eps2 (3D), rot=ANGLE\n"
 		"(2D), quat=w,x,y,z (3D), shear=S (2D, M = R [1 S; 0 1]), M=m11,m12,... (row-major,\n"
 		"replaces rot/quat/shear), at=x,y[,z]. The body is at + M B_canonical. For the\n"
-		"contact space B2's 'at' is ignored.\n",
-		N2_MAX, N3_MAX);
+		"contact space B2's 'at' is ignored.\n"
+		"\n");
 }
 
 typedef struct SumArgs {
@@ -186,57 +168,50 @@ static int run_method(const SumArgs *a, const mkSpec *s1, const mkSpec *s2)
 }
 #endif
 
+static const char *const mkSetNames[] = { "contact", "plus" };
+static const char *const mkFormNames[] = { "normal", "gradient", "paper" };
+static const char *const mkParamNames[] = { "surface", "normal" };
+
 int mkCmd_Sum(int argc, char **argv)
 {
 	SumArgs a = {0};
 	a.opt = mkSumOptions_Default();
-	for (int i = 1; i < argc; ++i) {
-		const char *o = argv[i];
-		const char *v;
-		int e;
-		if (mkCli_IsHelp(o)) { help(); return 0; }
-		if (strcmp(o, "--contact") == 0) { a.contact = 1; continue; }
-		if (strncmp(o, "--", 2) != 0) return mkCli_Unknown("sum", o);
-		if (strcmp(o, "--dim") && strcmp(o, "--body1") && strcmp(o, "--body2") && strcmp(o, "--n")
-			&& strcmp(o, "--set") && strcmp(o, "--form") && strcmp(o, "--param") && strcmp(o, "--impl")
-			&& strcmp(o, "--out") && strcmp(o, "--method"))
-			return mkCli_Unknown("sum", o);
-		if (!(v = mkCli_Value(argc, argv, &i))) return 2;
-		if (strcmp(o, "--dim") == 0) {
-			long d;
-			if (mkCli_Int("--dim", v, 2, 3, &d)) return 2;
-			a.dim = (int)d;
-		} else if (strcmp(o, "--body1") == 0) a.spec1 = v;
-		else if (strcmp(o, "--body2") == 0) a.spec2 = v;
-		else if (strcmp(o, "--out") == 0) a.out = v;
-		else if (strcmp(o, "--method") == 0) a.method = v;
-		else if (strcmp(o, "--n") == 0) {
-			if (mkCli_Int("--n", v, 3, N2_MAX, &a.n)) return 2;
-			a.have_n = 1;
-		} else if (strcmp(o, "--set") == 0) {
-			if (mkCli_Choice("--set", v, mkSet_Parse, "contact, plus", &e)) return 2;
-			a.opt.set = (mkSet)e;
-		} else if (strcmp(o, "--form") == 0) {
-			if (mkCli_Choice("--form", v, mkForm_Parse, "normal, gradient, paper", &e)) return 2;
-			a.opt.form = (mkForm)e;
-		} else if (strcmp(o, "--param") == 0) {
-			if (mkCli_Choice("--param", v, mkParam_Parse, "surface, normal", &e)) return 2;
-			a.opt.param = (mkParam)e;
-		} else {
-			if (mkCli_Choice("--impl", v, mkImpl_Parse, "auto, scalar, avx2, avx512", &e)) return 2;
-			a.opt.impl = (mkImpl)e;
-		}
-	}
-	if (!a.dim) { fprintf(stderr, "mink sum: --dim is required (2 or 3)\n"); return 2; }
-	if (!a.spec1 || !a.spec2) { fprintf(stderr, "mink sum: --body1 and --body2 are required\n"); return 2; }
+	long dim = 0;
+	int set = (int)a.opt.set, form = (int)a.opt.form, param = (int)a.opt.param, impl = (int)a.opt.impl;
+	mkFlag flags[] = {
+		MK_FLAG_LONG("--dim", "2|3", "dimension (required)", &dim, 2, 3),
+		MK_FLAG_TEXT("--body1", "SPEC", "the first body, e.g. \"superellipse a=3 b=2 eps=0.5 rot=0.3\"", &a.spec1, NULL),
+		MK_FLAG_TEXT("--body2", "SPEC", "the second body", &a.spec2, NULL),
+		MK_FLAG_LONG("--n", "N", "2D: N points (default 100); 3D: an N x N parameter grid\n(default 50); N >= 3, at "
+			"most 10000000 (2D) or 3000 (3D)", &a.n, 3, N2_MAX),
+		MK_FLAG_CHOICE("--set", "contact|plus", "contact space (default) or B1 (+) B2", &set, mkSetNames),
+		MK_FLAG_CHOICE("--form", "normal|gradient|paper", "Theorem 1 (normal), Theorem 2 (gradient, default), or the\n"
+			"published gradient formula as printed (paper; reference only)", &form, mkFormNames),
+		MK_FLAG_CHOICE("--param", "surface|normal", "points uniform in B1's surface angles (default, the paper's)\n"
+			"or uniform in the normal's angles", &param, mkParamNames),
+		MK_FLAG_IMPL("--impl", "which compiled kernel (default auto)", &impl),
+		MK_FLAG_SWITCH("--contact", "add columns kx,ky[,kz]: the kissing point on B1's boundary", &a.contact),
+		MK_FLAG_TEXT("--method", "NAME", "run a registered method instead (see 'mink methods'); for\n"
+			"sampled methods N is the number of samples per body", &a.method, NULL),
+		MK_FLAG_PATH("--out", "FILE", "write to FILE (atomically: complete or not at all);\n"
+			"default standard output", &a.out),
+	};
+	int rc = mkCli_Parse("sum", flags, MK_COUNT(flags), argc, argv, help);
+	if (rc != MK_CLI_GO)
+		return rc;
+	if ((rc = mkCli_Require("sum", &flags[0])) != MK_CLI_GO || (rc = mkCli_Require("sum", &flags[1])) != MK_CLI_GO
+		|| (rc = mkCli_Require("sum", &flags[2])) != MK_CLI_GO)
+		return rc;
+	a.dim = (int)dim;
+	a.have_n = flags[3].given;
+	a.opt.set = (mkSet)set;
+	a.opt.form = (mkForm)form;
+	a.opt.param = (mkParam)param;
+	a.opt.impl = (mkImpl)impl;
 	if (!a.have_n) a.n = a.dim == 2 ? 100 : 50;
 	if (a.dim == 3 && a.n > N3_MAX) {
-		fprintf(stderr, "mink sum: --n = %ld is out of range: in 3D must be an integer in [3, %ld] "
+		fprintf(stderr, "mink sum: --n = '%ld' is out of range: in 3D must be an integer in [3, %ld] "
 			"(an N x N grid)\n", a.n, N3_MAX);
-		return 2;
-	}
-	if (!mkImpl_Available(a.opt.impl)) {
-		fprintf(stderr, "mink sum: --impl %s is not available on this CPU or build\n", mkImpl_Name(a.opt.impl));
 		return 2;
 	}
 	mkSpec s1, s2;

@@ -12,29 +12,21 @@
 #include "cli.h"
 #include "commands.h"
 
-static void help(void)
+static void help(FILE *fp)
 {
-	printf("usage: mink verify --dim 2|3 --body1 SPEC --body2 SPEC --method NAME --points FILE [options]\n"
+	fprintf(fp, "usage: mink verify --dim 2|3 --body1 SPEC --body2 SPEC --method NAME --points FILE [options]\n"
 		"\n"
 		"Check that the points in FILE are what method NAME claims for the two bodies,\n"
 		"with the referee of the baselines (exact CGAL predicates for sampled methods;\n"
 		"a two-sided support-function check for the others). Prints the verdict; the\n"
 		"exit status is 0 when the output passes, 1 when it fails, 2 on bad input.\n"
-		"\n"
-		"  --points FILE      CSV of points: a header naming columns x, y (and z), as\n"
-		"                     'mink sum' writes, or no header and x, y[, z] first;\n"
-		"                     '-' reads standard input; lines starting with # are skipped\n"
-		"  --method NAME      the method that made them (see 'mink methods')\n"
-		"  --set contact|plus contact space (default) or B1 (+) B2\n"
-		"  --n N              the N they were made with: required for sampled methods\n"
-		"                     (samples per body); for the others it follows from the\n"
-		"                     number of points (N in 2D, N x N in 3D) and is checked\n"
-		"  --dense N          the referee's own samples per body (2D count, 3D grid\n"
-		"                     side; default 8192 / 128)\n"
-		"  --quiet            print nothing; only the exit status\n"
-		"\n"
+		"--points: a CSV with a header naming columns x, y (and z), as 'mink sum'\n"
+		"writes, or no header and x, y[, z] first; lines starting with # are skipped.\n"
+		"--n: required for sampled methods (samples per body); for the others it\n"
+		"follows from the number of points (N in 2D, N x N in 3D) and is checked.\n"
+		"--dense: default 8192 (2D) / 128 (3D grid side).\n"
 		"Points of a method that is not sampled must be in its order: point k belongs\n"
-		"to body 1's surface parameter k (mink/registry.h).\n");
+		"to body 1's surface parameter k (mink/registry.h).\n\n");
 }
 
 /* ---- reading the points ---------------------------------------------------- */
@@ -169,46 +161,33 @@ static int parse_points(char *text, int dim, mkPointSet *out)
 
 /* ---- the command ----------------------------------------------------------- */
 
+static const char *const mkSetNames[] = { "contact", "plus" };
+
 int mkCmd_Verify(int argc, char **argv)
 {
 	const char *spec1 = NULL, *spec2 = NULL, *method = NULL, *points = NULL;
 	long dim = 0, n = 0, dense = 0;
-	int have_n = 0, quiet = 0, e;
-	mkSet set = MK_SET_CONTACT;
-	for (int i = 1; i < argc; ++i) {
-		const char *o = argv[i], *v;
-		if (mkCli_IsHelp(o)) {
-			help();
-			return 0;
-		}
-		if (strcmp(o, "--quiet") == 0) {
-			quiet = 1;
-			continue;
-		}
-		if (strcmp(o, "--dim") && strcmp(o, "--body1") && strcmp(o, "--body2") && strcmp(o, "--method")
-			&& strcmp(o, "--points") && strcmp(o, "--set") && strcmp(o, "--n") && strcmp(o, "--dense"))
-			return mkCli_Unknown("verify", o);
-		if (!(v = mkCli_Value(argc, argv, &i))) return 2;
-		if (strcmp(o, "--dim") == 0) {
-			if (mkCli_Int("--dim", v, 2, 3, &dim)) return 2;
-		} else if (strcmp(o, "--body1") == 0) spec1 = v;
-		else if (strcmp(o, "--body2") == 0) spec2 = v;
-		else if (strcmp(o, "--method") == 0) method = v;
-		else if (strcmp(o, "--points") == 0) points = v;
-		else if (strcmp(o, "--n") == 0) {
-			if (mkCli_Int("--n", v, 1, 100000000, &n)) return 2;
-			have_n = 1;
-		} else if (strcmp(o, "--dense") == 0) {
-			if (mkCli_Int("--dense", v, 8, 1 << 20, &dense)) return 2;
-		} else {
-			if (mkCli_Choice("--set", v, mkSet_Parse, "contact, plus", &e)) return 2;
-			set = (mkSet)e;
-		}
-	}
-	if (!dim || !spec1 || !spec2 || !method || !points) {
-		fprintf(stderr, "mink verify: --dim, --body1, --body2, --method and --points are required (see --help)\n");
-		return 2;
-	}
+	int quiet = 0, setc = 0;
+	mkFlag flags[] = {
+		MK_FLAG_LONG("--dim", "2|3", "dimension (required)", &dim, 2, 3),
+		MK_FLAG_TEXT("--body1", "SPEC", "the first body (required)", &spec1, NULL),
+		MK_FLAG_TEXT("--body2", "SPEC", "the second body (required)", &spec2, NULL),
+		MK_FLAG_TEXT("--method", "NAME", "the method that made the points (required; 'mink methods')", &method, NULL),
+		MK_FLAG_TEXT("--points", "FILE", "the points as CSV (x,y[,z] first), '-' for standard input (required)",
+			&points, NULL),
+		MK_FLAG_CHOICE("--set", "contact|plus", "the set the points are of (default contact)", &setc, mkSetNames),
+		MK_FLAG_LONG("--n", "N", "the method's resolution (default: from the point count)", &n, 1, 100000000),
+		MK_FLAG_LONG("--dense", "K", "the referee's dense samples, 8..1048576", &dense, 8, 1 << 20),
+		MK_FLAG_SWITCH("--quiet", "print nothing; only the exit status", &quiet),
+	};
+	int rc = mkCli_Parse("verify", flags, MK_COUNT(flags), argc, argv, help);
+	if (rc != MK_CLI_GO)
+		return rc;
+	for (int k = 0; k < 5; ++k)
+		if ((rc = mkCli_Require("verify", &flags[k])) != MK_CLI_GO)
+			return rc;
+	int have_n = flags[6].given;
+	mkSet set = setc == 0 ? MK_SET_CONTACT : MK_SET_PLUS;
 	const mkMethod *m = mkRegistry_Find(method);
 	if (!m) {
 		fprintf(stderr, "mink verify: --method %s is unknown: see 'mink methods' for the list\n", method);
