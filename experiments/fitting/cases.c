@@ -58,6 +58,22 @@ static const char *hullStatus(mkResult r)
 	return r == MK_ERR_MEMORY ? "out-of-memory" : "hull-failed";
 }
 
+/* The row's model: the hull of the n x n grid of b (the published code's
+ * grid when paper); its volume error against vTrue. Returns -1 when memory
+ * runs out, else 0 (a failed hull is the row's status). */
+static int gridHullRow(mkFitRow *r, mkBody3 b, int n, int paper, double vTrue)
+{
+	double v;
+	mkResult hr = mkFitGridHullVolume(b, n, paper, &v, &r->vertices, &r->eImplicit);
+	if (hr != MK_OK) {
+		r->status = hullStatus(hr);
+		return hr == MK_ERR_MEMORY ? -1 : 0;
+	}
+	r->volumeModel = v;
+	r->eVolume = relError(v, vTrue);
+	return 0;
+}
+
 /* ---- case 1 ----------------------------------------------------------------- */
 
 int mkFitCase1_Trial(uint64_t seed, int trial, mkFitRow *rows)
@@ -236,17 +252,9 @@ int mkFitCase2_Trial(uint64_t seed, int trial, mkFitRow *rows)
 			r->t = b.t;
 			r->volumeTrue = vTrue;
 			r->status = clamped ? "clamped" : "ok";
-			double v;
-			mkResult hr = mkFitGridHullVolume(b, n, paper, &v, &r->vertices, &r->eImplicit);
-			if (hr != MK_OK) {
-				r->status = hullStatus(hr);
-				if (hr == MK_ERR_MEMORY) {
-					return -1;
-				}
-				continue;
+			if (gridHullRow(r, b, n, paper, vTrue) != 0) {
+				return -1;
 			}
-			r->volumeModel = v;
-			r->eVolume = relError(v, vTrue);
 		}
 	}
 	return count;
@@ -350,18 +358,9 @@ int mkFitCase3_Trial(uint64_t seed, int trial, mkFitRow *rows)
 		r->level = ELLIPSOID_GRID * ELLIPSOID_GRID;
 		r->shape = ell;
 		setIdentityPose(r);
-		double v;
-		mkResult hr = mkFitGridHullVolume(mkBody3_Make(ell, mkMat3_Identity(), r->t), ELLIPSOID_GRID,
-			paper, &v, &r->vertices, &r->eImplicit);
-		if (hr != MK_OK) {
-			r->status = hullStatus(hr);
-			if (hr == MK_ERR_MEMORY) {
-				return -1;
-			}
-			continue;
+		if (gridHullRow(r, mkBody3_Make(ell, mkMat3_Identity(), r->t), ELLIPSOID_GRID, paper, vEll) != 0) {
+			return -1;
 		}
-		r->volumeModel = v;
-		r->eVolume = relError(v, vEll);
 	}
 
 	/* elliptic cylinder, cross-section semi-axes size_x, size_y, height

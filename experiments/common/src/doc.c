@@ -76,32 +76,36 @@ void mkDoc_Heading(mkDoc *d, int level, const char *text)
 	fputs("}\n", d->tex);
 }
 
+/* One block of text: Markdown `md_lead` text `md_end`, LaTeX `tex_lead`
+ * text and a blank line. */
+static void mkDoc_Block(mkDoc *d, const char *md_lead, const char *md_end, const char *tex_lead,
+	const char *fmt, va_list ap)
+{
+	char text[4096];
+	vsnprintf(text, sizeof text, fmt, ap);
+	fprintf(d->md, "%s%s%s", md_lead, text, md_end);
+	fputs(tex_lead, d->tex);
+	mkTex_Put(d->tex, text);
+	fputs("\n\n", d->tex);
+}
+
 /* A paragraph (printf-style). */
 void mkDoc_Para(mkDoc *d, const char *fmt, ...)
 {
-	char text[4096];
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(text, sizeof text, fmt, ap);
+	mkDoc_Block(d, "", "\n\n", "", fmt, ap);
 	va_end(ap);
-	fprintf(d->md, "%s\n\n", text);
-	mkTex_Put(d->tex, text);
-	fputs("\n\n", d->tex);
 }
 
 /* A bullet list item (consecutive items form one list in Markdown; each
  * is its own paragraph in LaTeX, led by a dash). */
 void mkDoc_Item(mkDoc *d, const char *fmt, ...)
 {
-	char text[4096];
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(text, sizeof text, fmt, ap);
+	mkDoc_Block(d, "- ", "\n", "\\noindent -- ", fmt, ap);
 	va_end(ap);
-	fprintf(d->md, "- %s\n", text);
-	fputs("\\noindent -- ", d->tex);
-	mkTex_Put(d->tex, text);
-	fputs("\n\n", d->tex);
 }
 
 void mkDoc_EndItems(mkDoc *d)

@@ -3,6 +3,7 @@
  * that figure. */
 #include "cases.h"
 #include "ensure.h"
+#include "latlong.h"
 
 #include <string.h>
 
@@ -13,32 +14,6 @@ static const double PI = 3.14159265358979323846;
 static double betaFn(double x, double y)
 {
 	return tgamma(x) * tgamma(y) / tgamma(x + y);
-}
-
-/* Volume of the hull of the unit sphere's grid with `rings` latitudes
- * (poles included) and `lon` distinct longitudes, face by face (see
- * test_hull.c): the trapezoids between rings are planar. */
-static double latLongVolume(int rings, int lon)
-{
-	double vol = 0.0;
-	for (int i = 0; i + 1 < rings; ++i) {
-		double e0 = -PI / 2 + PI * i / (rings - 1), e1 = -PI / 2 + PI * (i + 1) / (rings - 1);
-		for (int j = 0; j < lon; ++j) {
-			double w0 = 2 * PI * j / lon, w1 = 2 * PI * (j + 1) / lon;
-			double p[4][3] = {
-				{ cos(e0) * cos(w0), cos(e0) * sin(w0), sin(e0) },
-				{ cos(e0) * cos(w1), cos(e0) * sin(w1), sin(e0) },
-				{ cos(e1) * cos(w1), cos(e1) * sin(w1), sin(e1) },
-				{ cos(e1) * cos(w0), cos(e1) * sin(w0), sin(e1) },
-			};
-			for (int t = 0; t < 2; ++t) {
-				const double *a = p[0], *b = p[1 + t], *c = p[2 + t];
-				vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-					+ a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
-			}
-		}
-	}
-	return vol;
 }
 
 static const mkFitRow *findRow(const mkFitRow *rows, int n, const char *truth, const char *model,

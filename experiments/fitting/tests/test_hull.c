@@ -1,39 +1,11 @@
 /* test_hull.c - convex hull volumes against hand-computed ones. */
 #include "ensure.h"
+#include "latlong.h"
 #include "hull.h"
 
 #include <stdlib.h>
 
 static const double PI = 3.14159265358979323846;
-
-/* Volume of the latitude-longitude polyhedron inscribed in the sphere of
- * radius r: rings eta_i = -pi/2 + pi i/(n-1), n longitudes per ring. Its
- * faces (trapezoids between rings, triangles at the poles) are planar, so
- * the volume is the sum over the faces' triangles of the tetrahedra they
- * span with the centre; computed here without qhull. */
-static double latLongVolume(double r, int n)
-{
-	double vol = 0.0;
-	for (int i = 0; i + 1 < n; ++i) {
-		double e0 = -PI / 2 + PI * i / (n - 1), e1 = -PI / 2 + PI * (i + 1) / (n - 1);
-		for (int j = 0; j < n; ++j) {
-			double w0 = 2 * PI * j / n, w1 = 2 * PI * (j + 1) / n;
-			double p[4][3] = {
-				{ r * cos(e0) * cos(w0), r * cos(e0) * sin(w0), r * sin(e0) },
-				{ r * cos(e0) * cos(w1), r * cos(e0) * sin(w1), r * sin(e0) },
-				{ r * cos(e1) * cos(w1), r * cos(e1) * sin(w1), r * sin(e1) },
-				{ r * cos(e1) * cos(w0), r * cos(e1) * sin(w0), r * sin(e1) },
-			};
-			/* triangles (0,1,2) and (0,2,3), outward; det/6 each */
-			for (int t = 0; t < 2; ++t) {
-				const double *a = p[0], *b = p[1 + t], *c = p[2 + t];
-				vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-					+ a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
-			}
-		}
-	}
-	return vol;
-}
 
 static double sphereGridHull(double r, int n, int *vertices)
 {
@@ -115,7 +87,7 @@ int main(void)
 		for (int i = 0; i < 3; ++i) {
 			int nv = -1;
 			double v = sphereGridHull(r, ns[i], &nv);
-			ENSURE_REL(v, latLongVolume(r, ns[i]), 1e-12);
+			ENSURE_REL(v, r * r * r * latLongVolume(ns[i], ns[i]), 1e-12);
 			ENSURE(nv == (ns[i] - 2) * ns[i] + 2);
 			defect[i] = exact - v;
 			ENSURE(defect[i] > 0.0);

@@ -50,6 +50,22 @@ static void residuals(mkMat3 a, const double w[3], mkMat3 v, double *eig, double
 	}
 }
 
+/* R diag(l) R^T: eigenvalues `sorted` (ascending) within slack * tol, an
+ * orthonormal right-handed eigenbasis within tol. */
+static void checkEigen(mkMat3 R, const double *l, const double *sorted, double tol, double slack)
+{
+	mkMat3 a = compose(R, l);
+	double w[3], e, o;
+	mkMat3 v;
+	ENSURE(mkSym3_Eigen(a, w, &v) >= 0);
+	for (int k = 0; k < 3; ++k)
+		ENSURE_NEAR(w[k], sorted[k], tol * slack);
+	residuals(a, w, v, &e, &o);
+	ENSURE(e < tol);
+	ENSURE(o < tol);
+	ENSURE_NEAR(det3(v), 1.0, tol);
+}
+
 int main(void)
 {
 	/* Jacobi is backward stable: eigenvalues within a few ulps of the
@@ -58,36 +74,11 @@ int main(void)
 	const double tol = 1e-14;
 
 	/* distinct eigenvalues, given in scrambled order */
-	{
-		const double l[3] = { 3.0, -1.5, 0.25 };
-		mkMat3 a = compose(rotationXYZ(0.3, -1.1, 2.5), l);
-		double w[3], e, o;
-		mkMat3 v;
-		ENSURE(mkSym3_Eigen(a, w, &v) >= 0);
-		ENSURE_NEAR(w[0], -1.5, tol * 3);
-		ENSURE_NEAR(w[1], 0.25, tol * 3);
-		ENSURE_NEAR(w[2], 3.0, tol * 3);
-		residuals(a, w, v, &e, &o);
-		ENSURE(e < tol);
-		ENSURE(o < tol);
-		ENSURE_NEAR(det3(v), 1.0, tol);
-	}
-
+	checkEigen(rotationXYZ(0.3, -1.1, 2.5), (const double[3]){ 3.0, -1.5, 0.25 },
+		(const double[3]){ -1.5, 0.25, 3.0 }, tol, 3.0);
 	/* a double eigenvalue: any orthonormal basis of its plane will do */
-	{
-		const double l[3] = { 2.0, 2.0, 5.0 };
-		mkMat3 a = compose(rotationXYZ(-0.7, 0.4, 0.1), l);
-		double w[3], e, o;
-		mkMat3 v;
-		ENSURE(mkSym3_Eigen(a, w, &v) >= 0);
-		ENSURE_NEAR(w[0], 2.0, tol * 5);
-		ENSURE_NEAR(w[1], 2.0, tol * 5);
-		ENSURE_NEAR(w[2], 5.0, tol * 5);
-		residuals(a, w, v, &e, &o);
-		ENSURE(e < tol);
-		ENSURE(o < tol);
-		ENSURE_NEAR(det3(v), 1.0, tol);
-	}
+	checkEigen(rotationXYZ(-0.7, 0.4, 0.1), (const double[3]){ 2.0, 2.0, 5.0 },
+		(const double[3]){ 2.0, 2.0, 5.0 }, tol, 5.0);
 
 	/* widely spread scales, as a scatter matrix of a flat cloud gives:
 	 * the small eigenvalue is only determined to ~ulp(largest) = 2e-16 * 1e6 */
