@@ -2,7 +2,6 @@
 # results/fitting.csv (written by the `fitting` driver); nothing is run.
 #   gnuplot plots/fitting.gp                      (results/fitting.csv -> plots/)
 #   gnuplot -e "results='results/quick/fitting.csv'; outdir='plots/quick'" plots/fitting.gp
-#   gnuplot -e "table='results/summary/fitting.md'" plots/fitting.gp   (summary table only)
 # Run from the top of the project.
 # Left: case 2, mean e_volume of the polyhedron against the number of grid
 # points, for both samplings, with the paper's three published means.
@@ -38,23 +37,26 @@ do for [s in "paper distinct"] {
   unset print
 }
 
-$PUBLISHED2 << EOD
-16 0.6573
-81 0.094
-400 0.0171
-EOD
+# The paper's published means (Sec. 6.2), as the driver recorded them.
+set print $PUBLISHED2
+do for [lev in "16 81 400"] {
+  call 'plots/sidecar.gp' results 'published_case2_'.lev 'p'
+  print sprintf("%s %.10g", lev, p)
+}
+unset print
+array PUB[8]
+array PUBKEY[8] = ["case1_e_volume", "case1_e_implicit", "case3_cube_superquadric", \
+  "case3_ellipsoid_polyhedron", "", "case3_cylinder_superquadric", "case3_cylinder_polyhedron", ""]
+do for [i = 1:8] {
+  PUB[i] = NaN
+  if (strlen(PUBKEY[i]) > 0) { call 'plots/sidecar.gp' results 'published_'.PUBKEY[i] 'p'; PUB[i] = p }
+}
 
 # ---- cases 1 and 3: one entry per model ---------------------------------------
 set print $SUMMARY
 array LABEL[8] = ["case 1 SQ e_{volume}", "case 1 SQ e_{implicit}", "cube as SQ", \
   "ellipsoid as 9x9 poly", "ellipsoid as 9x9 poly (distinct)", "cylinder as SQ", \
   "cylinder as 2x30 poly", "cylinder as 2x30 poly (distinct)"]
-array TLABEL[8] = ["case 1, superquadric fitted to the polyhedron: e_volume", \
-  "case 1, superquadric fitted to the polyhedron: e_implicit", "case 3, cube as superquadric", \
-  "case 3, ellipsoid as 9x9 polyhedron, paper grid", "case 3, ellipsoid as 9x9 polyhedron, core grid", \
-  "case 3, cylinder as superquadric", "case 3, cylinder as 2x30 polyhedron, paper rings", \
-  "case 3, cylinder as 2x30 polyhedron, 30 distinct"]
-array PUB[8] = [0.2095, 0.5808, 0.0112, 0.1340, NaN, 0.0074, 0.0078, NaN]
 do for [i = 1:8] {
   if (i == 1) { stats datafile skip 1 using (select(1, "polyhedron", "superquadric", "random", -1) ? column(C_EVOL) : NaN) nooutput name "S" }
   if (i == 2) { stats datafile skip 1 using (select(1, "polyhedron", "superquadric", "random", -1) ? column(C_EIMP) : NaN) nooutput name "S" }
@@ -68,30 +70,6 @@ do for [i = 1:8] {
 }
 unset print
 
-# Table mode: with -e "table='FILE'" write the summary as Markdown and draw
-# nothing.
-if (exists("table")) {
-  set print table
-  print sprintf("Fitting errors (paper Sec. 6.2), from %s: mean over the trials", results)
-  print "(+- one standard error of the mean) beside the paper's published means."
-  print ""
-  print "| quantity | measured mean | std. error | published |"
-  print "|---|---|---|---|"
-  do for [i = 1:8] {
-    m = real(word($SUMMARY[i], 2)); se = real(word($SUMMARY[i], 3)); p = real(word($SUMMARY[i], 4))
-    print sprintf("| %s | %.4g | %.2g | %s |", TLABEL[i], m, se, p == p ? sprintf("%.4g", p) : "-")
-  }
-  do for [i = 1:|$PAPER|] {
-    lev = int(word($PAPER[i], 1))
-    pub = lev == 16 ? "0.6573" : lev == 81 ? "0.094" : lev == 400 ? "0.0171" : "-"
-    print sprintf("| case 2, %d points, paper grid | %.4g | %.2g | %s |", lev, \
-      real(word($PAPER[i], 2)), real(word($PAPER[i], 3)), pub)
-    print sprintf("| case 2, %d points, core grid | %.4g | %.2g | - |", lev, \
-      real(word($DISTINCT[i], 2)), real(word($DISTINCT[i], 3)))
-  }
-  unset print
-  exit
-}
 
 set datafile separator whitespace
 

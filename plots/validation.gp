@@ -8,7 +8,6 @@
 #
 #   gnuplot plots/validation.gp                          (results/validation.csv -> plots/)
 #   gnuplot -e "results='results/quick/validation.csv'; outdir='plots/quick'" plots/validation.gp
-#   gnuplot -e "table='results/summary/validation.md'" plots/validation.gp   (summary table only)
 #
 # Run from the top of the project. Values at or below `floor` (exact zeros
 # cannot be drawn on a log axis) are drawn at `floor`, and the key says so.
@@ -20,11 +19,11 @@ floor = 1e-22
 set datafile separator comma
 set datafile columnheaders
 
-# The paper's published means (Sec. 6.1).
-pub_imp2 = 5.9194e-16
-pub_grad2 = 6.1839e-7
-pub_imp3 = 1.8303e-9
-pub_grad3 = 4.0654e-7
+# The paper's published means (Sec. 6.1), as the driver recorded them.
+call 'plots/sidecar.gp' results 'published_e_implicit_2d' 'pub_imp2'
+call 'plots/sidecar.gp' results 'published_e_gradient_2d' 'pub_grad2'
+call 'plots/sidecar.gp' results 'published_e_implicit_3d' 'pub_imp3'
+call 'plots/sidecar.gp' results 'published_e_gradient_3d' 'pub_grad3'
 
 forms = "normal gradient paper"
 form_pt(i) = (i == 1 ? 6 : i == 2 ? 2 : 8)
@@ -65,34 +64,6 @@ do for [d = 2:3] {
 }
 mean_of(kind, d, i) = value(sprintf("%s_%d_%d", kind, d, i))
 
-# Table mode: with -e "table='FILE'" write the summary as a Markdown table
-# and draw nothing.
-if (exists("table")) {
-	set print table
-	print sprintf("Numerical validation (paper Sec. 6.1), from %s.", results)
-	print "Per trial, means and maxima over the boundary points with finite metrics;"
-	print "here the mean and median over trials of the per-trial means, and the largest"
-	print "per-trial maximum. Published: the paper's means. e_gradient recomputes both"
-	print "normals from the rounded points and is ill-conditioned at the tips of bodies"
-	print "with eps near 2; e_support (the support gap with B1's normal from its"
-	print "parameter) tests the same anti-parallel normals without that amplification."
-	print ""
-	print "| dim | form | trials | points | e_implicit mean | median | max | published | e_gradient mean | median | max | published | e_support mean | max | angle max (rad) | non-finite points |"
-	print "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-	do for [d = 2:3] {
-		do for [i = 1:3] {
-			if (mean_of("nt", d, i) > 0) {
-				print sprintf("| %d | %s | %d | %d | %.3e | %.3e | %.3e | %.4e | %.3e | %.3e | %.3e | %.4e | %.3e | %.3e | %.3e | %d |", \
-					d, word(forms, i), int(mean_of("nt", d, i)), int(mean_of("np", d, i)), \
-					mean_of("mi", d, i), mean_of("di", d, i), mean_of("xi", d, i), (d == 2 ? pub_imp2 : pub_imp3), \
-					mean_of("mg", d, i), mean_of("dg", d, i), mean_of("xg", d, i), (d == 2 ? pub_grad2 : pub_grad3), \
-					mean_of("ms", d, i), mean_of("xs", d, i), mean_of("xa", d, i), int(mean_of("nf", d, i)))
-			}
-		}
-	}
-	unset print
-	exit
-}
 label_of(kind, d, i) = sprintf("%s: mean %.2e, median %.2e%s", word(forms, i), \
 	mean_of("m" . kind, d, i), mean_of("d" . kind, d, i), \
 	mean_of("nf", d, i) > 0 ? sprintf(" (%d non-finite pts)", int(mean_of("nf", d, i))) : "")

@@ -47,6 +47,7 @@ int main(int argc, char **argv)
 	mkMeta_Set(&run.meta, "case1_draw", "100 points [20,15,10].*U(-1,1)^3; LM fit to the hull vertices");
 	mkMeta_Set(&run.meta, "case2_draw", "a=[20,15,10].*U(0,1)^3, eps=U(0,2)^2, quaternion U(0,1)^4; n=4..20");
 	mkMeta_Set(&run.meta, "case3_draw", "size=[50,36,20].*U(0,1)^3+1");
+	mkPaper_Record(&run.meta, "fitting");
 	if (mkRun_OpenCsv(&run, end - begin) != 0)
 		return mkRun_End(&run, 1);
 

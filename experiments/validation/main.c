@@ -52,6 +52,7 @@ int main(int argc, char **argv)
 	mkMeta_Set(meta, "rng", "xoshiro256** seeded by splitmix64, one stream per trial: (dim << 32) | trial");
 	mkMeta_Set(meta, "draw_2d", "a,b~U(0,10) eps~U(0.1,1.9) M=rot(2pi U)[1 s;0 1] s~U(-2,2), both bodies");
 	mkMeta_Set(meta, "draw_3d", "B1 a,b,c~U(1,10) B2 a,b,c~U(1,6) eps1,eps2~U(0.1,1.9) rotation only");
+	mkPaper_Record(meta, "validation");
 	if (mkRun_OpenCsv(&run, (run.end - run.begin) * (dim2 + dim3)) != 0)
 		return mkRun_End(&run, 1);
 

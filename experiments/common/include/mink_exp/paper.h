@@ -5,16 +5,21 @@
  * Sec. 6.1 (validation means), Sec. 6.2 (fitting means), Sec. 7.1
  * (Table 2, C-obstacle times, MATLAB on one core) and Sec. 7.2 (Table 3,
  * collision query times). Each number is kept as printed (`text`) and as a
- * value. The experiments' summaries and drivers read them from here; no
+ * value. The experiments' summaries and drivers read them from here; the
+ * drivers copy the ones their figures show into their sidecars
+ * ("published_..." keys), which is where the gnuplot scripts read them. No
  * other file holds a published number. */
 #ifndef MINK_EXP_PAPER_H
 #define MINK_EXP_PAPER_H
+
+#include "meta.h"
 
 /* Sec. 6.1: the mean validation metrics of the published code. */
 typedef struct mkPaperValidation {
 	int dim;
 	const char *metric, *column, *text;
 	double value;
+	const char *key;   /* the sidecar key the driver records it under */
 } mkPaperValidation;
 extern const mkPaperValidation mkPaper_Validation[];
 extern const int mkPaper_ValidationCount;
@@ -29,9 +34,14 @@ typedef struct mkPaperFitting {
 	int implicit;
 	const char *text;
 	double value;
+	const char *key;   /* the sidecar key the driver records it under */
 } mkPaperFitting;
 extern const mkPaperFitting mkPaper_Fitting[];
 extern const int mkPaper_FittingCount;
+
+/* Record the published numbers of `experiment` ("validation", "fitting")
+ * in its sidecar under their keys, for its figure. */
+void mkPaper_Record(mkMeta *meta, const char *experiment);
 
 /* Sec. 7.1, Table 2: total seconds and microseconds per point. */
 typedef struct mkPaperTable2 {
