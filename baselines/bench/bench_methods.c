@@ -224,8 +224,8 @@ int main(int argc, char **argv)
 					const mkMethod *me = methods[m];
 					if (!applicable[m]) continue;
 					char msg[256];
-					int ok = dim == 2 ? mkMethod_Accepts2(me, a2, b2, MK_SET_CONTACT, msg, sizeof msg)
-						: mkMethod_Accepts3(me, a3, b3, MK_SET_CONTACT, msg, sizeof msg);
+					int ok = dim == 2 ? mkMethod2_Accepts(me, a2, b2, MK_SET_CONTACT, msg, sizeof msg)
+						: mkMethod3_Accepts(me, a3, b3, MK_SET_CONTACT, msg, sizeof msg);
 					if (!ok) {
 						if (t == 0 && z == 0) printf("# %s does not apply to case %s: %s\n", me->name, case_names[c], msg);
 						applicable[m] = 0;

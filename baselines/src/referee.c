@@ -136,7 +136,7 @@ static void body3_local(const mkBody3 *b, double ux, double uy, double uz, doubl
 	normalize(n, 3);
 }
 
-mkVec2 mkReferee_Point2(mkBody2 b, mkVec2 u, mkVec2 *normal)
+mkVec2 mkReferee2_Point(mkBody2 b, mkVec2 u, mkVec2 *normal)
 {
 	double x[2], n[2];
 	body2_local(&b, u.x, u.y, x, n);
@@ -144,7 +144,7 @@ mkVec2 mkReferee_Point2(mkBody2 b, mkVec2 u, mkVec2 *normal)
 	return (mkVec2){b.t.x + x[0], b.t.y + x[1]};
 }
 
-mkVec3 mkReferee_Point3(mkBody3 b, mkVec3 u, mkVec3 *normal)
+mkVec3 mkReferee3_Point(mkBody3 b, mkVec3 u, mkVec3 *normal)
 {
 	double x[3], n[3];
 	body3_local(&b, u.x, u.y, u.z, x, n);
@@ -635,7 +635,7 @@ static int dense_default(const mkRefereeOptions *opt, int dim)
 	return dim == 2 ? 8192 : 128;
 }
 
-mkResult mkReferee_Support2(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts, const double *nx,
+mkResult mkReferee2_Support(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts, const double *nx,
 	const double *ny, const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!pts || !nx || !ny || !v || pts->dim != 2 || (set != MK_SET_CONTACT && set != MK_SET_PLUS))
@@ -656,7 +656,7 @@ mkResult mkReferee_Support2(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet 
 	return r;
 }
 
-mkResult mkReferee_Support3(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts, const double *nx,
+mkResult mkReferee3_Support(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts, const double *nx,
 	const double *ny, const double *nz, const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!pts || !nx || !ny || !nz || !v || pts->dim != 3 || (set != MK_SET_CONTACT && set != MK_SET_PLUS))
@@ -712,7 +712,7 @@ static void hull_verdict(mkVerdict *v, const mkHullReport *h, double coord_max)
 			h->why[0] ? "; " : "", h->why);
 }
 
-mkResult mkReferee_Hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
+mkResult mkReferee2_Hull(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
 {
 	if (!out || !v || out->dim != 2 || n < 1 || n > MK_HULL2_N_MAX) return MK_ERR_ARGUMENT;
 	verdict_init(v, MK_VERDICT_HULL, out->count);
@@ -728,7 +728,7 @@ mkResult mkReferee_Hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPoint
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled2_Bodies(b1, b2, set, n, pq, pq + 2 * n);
 	if (r == MK_OK) {
-		mkSampled_Sums(2, pq, n, pq + 2 * n, n, s);
+		mkSampled2_Sums(pq, n, pq + 2 * n, n, s);
 		double cmax = 0;
 		for (long k = 0; k < 2 * ns; ++k) cmax = fmax(cmax, fabs(s[k]));
 		mkHullReport h;
@@ -741,7 +741,7 @@ mkResult mkReferee_Hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPoint
 	return r;
 }
 
-mkResult mkReferee_Hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
+mkResult mkReferee3_Hull(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
 {
 	if (!out || !v || out->dim != 3 || n < 2 || n > MK_HULL3_N_MAX) return MK_ERR_ARGUMENT;
 	verdict_init(v, MK_VERDICT_HULL, out->count);
@@ -758,7 +758,7 @@ mkResult mkReferee_Hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPoint
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled3_Bodies(b1, b2, set, n, pq, pq + 3 * (size_t)per);
 	if (r == MK_OK) {
-		mkSampled_Sums(3, pq, per, pq + 3 * (size_t)per, per, s);
+		mkSampled3_Sums(pq, per, pq + 3 * (size_t)per, per, s);
 		double cmax = 0;
 		for (long k = 0; k < 3 * ns; ++k) cmax = fmax(cmax, fabs(s[k]));
 		mkHullReport h;
@@ -775,11 +775,11 @@ mkResult mkReferee_Hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPoint
 
 /* ---- dispatch -------------------------------------------------------------- */
 
-mkResult mkReferee_Check2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out,
+mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out,
 	const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!m || !out || !v || out->dim != 2) return MK_ERR_ARGUMENT;
-	if (m->flags & MK_METHOD_SAMPLED) return mkReferee_Hull2(b1, b2, set, n, out, v);
+	if (m->flags & MK_METHOD_SAMPLED) return mkReferee2_Hull(b1, b2, set, n, out, v);
 	if (n < 1 || out->count != n) return MK_ERR_ARGUMENT;
 	double *u = malloc(4 * (size_t)n * sizeof *u);
 	if (!u) return MK_ERR_MEMORY;
@@ -792,17 +792,17 @@ mkResult mkReferee_Check2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, 
 			nx[k] = nn[0];
 			ny[k] = nn[1];
 		}
-		r = mkReferee_Support2(b1, b2, set, out, nx, ny, opt, v);
+		r = mkReferee2_Support(b1, b2, set, out, nx, ny, opt, v);
 	}
 	free(u);
 	return r;
 }
 
-mkResult mkReferee_Check3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out,
+mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out,
 	const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!m || !out || !v || out->dim != 3) return MK_ERR_ARGUMENT;
-	if (m->flags & MK_METHOD_SAMPLED) return mkReferee_Hull3(b1, b2, set, n, out, v);
+	if (m->flags & MK_METHOD_SAMPLED) return mkReferee3_Hull(b1, b2, set, n, out, v);
 	if (n < 2 || n > 46340 || out->count != n * n) return MK_ERR_ARGUMENT;
 	int count = n * n;
 	double *u = malloc(6 * (size_t)count * sizeof *u);
@@ -817,7 +817,7 @@ mkResult mkReferee_Check3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, 
 			ny[k] = nn[1];
 			nz[k] = nn[2];
 		}
-		r = mkReferee_Support3(b1, b2, set, out, nx, ny, nz, opt, v);
+		r = mkReferee3_Support(b1, b2, set, out, nx, ny, nz, opt, v);
 	}
 	free(u);
 	return r;

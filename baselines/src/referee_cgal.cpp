@@ -79,7 +79,7 @@ double DistanceToPolygon(const std::vector<P2> &v, const P2 &p)
 
 } // namespace
 
-extern "C" int mkRefereeCgal_Orient2(const double *a, const double *b, const double *c)
+extern "C" int mkRefereeCgal2_Orient(const double *a, const double *b, const double *c)
 {
 	CGAL::Orientation o = CGAL::orientation(P2(a[0], a[1]), P2(b[0], b[1]), P2(c[0], c[1]));
 	return o == CGAL::LEFT_TURN ? 1 : o == CGAL::RIGHT_TURN ? -1 : 0;

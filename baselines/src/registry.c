@@ -77,7 +77,7 @@ int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)
 	return 0;
 }
 
-int mkMethod_Accepts2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)
+int mkMethod2_Accepts(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)
 {
 	if (!m || !runs_in(m, 2) || !m->accepts2) {
 		if (msg && msglen) snprintf(msg, msglen, "method %s does not run in 2D", m ? m->name : "(none)");
@@ -86,7 +86,7 @@ int mkMethod_Accepts2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char
 	return m->accepts2(b1, b2, set, msg, msglen);
 }
 
-int mkMethod_Accepts3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen)
+int mkMethod3_Accepts(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen)
 {
 	if (!m || !runs_in(m, 3) || !m->accepts3) {
 		if (msg && msglen) snprintf(msg, msglen, "method %s does not run in 3D", m ? m->name : "(none)");

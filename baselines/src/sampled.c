@@ -20,7 +20,7 @@ static mkResult hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out,
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled2_Bodies(b1, b2, set, n, pq, pq + 2 * n);
 	if (r == MK_OK) {
-		mkSampled_Sums(2, pq, n, pq + 2 * n, n, s);
+		mkSampled2_Sums(pq, n, pq + 2 * n, n, s);
 		r = hull(s, (int)count, out);
 	}
 	free(pq);
@@ -39,7 +39,7 @@ static mkResult hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out,
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled3_Bodies(b1, b2, set, n, pq, pq + 3 * (size_t)per);
 	if (r == MK_OK) {
-		mkSampled_Sums(3, pq, per, pq + 3 * (size_t)per, per, s);
+		mkSampled3_Sums(pq, per, pq + 3 * (size_t)per, per, s);
 		r = hull(s, (int)count, out);
 	}
 	free(pq);

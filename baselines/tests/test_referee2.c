@@ -28,11 +28,11 @@ int main(void)
 		for (int k = 0; k < nc; ++k)
 			for (int set = 0; set < 2; ++set) {
 				char msg[256];
-				if (!mkMethod_Accepts2(m, c[k].a, c[k].b, (mkSet)set, msg, sizeof msg)) continue;
+				if (!mkMethod2_Accepts(m, c[k].a, c[k].b, (mkSet)set, msg, sizeof msg)) continue;
 				int n = sampled ? 96 : 512;
 				mkVerdict v;
 				ENSURE(m->run2(c[k].a, c[k].b, (mkSet)set, n, &out) == MK_OK);
-				ENSURE(mkReferee_Check2(m, c[k].a, c[k].b, (mkSet)set, n, &out, &opt, &v) == MK_OK);
+				ENSURE(mkReferee2_Check(m, c[k].a, c[k].b, (mkSet)set, n, &out, &opt, &v) == MK_OK);
 				ENSURE(v.pass);
 				if (!v.pass) fprintf(stderr, "  %s, %s, %s: %s\n", m->name, c[k].name, set ? "plus" : "contact", v.message);
 				++runs;

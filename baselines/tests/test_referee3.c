@@ -29,11 +29,11 @@ int main(void)
 		for (int k = 0; k < nc; ++k)
 			for (int set = 0; set < 2; ++set) {
 				char msg[256];
-				if (!mkMethod_Accepts3(m, c[k].a, c[k].b, (mkSet)set, msg, sizeof msg)) continue;
+				if (!mkMethod3_Accepts(m, c[k].a, c[k].b, (mkSet)set, msg, sizeof msg)) continue;
 				int n = sampled ? 8 : 16;
 				mkVerdict v;
 				ENSURE(m->run3(c[k].a, c[k].b, (mkSet)set, n, &out) == MK_OK);
-				ENSURE(mkReferee_Check3(m, c[k].a, c[k].b, (mkSet)set, n, &out, &opt, &v) == MK_OK);
+				ENSURE(mkReferee3_Check(m, c[k].a, c[k].b, (mkSet)set, n, &out, &opt, &v) == MK_OK);
 				ENSURE(v.pass);
 				if (!v.pass) fprintf(stderr, "  %s, %s, %s: %s\n", m->name, c[k].name, set ? "plus" : "contact", v.message);
 				++runs;

@@ -69,8 +69,8 @@ MK_API int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t 
 
 /* m->accepts2/3 with the dimension checked first: 0 and a message when the
  * method does not run in this dimension or does not take this pair. */
-MK_API int mkMethod_Accepts2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen);
-MK_API int mkMethod_Accepts3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen);
+MK_API int mkMethod2_Accepts(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen);
+MK_API int mkMethod3_Accepts(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen);
 
 /* The entries themselves, for code that wants one without a name lookup. */
 MK_API extern const mkMethod mkMethod_ClosedNormal;
