@@ -29,6 +29,10 @@ int main(void)
 	ENSURE_NEAR(mkMat2_Det(S), 1.0, 1e-15);
 	ENSURE(!mkMat3_IsFinite(mkMat3_FromQuat(0, 0, 0, 0)));
 	ENSURE(mkMat3_IsFinite(mkMat3_FromQuat(0, 0, 0, 1e-100)));
+	/* mkMat2_IsFinite detects the documented NaN of a failed inverse. */
+	ENSURE(mkMat2_IsFinite(Ai));
+	ENSURE(!mkMat2_IsFinite(mkMat2_Inverse((mkMat2){{{1, 2}, {2, 4}}})));
+	ENSURE(!mkMat2_IsFinite((mkMat2){{{1, 0}, {0, INFINITY}}}));
 	ENSURE_NEAR(mkVec3_Length(mkVec3_Make(2, 3, 6)), 7.0, 0.0);
 	ENSURE_NEAR(mkVec2_Length(mkVec2_Make(3, -4)), 5.0, 0.0);
 	ENSURE_NEAR(mkVec3_Cross(mkVec3_Make(1, 0, 0), mkVec3_Make(0, 1, 0)).z, 1.0, 0.0);
