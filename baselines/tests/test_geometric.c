@@ -38,34 +38,36 @@ static double scale3(mkBody3 a, mkBody3 b)
 	return s;
 }
 
-/* Largest coordinate difference of the two methods' outputs, over S. */
+/* Largest coordinate difference of the two methods' outputs g and c (when
+ * both ran) over the scale; the point sets are freed. */
+static double relative_diff(mkResult rg, mkResult rc, mkPointSet *g, mkPointSet *c, double scale)
+{
+	double worst = HUGE_VAL;
+	if (rg == MK_OK && rc == MK_OK) {
+		worst = 0;
+		for (int k = 0; k < g->count; ++k) {
+			worst = fmax(worst, fmax(fabs(g->x[k] - c->x[k]), fabs(g->y[k] - c->y[k])));
+			if (g->dim == 3) worst = fmax(worst, fabs(g->z[k] - c->z[k]));
+		}
+		worst /= scale;
+	}
+	mkPointSet_Free(g);
+	mkPointSet_Free(c);
+	return worst;
+}
+
 static double diff2(mkBody2 a, mkBody2 b, mkSet set, int n)
 {
 	mkPointSet g = {0}, c = {0};
-	double worst = HUGE_VAL;
-	if (mkMethod_Geometric.run2(a, b, set, n, &g) == MK_OK && mkMethod_ClosedNormal.run2(a, b, set, n, &c) == MK_OK) {
-		worst = 0;
-		for (int k = 0; k < n; ++k) worst = fmax(worst, fmax(fabs(g.x[k] - c.x[k]), fabs(g.y[k] - c.y[k])));
-		worst /= scale2(a, b);
-	}
-	mkPointSet_Free(&g);
-	mkPointSet_Free(&c);
-	return worst;
+	mkResult rg = mkMethod_Geometric.run2(a, b, set, n, &g), rc = mkMethod_ClosedNormal.run2(a, b, set, n, &c);
+	return relative_diff(rg, rc, &g, &c, scale2(a, b));
 }
 
 static double diff3(mkBody3 a, mkBody3 b, mkSet set, int n)
 {
 	mkPointSet g = {0}, c = {0};
-	double worst = HUGE_VAL;
-	if (mkMethod_Geometric.run3(a, b, set, n, &g) == MK_OK && mkMethod_ClosedNormal.run3(a, b, set, n, &c) == MK_OK) {
-		worst = 0;
-		for (int k = 0; k < n * n; ++k)
-			worst = fmax(worst, fmax(fabs(g.x[k] - c.x[k]), fmax(fabs(g.y[k] - c.y[k]), fabs(g.z[k] - c.z[k]))));
-		worst /= scale3(a, b);
-	}
-	mkPointSet_Free(&g);
-	mkPointSet_Free(&c);
-	return worst;
+	mkResult rg = mkMethod_Geometric.run3(a, b, set, n, &g), rc = mkMethod_ClosedNormal.run3(a, b, set, n, &c);
+	return relative_diff(rg, rc, &g, &c, scale3(a, b));
 }
 
 int main(void)
