@@ -712,29 +712,43 @@ static void hull_verdict(mkVerdict *v, const mkHullReport *h, double coord_max)
 			h->why[0] ? "; " : "", h->why);
 }
 
+/* The part of the hull check before the input is rebuilt: 0, with the
+ * verdict written, when the output has points that are not finite. */
+static int hull_start(mkVerdict *v, const mkPointSet *out, long ns)
+{
+	verdict_init(v, MK_VERDICT_HULL, out->count);
+	v->depth = v->excess = 0;
+	v->inputs = (int)ns;
+	if (all_finite(out)) return 1;
+	v->nonfinite = 1;
+	snprintf(v->message, sizeof v->message, "FAIL: the output has points that are not finite");
+	return 0;
+}
+
+/* The verdict from the exact check's return code rc and report h, with
+ * the allowance scaled by the largest of the input's `values` coordinates. */
+static mkResult hull_finish(mkVerdict *v, int rc, const mkHullReport *h, const double *s, long values)
+{
+	if (rc) return rc == -1 ? MK_ERR_MEMORY : MK_ERR_UNSUPPORTED;
+	double cmax = 0;
+	for (long k = 0; k < values; ++k) cmax = fmax(cmax, fabs(s[k]));
+	hull_verdict(v, h, cmax);
+	return MK_OK;
+}
+
 mkResult mkReferee2_Hull(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
 {
 	if (!out || !v || out->dim != 2 || n < 1 || n > MK_HULL2_N_MAX) return MK_ERR_ARGUMENT;
-	verdict_init(v, MK_VERDICT_HULL, out->count);
-	v->depth = v->excess = 0;
 	long ns = (long)n * n;
-	v->inputs = (int)ns;
-	if (!all_finite(out)) {
-		v->nonfinite = 1;
-		snprintf(v->message, sizeof v->message, "FAIL: the output has points that are not finite");
-		return MK_OK;
-	}
+	if (!hull_start(v, out, ns)) return MK_OK;
 	double *pq = malloc(4 * (size_t)n * sizeof *pq), *s = malloc(2 * (size_t)ns * sizeof *s);
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled2_Bodies(b1, b2, set, n, pq, pq + 2 * n);
 	if (r == MK_OK) {
 		mkSampled2_Sums(pq, n, pq + 2 * n, n, s);
-		double cmax = 0;
-		for (long k = 0; k < 2 * ns; ++k) cmax = fmax(cmax, fabs(s[k]));
 		mkHullReport h;
 		int rc = mkRefereeCgal_Polygon(out->x, out->y, out->count, s, ns, &h);
-		if (rc) r = rc == -1 ? MK_ERR_MEMORY : MK_ERR_UNSUPPORTED;
-		else hull_verdict(v, &h, cmax);
+		r = hull_finish(v, rc, &h, s, 2 * ns);
 	}
 	free(pq);
 	free(s);
@@ -744,29 +758,17 @@ mkResult mkReferee2_Hull(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPoint
 mkResult mkReferee3_Hull(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
 {
 	if (!out || !v || out->dim != 3 || n < 2 || n > MK_HULL3_N_MAX) return MK_ERR_ARGUMENT;
-	verdict_init(v, MK_VERDICT_HULL, out->count);
-	v->depth = v->excess = 0;
 	int per = n * n;
 	long ns = (long)per * per;
-	v->inputs = (int)ns;
-	if (!all_finite(out)) {
-		v->nonfinite = 1;
-		snprintf(v->message, sizeof v->message, "FAIL: the output has points that are not finite");
-		return MK_OK;
-	}
+	if (!hull_start(v, out, ns)) return MK_OK;
 	double *pq = malloc(6 * (size_t)per * sizeof *pq), *s = malloc(3 * (size_t)ns * sizeof *s);
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled3_Bodies(b1, b2, set, n, pq, pq + 3 * (size_t)per);
 	if (r == MK_OK) {
 		mkSampled3_Sums(pq, per, pq + 3 * (size_t)per, per, s);
-		double cmax = 0;
-		for (long k = 0; k < 3 * ns; ++k) cmax = fmax(cmax, fabs(s[k]));
 		mkHullReport h;
 		int rc = mkRefereeCgal_Polytope(out->x, out->y, out->z, out->count, s, ns, &h);
-		if (rc) r = rc == -1 ? MK_ERR_MEMORY : MK_ERR_UNSUPPORTED;
-		else {
-			hull_verdict(v, &h, cmax);
-		}
+		r = hull_finish(v, rc, &h, s, 3 * ns);
 	}
 	free(pq);
 	free(s);
