@@ -36,7 +36,6 @@
 
 #include "referee_cgal.h"
 
-#define PI 3.14159265358979323846
 #define FAN_ANGLE 0.02 /* radians between n_k and the fan directions */
 
 static double spow(double x, double e)
@@ -232,7 +231,7 @@ static int dense2(Dense *d, const mkBody2 *b, int n, double sign)
 	if (dense_alloc(d, 2, n, n)) return -1;
 	for (int k = 0; k < n; ++k) {
 		/* Angles offset by half a step from the methods' own grid. */
-		double th = -PI + 2.0 * PI * (k + 0.5) / n;
+		double th = -MK_PI + 2.0 * MK_PI * (k + 0.5) / n;
 		body2_local(b, cos(th), sin(th), d->x + 2 * k, d->nrm + 2 * k);
 	}
 	d->R = radius2(b);
@@ -246,10 +245,10 @@ static int dense3(Dense *d, const mkBody3 *b, int n, double sign)
 {
 	if (dense_alloc(d, 3, n, n * n)) return -1;
 	for (int i = 0; i < n; ++i) {
-		double eta = -PI / 2 + PI * i / (n - 1);
+		double eta = -MK_PI / 2 + MK_PI * i / (n - 1);
 		double ce = (i == 0 || i == n - 1) ? 0.0 : cos(eta), se = sin(eta);
 		for (int j = 0; j < n; ++j) {
-			double om = -PI + 2.0 * PI * (j + 0.5) / n;
+			double om = -MK_PI + 2.0 * MK_PI * (j + 0.5) / n;
 			int k = i * n + j;
 			body3_local(b, ce * cos(om), ce * sin(om), se, d->x + 3 * k, d->nrm + 3 * k);
 		}
@@ -492,7 +491,7 @@ static void local3(const Dense *d, const double *dir, double *lo, double *up)
 	for (int s = 1; s < LOCAL_STEPS; ++s) {
 		double D = local_step[s];
 		for (int j = 0; j < 3; ++j) {
-			double c = cos(2 * PI * j / 3), sn = sin(2 * PI * j / 3), v[3];
+			double c = cos(2 * MK_PI * j / 3), sn = sin(2 * MK_PI * j / 3), v[3];
 			for (int i = 0; i < 3; ++i) v[i] = u[i] + D * (c * t1[i] + sn * t2[i]);
 			body3_local(b, v[0], v[1], v[2], x[1 + j], nn[1 + j]);
 		}

@@ -10,8 +10,6 @@
 
 #include "ensure.h"
 
-#define PI 3.14159265358979323846
-
 /* |t1| + |t2| + |M1| max a1 + |M2| max a2 (max norms): the size every
  * coordinate of the sum is made of. */
 static double scale2(mkBody2 a, mkBody2 b)
@@ -94,9 +92,9 @@ int main(void)
 		mkShape2 s1 = {mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11),
 			t % 4 < 2 ? mk_test_uniform(&seed, 0.1, 1.9) : 1.0};
 		mkShape2 s2 = {mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1.0};
-		mkBody2 a = mkBody2_Make(s1, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * PI)),
+		mkBody2 a = mkBody2_Make(s1, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * MK_PI)),
 			mkMat2_Shear(mk_test_uniform(&seed, -2, 2))), (mkVec2){mk_test_uniform(&seed, -5, 5), 3});
-		mkBody2 b = mkBody2_Make(s2, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * PI)),
+		mkBody2 b = mkBody2_Make(s2, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * MK_PI)),
 			mkMat2_Shear(mk_test_uniform(&seed, -2, 2))), (mkVec2){-2, mk_test_uniform(&seed, -5, 5)});
 		worst_random = fmax(worst_random, diff2(a, b, set, 500));
 		/* 3D: body 1 a superquadric (or an ellipsoid), body 2 an ellipsoid. */

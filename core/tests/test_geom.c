@@ -19,7 +19,7 @@ int main(void)
 	for (int i = 0; i < 3; ++i)
 		for (int j = 0; j < 3; ++j) ENSURE_NEAR(P.m[i][j], i == j, 1e-15);
 	/* a quarter turn about z maps x to y */
-	mkMat3 R = mkMat3_FromQuat(cos(0.25 * 3.14159265358979323846), 0, 0, sin(0.25 * 3.14159265358979323846));
+	mkMat3 R = mkMat3_FromQuat(cos(0.25 * MK_PI), 0, 0, sin(0.25 * MK_PI));
 	mkVec3 v = mkMat3_MulVec(R, (mkVec3){1, 0, 0});
 	ENSURE_NEAR(v.x, 0, 1e-15);
 	ENSURE_NEAR(v.y, 1, 1e-15);
