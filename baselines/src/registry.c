@@ -4,9 +4,9 @@
  * sampled.c (hulls of pairwise sums, edge sorting). An entry that is one
  * member of a family (one closed form, one hull library) gets its own run
  * functions below, which bind the family's parameter: an mkMethod's run
- * functions take no context. To add a method: write its run (and accept)
- * functions in a file of its own, declare them in registry_internal.h, and
- * add its mkMethod and its line of the table here. */
+ * functions take no context. A method of its own kind can instead define
+ * its mkMethod in its own file (mink/registry.h); it then needs only an
+ * extern declaration and its line of the table here. */
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>

@@ -30,14 +30,16 @@
  *    are p - (q - t2) for p on B1 and q on B2, so B2's translation does not
  *    enter it (as in mink/sum.h); the plus set adds p + q.
  *
- * Adding a method: write its run (and, if it refuses some pairs, accept)
- * functions in one file under baselines/src and declare them in
- * registry_internal.h; in registry.c, define its `const mkMethod` (name,
- * summary, reference, flags, accept and run functions) and add one line to
- * the table (with its range of n). The referee tests (test_referee2,
- * test_referee3) loop over the table,
- * so the new entry is put through the referee on random and extreme pairs
- * without a test of its own. Nothing else changes. */
+ * Adding a method: write one file under baselines/src that defines a
+ * `const mkMethod` (name, summary, reference, flags, accepts and run
+ * functions), declare it in registry.c and add one line to the table there
+ * (with its range of n). (The built-in entries are all defined in
+ * registry.c, next to the table, because most are members of a family -
+ * one closed form, one hull library - whose run functions only bind the
+ * family's parameter; a new member of such a family is one more entry
+ * there.) The referee tests (test_referee2, test_referee3) loop over the
+ * table, so the new entry is put through the referee on random and extreme
+ * pairs without a test of its own. Nothing else changes. */
 #ifndef MINK_REGISTRY_H
 #define MINK_REGISTRY_H
 
