@@ -1,100 +1,71 @@
-/* closed.c - the core's closed forms as registry entries: one boundary
- * point per surface parameter of body 1 (mkSample2_Angles / mkSample3_Grid),
- * computed by the core's batch kernels. */
+/* closed.c - the core's closed forms as a family of registry entries (one
+ * per form, bound in registry.c): one boundary point per surface parameter
+ * of body 1 (mkSample2_Angles / mkSample3_Grid), computed by the core's
+ * batch kernels. Also the surface parameters themselves, which the
+ * geometric method shares. */
 #include <stdlib.h>
 
 #include <mink/registry.h>
 
 #include "registry_internal.h"
 
-static mkResult run2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out, mkForm form)
+mkResult mkSurface2_Params(int n, mkPointSet *out, double **u)
+{
+	*u = malloc(2 * (size_t)n * sizeof **u);
+	if (!*u) return MK_ERR_MEMORY;
+	mkResult r = mkSample2_Angles(n, *u, *u + n);
+	if (r == MK_OK) r = mkPointSet_Resize(out, 2, n);
+	return r;
+}
+
+mkResult mkSurface3_Params(int n, mkPointSet *out, double **u)
+{
+	int count = n * n;
+	*u = malloc(3 * (size_t)count * sizeof **u);
+	if (!*u) return MK_ERR_MEMORY;
+	mkResult r = mkSample3_Grid(n, *u, *u + count, *u + 2 * (size_t)count);
+	if (r == MK_OK) r = mkPointSet_Resize(out, 3, count);
+	return r;
+}
+
+/* Surface parameters in; the paper's form exists only as the scalar
+ * reference kernel. */
+static mkSumOptions options(mkSet set, mkForm form)
+{
+	mkSumOptions opt = mkSumOptions_Default();
+	opt.set = set;
+	opt.form = form;
+	opt.param = MK_PARAM_SURFACE;
+	opt.impl = form == MK_FORM_PAPER ? MK_IMPL_SCALAR : MK_IMPL_AUTO;
+	return opt;
+}
+
+mkResult mkClosed2_Run(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out, mkForm form)
 {
 	if (!out) return MK_ERR_ARGUMENT;
 	if (n < 1) return MK_ERR_RANGE;
-	double *u = malloc(2 * (size_t)n * sizeof *u);
-	if (!u) return MK_ERR_MEMORY;
-	mkResult r = mkSample2_Angles(n, u, u + n);
-	if (r == MK_OK) r = mkPointSet_Resize(out, 2, n);
+	double *u;
+	mkResult r = mkSurface2_Params(n, out, &u);
 	if (r == MK_OK) {
-		mkSumOptions opt = mkSumOptions_Default();
-		opt.set = set;
-		opt.form = form;
-		opt.param = MK_PARAM_SURFACE;
-		/* The paper's form exists only as the scalar reference kernel. */
-		opt.impl = form == MK_FORM_PAPER ? MK_IMPL_SCALAR : MK_IMPL_AUTO;
+		mkSumOptions opt = options(set, form);
 		r = mkSum2_Batch(b1, b2, &opt, u, u + n, n, out->x, out->y, NULL, NULL);
 	}
 	free(u);
 	return r;
 }
 
-static mkResult run3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out, mkForm form)
+mkResult mkClosed3_Run(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out, mkForm form)
 {
 	if (!out) return MK_ERR_ARGUMENT;
 	if (n < 2 || n > MK_CLOSED3_N_MAX) return MK_ERR_RANGE;
-	int count = n * n;
-	double *u = malloc(3 * (size_t)count * sizeof *u);
-	if (!u) return MK_ERR_MEMORY;
-	mkResult r = mkSample3_Grid(n, u, u + count, u + 2 * (size_t)count);
-	if (r == MK_OK) r = mkPointSet_Resize(out, 3, count);
+	double *u;
+	mkResult r = mkSurface3_Params(n, out, &u);
 	if (r == MK_OK) {
-		mkSumOptions opt = mkSumOptions_Default();
-		opt.set = set;
-		opt.form = form;
-		opt.param = MK_PARAM_SURFACE;
-		opt.impl = form == MK_FORM_PAPER ? MK_IMPL_SCALAR : MK_IMPL_AUTO;
+		int count = n * n;
+		mkSumOptions opt = options(set, form);
 		r = mkSum3_Batch(b1, b2, &opt, u, u + count, u + 2 * (size_t)count, count,
 			out->x, out->y, out->z, NULL, NULL, NULL);
 	}
 	free(u);
 	return r;
 }
-
-static mkResult normal2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
-{
-	return run2(b1, b2, set, n, out, MK_FORM_NORMAL);
-}
-static mkResult normal3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
-{
-	return run3(b1, b2, set, n, out, MK_FORM_NORMAL);
-}
-static mkResult gradient2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
-{
-	return run2(b1, b2, set, n, out, MK_FORM_GRADIENT);
-}
-static mkResult gradient3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
-{
-	return run3(b1, b2, set, n, out, MK_FORM_GRADIENT);
-}
-static mkResult paper2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
-{
-	return run2(b1, b2, set, n, out, MK_FORM_PAPER);
-}
-static mkResult paper3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
-{
-	return run3(b1, b2, set, n, out, MK_FORM_PAPER);
-}
-
-const mkMethod mkMethod_ClosedNormal = {
-	"closed-normal",
-	"closed form, Theorem 1: support points f~1(n) - f~2(-n) along body 1's normals",
-	"Ruan & Chirikjian, CAD 2022, Theorem 1 and eq. mink_sum_transform_1",
-	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT,
-	mkAcceptAny2, mkAcceptAny3, normal2, normal3,
-};
-
-const mkMethod mkMethod_ClosedGradient = {
-	"closed-gradient",
-	"closed form, Theorem 2: un-normalised gradients, f~~ evaluated stably",
-	"Ruan & Chirikjian, CAD 2022, Theorem 2 and eq. mink_sum_transform_2",
-	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT,
-	mkAcceptAny2, mkAcceptAny3, gradient2, gradient3,
-};
-
-const mkMethod mkMethod_ClosedPaper = {
-	"closed-paper",
-	"Theorem 2 exactly as printed (reference only: loses digits near the 3D poles)",
-	"Ruan & Chirikjian, CAD 2022, eqs. 2d_sq_f_m, 3d_sq_f_m, Phi_m1_general",
-	MK_METHOD_2D | MK_METHOD_3D,
-	mkAcceptAny2, mkAcceptAny3, paper2, paper3,
-};

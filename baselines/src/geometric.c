@@ -6,12 +6,14 @@
  *     x = x1 + E E^T n / |E^T n|          (+ t2 for B1 (+) B2).
  * The contact set uses -B2, which is the same ellipse: an ellipse is
  * centrally symmetric. Body 1 may be any smooth body; it is sampled at its
- * surface parameters, as the closed forms are. */
+ * surface parameters, as the closed forms are. Its registry entry is in
+ * registry.c. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 
 #include <mink/registry.h>
+
+#include "registry_internal.h"
 
 /* A vector parallel to M^-T g with the same sense: the cofactor matrix of M
  * times g, times the sign of det M (no division, no inverse). */
@@ -72,38 +74,30 @@ static mkVec3 offset3(mkMat3 M, double r0, double r1, double r2, mkVec3 n)
 	return mkMat3_MulVec(M, v);
 }
 
-static int accepts2(mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)
+int mkGeometric2_Accepts(mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)
 {
 	(void)b1;
 	(void)set;
-	if (mkShape2_IsEllipse(b2.shape)) return 1;
-	if (msg && msglen)
-		snprintf(msg, msglen, "body2.eps = %g: the geometric formula needs body2 to be an ellipse or "
-			"circle (eps = 1); body1 may be any superellipse", b2.shape.eps);
-	return 0;
+	return mkShape2_IsEllipse(b2.shape) || mkRefuse(msg, msglen, "body2.eps = %g: the geometric formula needs body2 "
+		"to be an ellipse or circle (eps = 1); body1 may be any superellipse", b2.shape.eps);
 }
 
-static int accepts3(mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen)
+int mkGeometric3_Accepts(mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen)
 {
 	(void)b1;
 	(void)set;
-	if (mkShape3_IsEllipsoid(b2.shape)) return 1;
-	if (msg && msglen)
-		snprintf(msg, msglen, "body2.eps1 = %g, body2.eps2 = %g: the geometric formula needs body2 to be "
-			"an ellipsoid or sphere (eps1 = eps2 = 1); body1 may be any superquadric",
-			b2.shape.eps1, b2.shape.eps2);
-	return 0;
+	return mkShape3_IsEllipsoid(b2.shape) || mkRefuse(msg, msglen, "body2.eps1 = %g, body2.eps2 = %g: the geometric "
+		"formula needs body2 to be an ellipsoid or sphere (eps1 = eps2 = 1); body1 may be any superquadric",
+		b2.shape.eps1, b2.shape.eps2);
 }
 
-static mkResult run2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+mkResult mkGeometric2_Run(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
 {
 	if (!out || (set != MK_SET_CONTACT && set != MK_SET_PLUS)) return MK_ERR_ARGUMENT;
 	if (n < 1) return MK_ERR_RANGE;
 	if (!mkShape2_IsEllipse(b2.shape)) return MK_ERR_UNSUPPORTED;
-	double *u = malloc(2 * (size_t)n * sizeof *u);
-	if (!u) return MK_ERR_MEMORY;
-	mkResult r = mkSample2_Angles(n, u, u + n);
-	if (r == MK_OK) r = mkPointSet_Resize(out, 2, n);
+	double *u;
+	mkResult r = mkSurface2_Params(n, out, &u);
 	if (r == MK_OK) {
 		mkVec2 shift = set == MK_SET_PLUS ? b2.t : (mkVec2){0, 0};
 		for (int k = 0; k < n; ++k) {
@@ -119,17 +113,15 @@ static mkResult run2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
 	return r;
 }
 
-static mkResult run3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+mkResult mkGeometric3_Run(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
 {
 	if (!out || (set != MK_SET_CONTACT && set != MK_SET_PLUS)) return MK_ERR_ARGUMENT;
 	if (n < 2 || n > MK_CLOSED3_N_MAX) return MK_ERR_RANGE;
 	if (!mkShape3_IsEllipsoid(b2.shape)) return MK_ERR_UNSUPPORTED;
-	int count = n * n;
-	double *u = malloc(3 * (size_t)count * sizeof *u);
-	if (!u) return MK_ERR_MEMORY;
-	mkResult r = mkSample3_Grid(n, u, u + count, u + 2 * (size_t)count);
-	if (r == MK_OK) r = mkPointSet_Resize(out, 3, count);
+	double *u;
+	mkResult r = mkSurface3_Params(n, out, &u);
 	if (r == MK_OK) {
+		int count = n * n;
 		mkVec3 shift = set == MK_SET_PLUS ? b2.t : (mkVec3){0, 0, 0};
 		for (int k = 0; k < count; ++k) {
 			mkVec3 uk = {u[k], u[count + k], u[2 * count + k]};
@@ -144,11 +136,3 @@ static mkResult run3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
 	free(u);
 	return r;
 }
-
-const mkMethod mkMethod_Geometric = {
-	"geometric",
-	"closed-form geometric: body 1 offset through the map that makes ellipse body 2 a sphere",
-	"Yan & Chirikjian, Geometriae Dedicata 2015; Ruan et al., WAFR 2018 (body2 an ellipse/ellipsoid)",
-	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT,
-	accepts2, accepts3, run2, run3,
-};

@@ -9,49 +9,28 @@
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/convex_hull_3.h>
 
-#include <exception>
-#include <new>
 #include <vector>
 
 #include <mink/baselines.h>
 
-namespace mkcgal {
+#include "cgal_common.hpp"
 
-// The lowest (then leftmost) of a counter-clockwise hull comes first.
-template <class Point>
-void RotateToLowest(std::vector<Point> &h)
-{
-	std::size_t best = 0;
-	for (std::size_t k = 1; k < h.size(); ++k)
-		if (h[k].y() < h[best].y() || (h[k].y() == h[best].y() && h[k].x() < h[best].x())) best = k;
-	std::rotate(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(best), h.end());
-}
+namespace mkcgal {
 
 template <class K>
 mkResult Hull2(const double *xy, int count, mkPointSet *out)
 {
 	typedef typename K::Point_2 Point;
 	if (!xy || !out || count < 1) return MK_ERR_ARGUMENT;
-	try {
+	return Guarded([&]() -> mkResult {
 		std::vector<Point> pts;
 		pts.reserve(static_cast<std::size_t>(count));
 		for (int k = 0; k < count; ++k) pts.emplace_back(xy[2 * k], xy[2 * k + 1]);
 		std::vector<Point> h;
 		CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(h));
 		if (h.size() < 3) return MK_ERR_ARGUMENT; // no area
-		RotateToLowest(h);
-		mkResult r = mkPointSet_Resize(out, 2, static_cast<int>(h.size()));
-		if (r != MK_OK) return r;
-		for (std::size_t k = 0; k < h.size(); ++k) {
-			out->x[k] = CGAL::to_double(h[k].x());
-			out->y[k] = CGAL::to_double(h[k].y());
-		}
-		return MK_OK;
-	} catch (const std::bad_alloc &) {
-		return MK_ERR_MEMORY;
-	} catch (const std::exception &) {
-		return MK_ERR_UNSUPPORTED;
-	}
+		return PolygonOut(h, out);
+	});
 }
 
 // 1 when four of the points span a volume (exact tests).
@@ -71,7 +50,7 @@ mkResult Hull3(const double *xyz, int count, mkPointSet *out)
 	typedef typename K::Point_3 Point;
 	typedef CGAL::Surface_mesh<Point> Mesh;
 	if (!xyz || !out || count < 1) return MK_ERR_ARGUMENT;
-	try {
+	return Guarded([&]() -> mkResult {
 		std::vector<Point> pts;
 		pts.reserve(static_cast<std::size_t>(count));
 		for (int k = 0; k < count; ++k) pts.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
@@ -92,11 +71,7 @@ mkResult Hull3(const double *xyz, int count, mkPointSet *out)
 		}
 		out->count = k;
 		return MK_OK;
-	} catch (const std::bad_alloc &) {
-		return MK_ERR_MEMORY;
-	} catch (const std::exception &) {
-		return MK_ERR_UNSUPPORTED;
-	}
+	});
 }
 
 } // namespace mkcgal

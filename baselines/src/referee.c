@@ -36,7 +36,6 @@
 
 #include "referee_cgal.h"
 
-#define PI 3.14159265358979323846
 #define FAN_ANGLE 0.02 /* radians between n_k and the fan directions */
 
 static double spow(double x, double e)
@@ -136,7 +135,7 @@ static void body3_local(const mkBody3 *b, double ux, double uy, double uz, doubl
 	normalize(n, 3);
 }
 
-mkVec2 mkReferee_Point2(mkBody2 b, mkVec2 u, mkVec2 *normal)
+mkVec2 mkReferee2_Point(mkBody2 b, mkVec2 u, mkVec2 *normal)
 {
 	double x[2], n[2];
 	body2_local(&b, u.x, u.y, x, n);
@@ -144,7 +143,7 @@ mkVec2 mkReferee_Point2(mkBody2 b, mkVec2 u, mkVec2 *normal)
 	return (mkVec2){b.t.x + x[0], b.t.y + x[1]};
 }
 
-mkVec3 mkReferee_Point3(mkBody3 b, mkVec3 u, mkVec3 *normal)
+mkVec3 mkReferee3_Point(mkBody3 b, mkVec3 u, mkVec3 *normal)
 {
 	double x[3], n[3];
 	body3_local(&b, u.x, u.y, u.z, x, n);
@@ -232,7 +231,7 @@ static int dense2(Dense *d, const mkBody2 *b, int n, double sign)
 	if (dense_alloc(d, 2, n, n)) return -1;
 	for (int k = 0; k < n; ++k) {
 		/* Angles offset by half a step from the methods' own grid. */
-		double th = -PI + 2.0 * PI * (k + 0.5) / n;
+		double th = -MK_PI + 2.0 * MK_PI * (k + 0.5) / n;
 		body2_local(b, cos(th), sin(th), d->x + 2 * k, d->nrm + 2 * k);
 	}
 	d->R = radius2(b);
@@ -246,10 +245,10 @@ static int dense3(Dense *d, const mkBody3 *b, int n, double sign)
 {
 	if (dense_alloc(d, 3, n, n * n)) return -1;
 	for (int i = 0; i < n; ++i) {
-		double eta = -PI / 2 + PI * i / (n - 1);
+		double eta = -MK_PI / 2 + MK_PI * i / (n - 1);
 		double ce = (i == 0 || i == n - 1) ? 0.0 : cos(eta), se = sin(eta);
 		for (int j = 0; j < n; ++j) {
-			double om = -PI + 2.0 * PI * (j + 0.5) / n;
+			double om = -MK_PI + 2.0 * MK_PI * (j + 0.5) / n;
 			int k = i * n + j;
 			body3_local(b, ce * cos(om), ce * sin(om), se, d->x + 3 * k, d->nrm + 3 * k);
 		}
@@ -492,7 +491,7 @@ static void local3(const Dense *d, const double *dir, double *lo, double *up)
 	for (int s = 1; s < LOCAL_STEPS; ++s) {
 		double D = local_step[s];
 		for (int j = 0; j < 3; ++j) {
-			double c = cos(2 * PI * j / 3), sn = sin(2 * PI * j / 3), v[3];
+			double c = cos(2 * MK_PI * j / 3), sn = sin(2 * MK_PI * j / 3), v[3];
 			for (int i = 0; i < 3; ++i) v[i] = u[i] + D * (c * t1[i] + sn * t2[i]);
 			body3_local(b, v[0], v[1], v[2], x[1 + j], nn[1 + j]);
 		}
@@ -635,7 +634,7 @@ static int dense_default(const mkRefereeOptions *opt, int dim)
 	return dim == 2 ? 8192 : 128;
 }
 
-mkResult mkReferee_Support2(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts, const double *nx,
+mkResult mkReferee2_Support(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts, const double *nx,
 	const double *ny, const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!pts || !nx || !ny || !v || pts->dim != 2 || (set != MK_SET_CONTACT && set != MK_SET_PLUS))
@@ -656,7 +655,7 @@ mkResult mkReferee_Support2(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet 
 	return r;
 }
 
-mkResult mkReferee_Support3(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts, const double *nx,
+mkResult mkReferee3_Support(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts, const double *nx,
 	const double *ny, const double *nz, const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!pts || !nx || !ny || !nz || !v || pts->dim != 3 || (set != MK_SET_CONTACT && set != MK_SET_PLUS))
@@ -712,61 +711,63 @@ static void hull_verdict(mkVerdict *v, const mkHullReport *h, double coord_max)
 			h->why[0] ? "; " : "", h->why);
 }
 
-mkResult mkReferee_Hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
+/* The part of the hull check before the input is rebuilt: 0, with the
+ * verdict written, when the output has points that are not finite. */
+static int hull_start(mkVerdict *v, const mkPointSet *out, long ns)
 {
-	if (!out || !v || out->dim != 2 || n < 1 || n > MK_HULL2_N_MAX) return MK_ERR_ARGUMENT;
 	verdict_init(v, MK_VERDICT_HULL, out->count);
 	v->depth = v->excess = 0;
-	long ns = (long)n * n;
 	v->inputs = (int)ns;
-	if (!all_finite(out)) {
-		v->nonfinite = 1;
-		snprintf(v->message, sizeof v->message, "FAIL: the output has points that are not finite");
-		return MK_OK;
-	}
+	if (all_finite(out)) return 1;
+	v->nonfinite = 1;
+	snprintf(v->message, sizeof v->message, "FAIL: the output has points that are not finite");
+	return 0;
+}
+
+/* The verdict from the exact check's return code rc and report h, with
+ * the allowance scaled by the largest of the input's `values` coordinates. */
+static mkResult hull_finish(mkVerdict *v, int rc, const mkHullReport *h, const double *s, long values)
+{
+	if (rc) return rc == -1 ? MK_ERR_MEMORY : MK_ERR_UNSUPPORTED;
+	double cmax = 0;
+	for (long k = 0; k < values; ++k) cmax = fmax(cmax, fabs(s[k]));
+	hull_verdict(v, h, cmax);
+	return MK_OK;
+}
+
+mkResult mkReferee2_Hull(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
+{
+	if (!out || !v || out->dim != 2 || n < 1 || n > MK_HULL2_N_MAX) return MK_ERR_ARGUMENT;
+	long ns = (long)n * n;
+	if (!hull_start(v, out, ns)) return MK_OK;
 	double *pq = malloc(4 * (size_t)n * sizeof *pq), *s = malloc(2 * (size_t)ns * sizeof *s);
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled2_Bodies(b1, b2, set, n, pq, pq + 2 * n);
 	if (r == MK_OK) {
-		mkSampled_Sums(2, pq, n, pq + 2 * n, n, s);
-		double cmax = 0;
-		for (long k = 0; k < 2 * ns; ++k) cmax = fmax(cmax, fabs(s[k]));
+		mkSampled2_Sums(pq, n, pq + 2 * n, n, s);
 		mkHullReport h;
 		int rc = mkRefereeCgal_Polygon(out->x, out->y, out->count, s, ns, &h);
-		if (rc) r = rc == -1 ? MK_ERR_MEMORY : MK_ERR_UNSUPPORTED;
-		else hull_verdict(v, &h, cmax);
+		r = hull_finish(v, rc, &h, s, 2 * ns);
 	}
 	free(pq);
 	free(s);
 	return r;
 }
 
-mkResult mkReferee_Hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
+mkResult mkReferee3_Hull(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v)
 {
 	if (!out || !v || out->dim != 3 || n < 2 || n > MK_HULL3_N_MAX) return MK_ERR_ARGUMENT;
-	verdict_init(v, MK_VERDICT_HULL, out->count);
-	v->depth = v->excess = 0;
 	int per = n * n;
 	long ns = (long)per * per;
-	v->inputs = (int)ns;
-	if (!all_finite(out)) {
-		v->nonfinite = 1;
-		snprintf(v->message, sizeof v->message, "FAIL: the output has points that are not finite");
-		return MK_OK;
-	}
+	if (!hull_start(v, out, ns)) return MK_OK;
 	double *pq = malloc(6 * (size_t)per * sizeof *pq), *s = malloc(3 * (size_t)ns * sizeof *s);
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled3_Bodies(b1, b2, set, n, pq, pq + 3 * (size_t)per);
 	if (r == MK_OK) {
-		mkSampled_Sums(3, pq, per, pq + 3 * (size_t)per, per, s);
-		double cmax = 0;
-		for (long k = 0; k < 3 * ns; ++k) cmax = fmax(cmax, fabs(s[k]));
+		mkSampled3_Sums(pq, per, pq + 3 * (size_t)per, per, s);
 		mkHullReport h;
 		int rc = mkRefereeCgal_Polytope(out->x, out->y, out->z, out->count, s, ns, &h);
-		if (rc) r = rc == -1 ? MK_ERR_MEMORY : MK_ERR_UNSUPPORTED;
-		else {
-			hull_verdict(v, &h, cmax);
-		}
+		r = hull_finish(v, rc, &h, s, 3 * ns);
 	}
 	free(pq);
 	free(s);
@@ -775,11 +776,11 @@ mkResult mkReferee_Hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPoint
 
 /* ---- dispatch -------------------------------------------------------------- */
 
-mkResult mkReferee_Check2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out,
+mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out,
 	const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!m || !out || !v || out->dim != 2) return MK_ERR_ARGUMENT;
-	if (m->flags & MK_METHOD_SAMPLED) return mkReferee_Hull2(b1, b2, set, n, out, v);
+	if (m->flags & MK_METHOD_SAMPLED) return mkReferee2_Hull(b1, b2, set, n, out, v);
 	if (n < 1 || out->count != n) return MK_ERR_ARGUMENT;
 	double *u = malloc(4 * (size_t)n * sizeof *u);
 	if (!u) return MK_ERR_MEMORY;
@@ -792,17 +793,17 @@ mkResult mkReferee_Check2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, 
 			nx[k] = nn[0];
 			ny[k] = nn[1];
 		}
-		r = mkReferee_Support2(b1, b2, set, out, nx, ny, opt, v);
+		r = mkReferee2_Support(b1, b2, set, out, nx, ny, opt, v);
 	}
 	free(u);
 	return r;
 }
 
-mkResult mkReferee_Check3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out,
+mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out,
 	const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!m || !out || !v || out->dim != 3) return MK_ERR_ARGUMENT;
-	if (m->flags & MK_METHOD_SAMPLED) return mkReferee_Hull3(b1, b2, set, n, out, v);
+	if (m->flags & MK_METHOD_SAMPLED) return mkReferee3_Hull(b1, b2, set, n, out, v);
 	if (n < 2 || n > 46340 || out->count != n * n) return MK_ERR_ARGUMENT;
 	int count = n * n;
 	double *u = malloc(6 * (size_t)count * sizeof *u);
@@ -817,7 +818,7 @@ mkResult mkReferee_Check3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, 
 			ny[k] = nn[1];
 			nz[k] = nn[2];
 		}
-		r = mkReferee_Support3(b1, b2, set, out, nx, ny, nz, opt, v);
+		r = mkReferee3_Support(b1, b2, set, out, nx, ny, nz, opt, v);
 	}
 	free(u);
 	return r;

@@ -25,6 +25,7 @@
 
 #include <mink/baselines.h>
 
+#include "cgal_common.hpp"
 #include "referee_cgal.h"
 
 namespace {
@@ -77,9 +78,27 @@ double DistanceToPolygon(const std::vector<P2> &v, const P2 &p)
 	return std::sqrt(best);
 }
 
+// check()'s result (0) for the hull checks, with *r cleared first; -1 when
+// memory ran out, -2 with *r cleared again and r->why saying so when CGAL
+// raised any other error.
+template <class Check>
+int Checked(mkHullReport *r, Check check)
+{
+	*r = mkHullReport();
+	try {
+		return check();
+	} catch (const std::bad_alloc &) {
+		return -1;
+	} catch (const std::exception &e) {
+		*r = mkHullReport();
+		std::snprintf(r->why, sizeof r->why, "CGAL failed: %s", e.what());
+		return -2;
+	}
+}
+
 } // namespace
 
-extern "C" int mkRefereeCgal_Orient2(const double *a, const double *b, const double *c)
+extern "C" int mkRefereeCgal2_Orient(const double *a, const double *b, const double *c)
 {
 	CGAL::Orientation o = CGAL::orientation(P2(a[0], a[1]), P2(b[0], b[1]), P2(c[0], c[1]));
 	return o == CGAL::LEFT_TURN ? 1 : o == CGAL::RIGHT_TURN ? -1 : 0;
@@ -88,8 +107,7 @@ extern "C" int mkRefereeCgal_Orient2(const double *a, const double *b, const dou
 extern "C" int mkRefereeCgal_Polygon(const double *vx, const double *vy, int nv, const double *s, long ns,
 	mkHullReport *r)
 {
-	*r = mkHullReport();
-	try {
+	return Checked(r, [&] {
 		std::vector<P2> v;
 		v.reserve(static_cast<std::size_t>(nv));
 		for (int k = 0; k < nv; ++k) v.emplace_back(vx[k], vy[k]);
@@ -150,20 +168,13 @@ extern "C" int mkRefereeCgal_Polygon(const double *vx, const double *vy, int nv,
 			}
 		}
 		return 0;
-	} catch (const std::bad_alloc &) {
-		return -1;
-	} catch (const std::exception &e) {
-		*r = mkHullReport();
-		std::snprintf(r->why, sizeof r->why, "CGAL failed: %s", e.what());
-		return -2;
-	}
+	});
 }
 
 extern "C" int mkRefereeCgal_Polytope(const double *vx, const double *vy, const double *vz, int nv,
 	const double *s, long ns, mkHullReport *r)
 {
-	*r = mkHullReport();
-	try {
+	return Checked(r, [&] {
 		std::vector<P3> v;
 		v.reserve(static_cast<std::size_t>(nv));
 		for (int k = 0; k < nv; ++k) v.emplace_back(vx[k], vy[k], vz[k]);
@@ -258,13 +269,7 @@ extern "C" int mkRefereeCgal_Polytope(const double *vx, const double *vy, const 
 			}
 		}
 		return 0;
-	} catch (const std::bad_alloc &) {
-		return -1;
-	} catch (const std::exception &e) {
-		*r = mkHullReport();
-		std::snprintf(r->why, sizeof r->why, "CGAL failed: %s", e.what());
-		return -2;
-	}
+	});
 }
 
 extern "C" mkResult mkMinkowski2_CgalEpeck(const double *P, int m, const double *Q, int n, mkPointSet *out)
@@ -273,7 +278,7 @@ extern "C" mkResult mkMinkowski2_CgalEpeck(const double *P, int m, const double 
 	typedef Epeck::Point_2 Point;
 	typedef CGAL::Polygon_2<Epeck> Polygon;
 	if (!P || !Q || !out || m < 1 || n < 1) return MK_ERR_ARGUMENT;
-	try {
+	return mkcgal::Guarded([&]() -> mkResult {
 		Polygon a, b;
 		for (int k = 0; k < m; ++k) a.push_back(Point(P[2 * k], P[2 * k + 1]));
 		for (int k = 0; k < n; ++k) b.push_back(Point(Q[2 * k], Q[2 * k + 1]));
@@ -295,20 +300,6 @@ extern "C" mkResult mkMinkowski2_CgalEpeck(const double *P, int m, const double 
 			}
 			v.swap(kept);
 		}
-		std::size_t best = 0;
-		for (std::size_t k = 1; k < v.size(); ++k)
-			if (v[k].y() < v[best].y() || (v[k].y() == v[best].y() && v[k].x() < v[best].x())) best = k;
-		std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(best), v.end());
-		mkResult r = mkPointSet_Resize(out, 2, static_cast<int>(v.size()));
-		if (r != MK_OK) return r;
-		for (std::size_t k = 0; k < v.size(); ++k) {
-			out->x[k] = CGAL::to_double(v[k].x());
-			out->y[k] = CGAL::to_double(v[k].y());
-		}
-		return MK_OK;
-	} catch (const std::bad_alloc &) {
-		return MK_ERR_MEMORY;
-	} catch (const std::exception &) {
-		return MK_ERR_UNSUPPORTED;
-	}
+		return mkcgal::PolygonOut(v, out);
+	});
 }

@@ -42,7 +42,7 @@ MK_API int mkCgalHull3_Mesh(const double *xyz, int count, double **vertices, int
 
 /* CGAL's exact orientation of (a, b, c) in the plane (+1 left turn), for
  * cross-checking the suite's own predicate. */
-MK_API int mkRefereeCgal_Orient2(const double *a, const double *b, const double *c);
+MK_API int mkRefereeCgal2_Orient(const double *a, const double *b, const double *c);
 
 MK_EXTERN_C_END
 

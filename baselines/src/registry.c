@@ -1,12 +1,140 @@
-/* registry.c - the table of methods. To add a method, define its mkMethod
- * in a file of its own and add one line below with its resolution limits. */
+/* registry.c - the table of methods: every entry's name, description,
+ * flags, run and accept functions and resolution range, in one place. The
+ * algorithms are in closed.c (the core's closed forms), geometric.c and
+ * sampled.c (hulls of pairwise sums, edge sorting). An entry that is one
+ * member of a family (one closed form, one hull library) gets its own run
+ * functions below, which bind the family's parameter: an mkMethod's run
+ * functions take no context. A method of its own kind can instead define
+ * its mkMethod in its own file (mink/registry.h); it then needs only an
+ * extern declaration and its line of the table here. */
 #include <limits.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
+#include <mink/baselines.h>
 #include <mink/registry.h>
 
 #include "registry_internal.h"
+
+/* ---- family members: the parameter bound ---------------------------------- */
+
+static mkResult normal2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_NORMAL);
+}
+static mkResult normal3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_NORMAL);
+}
+static mkResult gradient2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_GRADIENT);
+}
+static mkResult gradient3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_GRADIENT);
+}
+static mkResult paper2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_PAPER);
+}
+static mkResult paper3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_PAPER);
+}
+static mkResult epick2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkHullSums2_Run(b1, b2, set, n, out, mkHull2_CgalEpick);
+}
+static mkResult epick3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkHullSums3_Run(b1, b2, set, n, out, mkHull3_CgalEpick);
+}
+static mkResult epeck2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkHullSums2_Run(b1, b2, set, n, out, mkHull2_CgalEpeck);
+}
+static mkResult epeck3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkHullSums3_Run(b1, b2, set, n, out, mkHull3_CgalEpeck);
+}
+static mkResult qhull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkHullSums2_Run(b1, b2, set, n, out, mkHull2_Qhull);
+}
+static mkResult qhull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkHullSums3_Run(b1, b2, set, n, out, mkHull3_Qhull);
+}
+
+/* ---- the entries ------------------------------------------------------------ */
+
+const mkMethod mkMethod_ClosedNormal = {
+	"closed-normal",
+	"closed form, Theorem 1: support points f~1(n) - f~2(-n) along body 1's normals",
+	"Ruan & Chirikjian, CAD 2022, Theorem 1 and eq. mink_sum_transform_1",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT,
+	mkAcceptAny2, mkAcceptAny3, normal2, normal3,
+};
+
+const mkMethod mkMethod_ClosedGradient = {
+	"closed-gradient",
+	"closed form, Theorem 2: un-normalised gradients, f~~ evaluated stably",
+	"Ruan & Chirikjian, CAD 2022, Theorem 2 and eq. mink_sum_transform_2",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT,
+	mkAcceptAny2, mkAcceptAny3, gradient2, gradient3,
+};
+
+const mkMethod mkMethod_ClosedPaper = {
+	"closed-paper",
+	"Theorem 2 exactly as printed (reference only: loses digits near the 3D poles)",
+	"Ruan & Chirikjian, CAD 2022, eqs. 2d_sq_f_m, 3d_sq_f_m, Phi_m1_general",
+	MK_METHOD_2D | MK_METHOD_3D,
+	mkAcceptAny2, mkAcceptAny3, paper2, paper3,
+};
+
+const mkMethod mkMethod_Geometric = {
+	"geometric",
+	"closed-form geometric: body 1 offset through the map that makes ellipse body 2 a sphere",
+	"Yan & Chirikjian, Geometriae Dedicata 2015; Ruan et al., WAFR 2018 (body2 an ellipse/ellipsoid)",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT,
+	mkGeometric2_Accepts, mkGeometric3_Accepts, mkGeometric2_Run, mkGeometric3_Run,
+};
+
+const mkMethod mkMethod_HullCgalEpick = {
+	"hull-cgal-epick",
+	"convex hull of all pairwise sums of samples, CGAL on exact predicates (inexact constructions)",
+	"definition (Lozano-Perez); CGAL convex_hull_2 / convex_hull_3, Epick kernel",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_SAMPLED,
+	mkAcceptAny2, mkAcceptAny3, epick2, epick3,
+};
+
+const mkMethod mkMethod_HullCgalEpeck = {
+	"hull-cgal-epeck",
+	"convex hull of all pairwise sums of samples, CGAL on exact predicates and exact constructions",
+	"definition (Lozano-Perez); CGAL convex_hull_2 / convex_hull_3, Epeck kernel",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_SAMPLED,
+	mkAcceptAny2, mkAcceptAny3, epeck2, epeck3,
+};
+
+const mkMethod mkMethod_HullQhull = {
+	"hull-qhull",
+	"convex hull of all pairwise sums of samples, Qhull (what MATLAB's convhull runs)",
+	"definition (Lozano-Perez); Barber, Dobkin & Huhdanpaa, ACM TOMS 1996 (libqhull_r)",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_SAMPLED,
+	mkAcceptAny2, mkAcceptAny3, qhull2, qhull3,
+};
+
+const mkMethod mkMethod_EdgeSort = {
+	"edge-sort",
+	"edge sorting: O(m+n) merge of the two sample polygons' edges by slope, exact tests",
+	"de Berg, Cheong, van Kreveld & Overmars, Computational Geometry, 3rd ed. 2008, Sec. 13.3",
+	MK_METHOD_2D | MK_METHOD_SAMPLED,
+	mkAcceptAny2, NULL, mkEdgeSort2_Run, NULL,
+};
+
+/* ---- the table, with each entry's resolution range --------------------------- */
 
 typedef struct Entry {
 	const mkMethod *method;
@@ -53,14 +181,8 @@ static int runs_in(const mkMethod *m, int dim)
 
 int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)
 {
-	if (!m) {
-		if (msg && msglen) snprintf(msg, msglen, "no method given");
-		return 0;
-	}
-	if (!runs_in(m, dim)) {
-		if (msg && msglen) snprintf(msg, msglen, "method %s does not run in %dD", m->name, dim);
-		return 0;
-	}
+	if (!m) return mkRefuse(msg, msglen, "no method given");
+	if (!runs_in(m, dim)) return mkRefuse(msg, msglen, "method %s does not run in %dD", m->name, dim);
 	int lo = 1, hi = INT_MAX;
 	for (int i = 0; i < COUNT; ++i)
 		if (table[i].method == m) {
@@ -68,31 +190,35 @@ int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)
 			hi = dim == 2 ? table[i].nmax2 : table[i].nmax3;
 		}
 	if (n >= lo && n <= hi) return 1;
-	if (msg && msglen) {
-		const char *unit = (m->flags & MK_METHOD_SAMPLED) ? (dim == 2 ? "samples per body" : "grid side per body")
-			: (dim == 2 ? "points" : "grid side");
-		snprintf(msg, msglen, "n = %d is out of range for method %s in %dD: n (%s) must be in [%d, %d]",
-			n, m->name, dim, unit, lo, hi);
-	}
-	return 0;
+	const char *unit = (m->flags & MK_METHOD_SAMPLED) ? (dim == 2 ? "samples per body" : "grid side per body")
+		: (dim == 2 ? "points" : "grid side");
+	return mkRefuse(msg, msglen, "n = %d is out of range for method %s in %dD: n (%s) must be in [%d, %d]",
+		n, m->name, dim, unit, lo, hi);
 }
 
-int mkMethod_Accepts2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)
+int mkMethod2_Accepts(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)
 {
-	if (!m || !runs_in(m, 2) || !m->accepts2) {
-		if (msg && msglen) snprintf(msg, msglen, "method %s does not run in 2D", m ? m->name : "(none)");
-		return 0;
-	}
+	if (!m || !runs_in(m, 2) || !m->accepts2)
+		return mkRefuse(msg, msglen, "method %s does not run in 2D", m ? m->name : "(none)");
 	return m->accepts2(b1, b2, set, msg, msglen);
 }
 
-int mkMethod_Accepts3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen)
+int mkMethod3_Accepts(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen)
 {
-	if (!m || !runs_in(m, 3) || !m->accepts3) {
-		if (msg && msglen) snprintf(msg, msglen, "method %s does not run in 3D", m ? m->name : "(none)");
-		return 0;
-	}
+	if (!m || !runs_in(m, 3) || !m->accepts3)
+		return mkRefuse(msg, msglen, "method %s does not run in 3D", m ? m->name : "(none)");
 	return m->accepts3(b1, b2, set, msg, msglen);
+}
+
+int mkRefuse(char *msg, size_t msglen, const char *format, ...)
+{
+	if (msg && msglen) {
+		va_list args;
+		va_start(args, format);
+		vsnprintf(msg, msglen, format, args);
+		va_end(args);
+	}
+	return 0;
 }
 
 int mkAcceptAny2(mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)

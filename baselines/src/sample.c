@@ -63,10 +63,21 @@ mkResult mkSampled3_Bodies(mkBody3 b1, mkBody3 b2, mkSet set, int n, double *p, 
 	return r;
 }
 
-void mkSampled_Sums(int dim, const double *p, int m, const double *q, int n, double *s)
+/* One loop for both dimensions; the public pair fixes dim. */
+static void sums(int dim, const double *p, int m, const double *q, int n, double *s)
 {
 	size_t k = 0;
 	for (int i = 0; i < m; ++i)
 		for (int j = 0; j < n; ++j)
 			for (int c = 0; c < dim; ++c) s[k++] = p[dim * i + c] + q[dim * j + c];
+}
+
+void mkSampled2_Sums(const double *p, int m, const double *q, int n, double *s)
+{
+	sums(2, p, m, q, n, s);
+}
+
+void mkSampled3_Sums(const double *p, int m, const double *q, int n, double *s)
+{
+	sums(3, p, m, q, n, s);
 }

@@ -1,6 +1,7 @@
-/* sampled.c - the sampled baselines as registry entries: the convex hull of
- * all pairwise sums of boundary samples (the paper's "definition" method,
- * with three hull implementations) and edge sorting (2D). */
+/* sampled.c - the sampled baselines: the convex hull of all pairwise sums
+ * of boundary samples (the paper's "definition" method, a family of
+ * registry entries, one per hull library, bound in registry.c) and edge
+ * sorting (2D). */
 #include <stdlib.h>
 
 #include <mink/baselines.h>
@@ -8,9 +9,7 @@
 
 #include "registry_internal.h"
 
-typedef mkResult (*HullFn)(const double *pts, int count, mkPointSet *out);
-
-static mkResult hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out, HullFn hull)
+mkResult mkHullSums2_Run(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out, mkHullFn hull)
 {
 	if (!out) return MK_ERR_ARGUMENT;
 	if (n < MK_SAMPLED_N_MIN || n > MK_HULL2_N_MAX) return MK_ERR_RANGE;
@@ -20,7 +19,7 @@ static mkResult hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out,
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled2_Bodies(b1, b2, set, n, pq, pq + 2 * n);
 	if (r == MK_OK) {
-		mkSampled_Sums(2, pq, n, pq + 2 * n, n, s);
+		mkSampled2_Sums(pq, n, pq + 2 * n, n, s);
 		r = hull(s, (int)count, out);
 	}
 	free(pq);
@@ -28,7 +27,7 @@ static mkResult hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out,
 	return r;
 }
 
-static mkResult hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out, HullFn hull)
+mkResult mkHullSums3_Run(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out, mkHullFn hull)
 {
 	if (!out) return MK_ERR_ARGUMENT;
 	if (n < MK_SAMPLED_N_MIN || n > MK_HULL3_N_MAX) return MK_ERR_RANGE;
@@ -39,7 +38,7 @@ static mkResult hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out,
 	mkResult r = pq && s ? MK_OK : MK_ERR_MEMORY;
 	if (r == MK_OK) r = mkSampled3_Bodies(b1, b2, set, n, pq, pq + 3 * (size_t)per);
 	if (r == MK_OK) {
-		mkSampled_Sums(3, pq, per, pq + 3 * (size_t)per, per, s);
+		mkSampled3_Sums(pq, per, pq + 3 * (size_t)per, per, s);
 		r = hull(s, (int)count, out);
 	}
 	free(pq);
@@ -47,36 +46,11 @@ static mkResult hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out,
 	return r;
 }
 
-static mkResult epick2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
-{
-	return hull2(b1, b2, set, n, out, mkHull2_CgalEpick);
-}
-static mkResult epick3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
-{
-	return hull3(b1, b2, set, n, out, mkHull3_CgalEpick);
-}
-static mkResult epeck2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
-{
-	return hull2(b1, b2, set, n, out, mkHull2_CgalEpeck);
-}
-static mkResult epeck3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
-{
-	return hull3(b1, b2, set, n, out, mkHull3_CgalEpeck);
-}
-static mkResult qhull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
-{
-	return hull2(b1, b2, set, n, out, mkHull2_Qhull);
-}
-static mkResult qhull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
-{
-	return hull3(b1, b2, set, n, out, mkHull3_Qhull);
-}
-
 /* Edge sorting: each body's samples as a convex polygon (rounding can make
  * samples of nearly flat or nearly pointed bodies collinear or reflex; such
  * samples are dropped, exactly), the O(m + n) merge, and the same exact
  * cleanup of the merged vertices, whose sums are rounded. */
-static mkResult edgesort2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+mkResult mkEdgeSort2_Run(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
 {
 	if (!out) return MK_ERR_ARGUMENT;
 	if (n < MK_SAMPLED_N_MIN || n > MK_EDGESORT_N_MAX) return MK_ERR_RANGE;
@@ -113,35 +87,3 @@ static mkResult edgesort2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *
 	free(poly);
 	return r;
 }
-
-const mkMethod mkMethod_HullCgalEpick = {
-	"hull-cgal-epick",
-	"convex hull of all pairwise sums of samples, CGAL on exact predicates (inexact constructions)",
-	"definition (Lozano-Perez); CGAL convex_hull_2 / convex_hull_3, Epick kernel",
-	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_SAMPLED,
-	mkAcceptAny2, mkAcceptAny3, epick2, epick3,
-};
-
-const mkMethod mkMethod_HullCgalEpeck = {
-	"hull-cgal-epeck",
-	"convex hull of all pairwise sums of samples, CGAL on exact predicates and exact constructions",
-	"definition (Lozano-Perez); CGAL convex_hull_2 / convex_hull_3, Epeck kernel",
-	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_SAMPLED,
-	mkAcceptAny2, mkAcceptAny3, epeck2, epeck3,
-};
-
-const mkMethod mkMethod_HullQhull = {
-	"hull-qhull",
-	"convex hull of all pairwise sums of samples, Qhull (what MATLAB's convhull runs)",
-	"definition (Lozano-Perez); Barber, Dobkin & Huhdanpaa, ACM TOMS 1996 (libqhull_r)",
-	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_SAMPLED,
-	mkAcceptAny2, mkAcceptAny3, qhull2, qhull3,
-};
-
-const mkMethod mkMethod_EdgeSort = {
-	"edge-sort",
-	"edge sorting: O(m+n) merge of the two sample polygons' edges by slope, exact tests",
-	"de Berg, Cheong, van Kreveld & Overmars, Computational Geometry, 3rd ed. 2008, Sec. 13.3",
-	MK_METHOD_2D | MK_METHOD_SAMPLED,
-	mkAcceptAny2, NULL, edgesort2, NULL,
-};

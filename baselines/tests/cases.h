@@ -9,8 +9,6 @@
 
 #include "ensure.h"
 
-#define CASES_PI 3.14159265358979323846
-
 typedef struct Case2 { const char *name; mkBody2 a, b; } Case2;
 typedef struct Case3 { const char *name; mkBody3 a, b; } Case3;
 
@@ -36,9 +34,9 @@ static inline int cases2(Case2 *c, unsigned long long seed)
 		double e2 = t == 1 || t == 2 ? 1.0 : mk_test_uniform(&seed, 0.1, 1.9);
 		c[k].name = t == 2 ? "random EE" : t == 1 ? "random ES" : "random SQ";
 		c[k].a = case_body2(mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), e1,
-			mk_test_uniform(&seed, 0, 2 * CASES_PI), mk_test_uniform(&seed, -2, 2), mk_test_uniform(&seed, -5, 5), 1);
+			mk_test_uniform(&seed, 0, 2 * MK_PI), mk_test_uniform(&seed, -2, 2), mk_test_uniform(&seed, -5, 5), 1);
 		c[k].b = case_body2(mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), e2,
-			mk_test_uniform(&seed, 0, 2 * CASES_PI), mk_test_uniform(&seed, -2, 2), 2, mk_test_uniform(&seed, -5, 5));
+			mk_test_uniform(&seed, 0, 2 * MK_PI), mk_test_uniform(&seed, -2, 2), 2, mk_test_uniform(&seed, -5, 5));
 		++k;
 	}
 	c[k++] = (Case2){"box-like 1e3:1 shear 10 vs diamond-like shear -10",

@@ -20,8 +20,6 @@
 
 #include "ensure.h"
 
-#define PI 3.14159265358979323846
-
 static double slope(const double *n, const double *e, int m)
 {
 	double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -42,7 +40,7 @@ int main(void)
 	enum { D2 = 4096 };
 	static double dx[D2], dy[D2], h2[D2];
 	for (int i = 0; i < D2; ++i) {
-		dx[i] = cos(2 * PI * (i + 0.25) / D2), dy[i] = sin(2 * PI * (i + 0.25) / D2);
+		dx[i] = cos(2 * MK_PI * (i + 0.25) / D2), dy[i] = sin(2 * MK_PI * (i + 0.25) / D2);
 		mkVec2 d = {dx[i], dy[i]};
 		mkVec2 x = mkSum2_Point(a, b, MK_SET_CONTACT, MK_FORM_NORMAL, MK_PARAM_NORMAL, d, NULL);
 		h2[i] = d.x * x.x + d.y * x.y;
@@ -85,7 +83,7 @@ int main(void)
 	enum { D3 = 2000 };
 	static double ex[D3], ey[D3], ez[D3], h3[D3];
 	for (int i = 0; i < D3; ++i) {
-		double z = 1 - (2.0 * i + 1) / D3, r = sqrt(1 - z * z), phi = PI * (3 - sqrt(5.0)) * i;
+		double z = 1 - (2.0 * i + 1) / D3, r = sqrt(1 - z * z), phi = MK_PI * (3 - sqrt(5.0)) * i;
 		ex[i] = r * cos(phi), ey[i] = r * sin(phi), ez[i] = z;
 		mkVec3 dd = {ex[i], ey[i], ez[i]};
 		mkVec3 x = mkSum3_Point(c, d, MK_SET_PLUS, MK_FORM_NORMAL, MK_PARAM_NORMAL, dd, NULL);

@@ -10,8 +10,6 @@
 
 #include "ensure.h"
 
-#define PI 3.14159265358979323846
-
 /* |t1| + |t2| + |M1| max a1 + |M2| max a2 (max norms): the size every
  * coordinate of the sum is made of. */
 static double scale2(mkBody2 a, mkBody2 b)
@@ -38,34 +36,36 @@ static double scale3(mkBody3 a, mkBody3 b)
 	return s;
 }
 
-/* Largest coordinate difference of the two methods' outputs, over S. */
+/* Largest coordinate difference of the two methods' outputs g and c (when
+ * both ran) over the scale; the point sets are freed. */
+static double relative_diff(mkResult rg, mkResult rc, mkPointSet *g, mkPointSet *c, double scale)
+{
+	double worst = HUGE_VAL;
+	if (rg == MK_OK && rc == MK_OK) {
+		worst = 0;
+		for (int k = 0; k < g->count; ++k) {
+			worst = fmax(worst, fmax(fabs(g->x[k] - c->x[k]), fabs(g->y[k] - c->y[k])));
+			if (g->dim == 3) worst = fmax(worst, fabs(g->z[k] - c->z[k]));
+		}
+		worst /= scale;
+	}
+	mkPointSet_Free(g);
+	mkPointSet_Free(c);
+	return worst;
+}
+
 static double diff2(mkBody2 a, mkBody2 b, mkSet set, int n)
 {
 	mkPointSet g = {0}, c = {0};
-	double worst = HUGE_VAL;
-	if (mkMethod_Geometric.run2(a, b, set, n, &g) == MK_OK && mkMethod_ClosedNormal.run2(a, b, set, n, &c) == MK_OK) {
-		worst = 0;
-		for (int k = 0; k < n; ++k) worst = fmax(worst, fmax(fabs(g.x[k] - c.x[k]), fabs(g.y[k] - c.y[k])));
-		worst /= scale2(a, b);
-	}
-	mkPointSet_Free(&g);
-	mkPointSet_Free(&c);
-	return worst;
+	mkResult rg = mkMethod_Geometric.run2(a, b, set, n, &g), rc = mkMethod_ClosedNormal.run2(a, b, set, n, &c);
+	return relative_diff(rg, rc, &g, &c, scale2(a, b));
 }
 
 static double diff3(mkBody3 a, mkBody3 b, mkSet set, int n)
 {
 	mkPointSet g = {0}, c = {0};
-	double worst = HUGE_VAL;
-	if (mkMethod_Geometric.run3(a, b, set, n, &g) == MK_OK && mkMethod_ClosedNormal.run3(a, b, set, n, &c) == MK_OK) {
-		worst = 0;
-		for (int k = 0; k < n * n; ++k)
-			worst = fmax(worst, fmax(fabs(g.x[k] - c.x[k]), fmax(fabs(g.y[k] - c.y[k]), fabs(g.z[k] - c.z[k]))));
-		worst /= scale3(a, b);
-	}
-	mkPointSet_Free(&g);
-	mkPointSet_Free(&c);
-	return worst;
+	mkResult rg = mkMethod_Geometric.run3(a, b, set, n, &g), rc = mkMethod_ClosedNormal.run3(a, b, set, n, &c);
+	return relative_diff(rg, rc, &g, &c, scale3(a, b));
 }
 
 int main(void)
@@ -92,9 +92,9 @@ int main(void)
 		mkShape2 s1 = {mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11),
 			t % 4 < 2 ? mk_test_uniform(&seed, 0.1, 1.9) : 1.0};
 		mkShape2 s2 = {mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1.0};
-		mkBody2 a = mkBody2_Make(s1, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * PI)),
+		mkBody2 a = mkBody2_Make(s1, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * MK_PI)),
 			mkMat2_Shear(mk_test_uniform(&seed, -2, 2))), (mkVec2){mk_test_uniform(&seed, -5, 5), 3});
-		mkBody2 b = mkBody2_Make(s2, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * PI)),
+		mkBody2 b = mkBody2_Make(s2, mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(&seed, 0, 2 * MK_PI)),
 			mkMat2_Shear(mk_test_uniform(&seed, -2, 2))), (mkVec2){-2, mk_test_uniform(&seed, -5, 5)});
 		worst_random = fmax(worst_random, diff2(a, b, set, 500));
 		/* 3D: body 1 a superquadric (or an ellipsoid), body 2 an ellipsoid. */

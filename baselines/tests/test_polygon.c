@@ -9,8 +9,6 @@
 
 #include "ensure.h"
 
-#define PI 3.14159265358979323846
-
 /* Edge sort against CGAL: same vertex count, same vertices in the same
  * order. Both are the exact vertices P_i + Q_j, one rounded to nearest by
  * the addition (error <= u |v|), the other converted by CGAL::to_double from
@@ -47,7 +45,7 @@ static int check_merge(const double *P, int m, const double *Q, int n)
 static int body_ring(unsigned long long *seed, int n, double *ring, double *poly)
 {
 	mkShape2 s = {mk_test_uniform(seed, 0.5, 10), mk_test_uniform(seed, 0.5, 10), mk_test_uniform(seed, 0.1, 1.9)};
-	mkMat2 M = mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(seed, 0, 2 * PI)), mkMat2_Shear(mk_test_uniform(seed, -2, 2)));
+	mkMat2 M = mkMat2_Mul(mkMat2_Rotation(mk_test_uniform(seed, 0, 2 * MK_PI)), mkMat2_Shear(mk_test_uniform(seed, -2, 2)));
 	if (mk_test_unit(seed) < 0.3) M.m[0][0] = -M.m[0][0], M.m[1][0] = -M.m[1][0]; /* a reflection: clockwise ring */
 	mkBody2 b = mkBody2_Make(s, M, (mkVec2){mk_test_uniform(seed, -5, 5), mk_test_uniform(seed, -5, 5)});
 	double *u = malloc(2 * (size_t)n * sizeof *u);
@@ -79,8 +77,8 @@ int main(void)
 	 * the pentagon. */
 	double star[10];
 	for (int k = 0; k < 5; ++k) {
-		star[2 * k] = cos(PI / 2 + 4 * PI * k / 5);
-		star[2 * k + 1] = sin(PI / 2 + 4 * PI * k / 5);
+		star[2 * k] = cos(MK_PI / 2 + 4 * MK_PI * k / 5);
+		star[2 * k + 1] = sin(MK_PI / 2 + 4 * MK_PI * k / 5);
 	}
 	int c = mkPolygon2_Convex(star, 5, out);
 	ENSURE(c == 5);
@@ -110,8 +108,8 @@ int main(void)
 	/* Against CGAL: polygons with parallel edges (squares, a hexagon, an
 	 * octagon sharing four directions with the square). */
 	double hex[12], oct[16];
-	for (int k = 0; k < 6; ++k) hex[2 * k] = cos(PI * k / 3 - PI / 2), hex[2 * k + 1] = sin(PI * k / 3 - PI / 2);
-	for (int k = 0; k < 8; ++k) oct[2 * k] = 3 * cos(PI * k / 4 - PI / 2), oct[2 * k + 1] = 3 * sin(PI * k / 4 - PI / 2);
+	for (int k = 0; k < 6; ++k) hex[2 * k] = cos(MK_PI * k / 3 - MK_PI / 2), hex[2 * k + 1] = sin(MK_PI * k / 3 - MK_PI / 2);
+	for (int k = 0; k < 8; ++k) oct[2 * k] = 3 * cos(MK_PI * k / 4 - MK_PI / 2), oct[2 * k + 1] = 3 * sin(MK_PI * k / 4 - MK_PI / 2);
 	double hexp[12], octp[16];
 	ENSURE(mkPolygon2_Convex(hex, 6, hexp) == 6);
 	ENSURE(mkPolygon2_Convex(oct, 8, octp) == 8);

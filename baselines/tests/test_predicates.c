@@ -36,7 +36,7 @@ int main(void)
 			double c[2] = {0.5 + i * DBL_EPSILON, 0.5 + j * DBL_EPSILON};
 			int want = (j > i) - (j < i); /* above the line y = x: left turn */
 			ENSURE(mkOrient2(a, b, c) == want);
-			ENSURE(mkRefereeCgal_Orient2(a, b, c) == want);
+			ENSURE(mkRefereeCgal2_Orient(a, b, c) == want);
 			double naive = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
 			if (((naive > 0) - (naive < 0)) != want) ++wrong_naive;
 		}
@@ -53,11 +53,11 @@ int main(void)
 		double c[2] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
 		int nud = (int)(mk_test_unit(&seed) * 7) - 3;
 		c[1] = nud > 0 ? nextafter(c[1], HUGE_VAL) : nud < 0 ? nextafter(c[1], -HUGE_VAL) : c[1];
-		if (mkOrient2(a, b, c) != mkRefereeCgal_Orient2(a, b, c)) ++disagree;
+		if (mkOrient2(a, b, c) != mkRefereeCgal2_Orient(a, b, c)) ++disagree;
 		/* (b - a) x (d - c) = orient(a, b, a + d - c) only in exact arithmetic;
 		 * check the four-point form against CGAL with c = a, which makes them
 		 * equal. */
-		if (mkCross2_Sign(a, b, a, c) != mkRefereeCgal_Orient2(a, b, c)) ++disagree;
+		if (mkCross2_Sign(a, b, a, c) != mkRefereeCgal2_Orient(a, b, c)) ++disagree;
 	}
 	ENSURE(disagree == 0);
 
@@ -77,7 +77,7 @@ int main(void)
 		double c[2] = {floor(mk_test_uniform(&seed, -1, 1) / g) * g, floor(mk_test_uniform(&seed, -1, 1) / g) * g};
 		double dd[2] = {c[0] + dx, c[1] + dy};
 		double ad[2] = {a[0] + dx, a[1] + dy};
-		if (mkCross2_Sign(a, b, c, dd) != mkRefereeCgal_Orient2(a, b, ad)) ++disagree;
+		if (mkCross2_Sign(a, b, c, dd) != mkRefereeCgal2_Orient(a, b, ad)) ++disagree;
 	}
 	ENSURE(disagree == 0);
 	return mk_summary("test_predicates");

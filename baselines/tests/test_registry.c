@@ -54,19 +54,19 @@ int main(void)
 	/* The geometric formula needs body 2 an ellipse / ellipsoid. */
 	char msg[512];
 	mkBody2 se = superellipse(3, 2, 0.5), el = superellipse(3, 2, 1.0);
-	ENSURE(mkMethod_Accepts2(&mkMethod_Geometric, se, el, MK_SET_CONTACT, msg, sizeof msg));
-	ENSURE(!mkMethod_Accepts2(&mkMethod_Geometric, el, se, MK_SET_CONTACT, msg, sizeof msg));
+	ENSURE(mkMethod2_Accepts(&mkMethod_Geometric, se, el, MK_SET_CONTACT, msg, sizeof msg));
+	ENSURE(!mkMethod2_Accepts(&mkMethod_Geometric, el, se, MK_SET_CONTACT, msg, sizeof msg));
 	ENSURE(strstr(msg, "body2.eps") != NULL);
 	mkBody3 sq = superquadric(3, 2, 1, 0.5, 1.5), ed = superquadric(3, 2, 1, 1, 1);
-	ENSURE(mkMethod_Accepts3(&mkMethod_Geometric, sq, ed, MK_SET_PLUS, msg, sizeof msg));
-	ENSURE(!mkMethod_Accepts3(&mkMethod_Geometric, sq, sq, MK_SET_PLUS, msg, sizeof msg));
+	ENSURE(mkMethod3_Accepts(&mkMethod_Geometric, sq, ed, MK_SET_PLUS, msg, sizeof msg));
+	ENSURE(!mkMethod3_Accepts(&mkMethod_Geometric, sq, sq, MK_SET_PLUS, msg, sizeof msg));
 	ENSURE(strstr(msg, "body2.eps1") != NULL);
 	/* Run anyway: refused, nothing computed. */
 	mkPointSet out = {0};
 	ENSURE(mkMethod_Geometric.run3(sq, sq, MK_SET_CONTACT, 10, &out) == MK_ERR_UNSUPPORTED);
 
 	/* Edge sorting is 2D only. */
-	ENSURE(!mkMethod_Accepts3(&mkMethod_EdgeSort, sq, ed, MK_SET_CONTACT, msg, sizeof msg));
+	ENSURE(!mkMethod3_Accepts(&mkMethod_EdgeSort, sq, ed, MK_SET_CONTACT, msg, sizeof msg));
 	ENSURE(strstr(msg, "does not run in 3D") != NULL);
 	ENSURE(!mkMethod_CheckN(&mkMethod_EdgeSort, 3, 10, msg, sizeof msg));
 

@@ -28,7 +28,7 @@ static int judge2(const mkMethod *m, const Case2 *c, mkSet set, int n, const mkP
 {
 	mkVerdict v;
 	mkRefereeOptions opt = {2048, 0, 0};
-	if (mkReferee_Check2(m, c->a, c->b, set, n, p, &opt, &v) != MK_OK) return -1;
+	if (mkReferee2_Check(m, c->a, c->b, set, n, p, &opt, &v) != MK_OK) return -1;
 	return v.pass;
 }
 
@@ -36,7 +36,7 @@ static int judge3(const mkMethod *m, const Case3 *c, mkSet set, int n, const mkP
 {
 	mkVerdict v;
 	mkRefereeOptions opt = {32, 0, 0};
-	if (mkReferee_Check3(m, c->a, c->b, set, n, p, &opt, &v) != MK_OK) return -1;
+	if (mkReferee3_Check(m, c->a, c->b, set, n, p, &opt, &v) != MK_OK) return -1;
 	return v.pass;
 }
 
@@ -56,9 +56,9 @@ int main(void)
 	double *u = malloc(2 * (size_t)n * sizeof *u);
 	mkSample2_Angles(n, u, u + n);
 	mkVec2 nrm;
-	mkReferee_Point2(c->a, (mkVec2){u[k], u[n + k]}, &nrm);
+	mkReferee2_Point(c->a, (mkVec2){u[k], u[n + k]}, &nrm);
 	mkVerdict v;
-	ENSURE(mkReferee_Check2(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &good, NULL, &v) == MK_OK);
+	ENSURE(mkReferee2_Check(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &good, NULL, &v) == MK_OK);
 	/* A move of 1e-11 of the scale, some twenty times the allowance: out
 	 * along the normal, then in. */
 	double d = 1e-11 * v.scale;
@@ -77,7 +77,7 @@ int main(void)
 	bad.y[k] = good.y[k] + 0.05 * v.scale * nrm.x;
 	ENSURE(judge2(&mkMethod_ClosedGradient, c, MK_SET_CONTACT, n, &bad) == 0);
 	mkRefereeOptions nofan = {2048, 0, 1};
-	ENSURE(mkReferee_Check2(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &bad, &nofan, &v) == MK_OK);
+	ENSURE(mkReferee2_Check(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &bad, &nofan, &v) == MK_OK);
 	ENSURE(v.pass); /* without the fan it escapes: the fan is what catches it */
 	/* A NaN. */
 	bad.x[k] = NAN;
@@ -124,11 +124,11 @@ int main(void)
 	const int n3 = 12, k3 = 5 * 12 + 7;
 	ENSURE(mkMethod_ClosedNormal.run3(e->a, e->b, MK_SET_PLUS, n3, &good) == MK_OK);
 	ENSURE(judge3(&mkMethod_ClosedNormal, e, MK_SET_PLUS, n3, &good) == 1);
-	ENSURE(mkReferee_Check3(&mkMethod_ClosedNormal, e->a, e->b, MK_SET_PLUS, n3, &good, NULL, &v) == MK_OK);
+	ENSURE(mkReferee3_Check(&mkMethod_ClosedNormal, e->a, e->b, MK_SET_PLUS, n3, &good, NULL, &v) == MK_OK);
 	double *u3 = malloc(3 * (size_t)n3 * n3 * sizeof *u3);
 	mkSample3_Grid(n3, u3, u3 + n3 * n3, u3 + 2 * n3 * n3);
 	mkVec3 nn;
-	mkReferee_Point3(e->a, (mkVec3){u3[k3], u3[n3 * n3 + k3], u3[2 * n3 * n3 + k3]}, &nn);
+	mkReferee3_Point(e->a, (mkVec3){u3[k3], u3[n3 * n3 + k3], u3[2 * n3 * n3 + k3]}, &nn);
 	bad = copy(&good);
 	d = 1e-11 * v.scale;
 	bad.x[k3] += d * nn.x;
@@ -172,7 +172,7 @@ int main(void)
 		bad.x[good.count] = pq[3 * i1] + pq[3 * per + 3 * i2];
 		bad.y[good.count] = pq[3 * i1 + 1] + pq[3 * per + 3 * i2 + 1];
 		bad.z[good.count] = pq[3 * i1 + 2] + pq[3 * per + 3 * i2 + 2];
-		ENSURE(mkReferee_Check3(&mkMethod_HullCgalEpick, e->a, e->b, MK_SET_CONTACT, s3, &bad, NULL, &v) == MK_OK);
+		ENSURE(mkReferee3_Check(&mkMethod_HullCgalEpick, e->a, e->b, MK_SET_CONTACT, s3, &bad, NULL, &v) == MK_OK);
 		ENSURE(!v.pass && v.subset && !v.convex);
 		mkPointSet_Free(&bad);
 		free(pq);
@@ -192,7 +192,7 @@ int main(void)
 		double *uu = malloc(2 * (size_t)n * sizeof *uu);
 		mkSample2_Angles(n, uu, uu + n);
 		for (int i = 0; i < n; ++i) {
-			mkVec2 nn2, x1 = mkReferee_Point2(w->a, (mkVec2){uu[i], uu[n + i]}, &nn2);
+			mkVec2 nn2, x1 = mkReferee2_Point(w->a, (mkVec2){uu[i], uu[n + i]}, &nn2);
 			double cs = cos(1e-4), sn = sin(1e-4);
 			mkVec2 turned = {cs * nn2.x - sn * nn2.y, sn * nn2.x + cs * nn2.y};
 			mkVec2 s0 = mkBody2_Support(w->b, (mkVec2){-nn2.x, -nn2.y});

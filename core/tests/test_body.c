@@ -143,6 +143,61 @@ static void test_pole(void)
 	ENSURE(fabs(yp.x - x.x) > 0.5 * fabs(x.x) || !isfinite(yp.x));
 }
 
+/* Maps that nothing else in the suite calls, each the 2D or 3D twin of one
+ * that is used or tested (mkBody3_Implicit, mkBody3_SupportValue,
+ * mkShape2_SupportValue, mkBody2_Area), on bodies worked by hand. */
+static void test_placed(void)
+{
+	/* Ellipse a = 2, b = 1 turned by a quarter turn (written exactly) and
+	 * moved to t = (1, 1): the canonical point (2, 0) goes to M (2, 0) + t =
+	 * (1, 3), on the boundary; t is the centre (Psi = 0); (1, 5) is the
+	 * canonical (4, 0), where Psi = (4/2)^2 = 4. The quarter turn's inverse
+	 * is exact, so only Psi's own rounding (an ulp or two) remains. */
+	mkBody2 q = mkBody2_Make((mkShape2){2.0, 1.0, 1.0}, (mkMat2){{{0, -1}, {1, 0}}}, (mkVec2){1, 1});
+	ENSURE_NEAR(mkBody2_Implicit(q, (mkVec2){1, 3}), 1.0, 4.4e-16);
+	ENSURE_NEAR(mkBody2_Implicit(q, (mkVec2){1, 1}), 0.0, 0.0);
+	ENSURE_NEAR(mkBody2_Implicit(q, (mkVec2){1, 5}), 4.0, 8.9e-16);
+	/* A sheared superellipse: every boundary point the parametric map gives
+	 * lies on Psi = 1 (errors as in test_maps2, times cond(M) ~ 6). */
+	mkBody2 se = mkBody2_Make((mkShape2){2.5, 0.75, 0.4}, mkMat2_Mul(mkMat2_Rotation(0.7), mkMat2_Shear(2.0)),
+		(mkVec2){-3, 4});
+	for (int k = 0; k < 16; ++k) {
+		double t = -MK_PI + 2.0 * MK_PI * (k + 0.21) / 16;
+		ENSURE_NEAR(mkBody2_Implicit(se, mkBody2_Point(se, (mkVec2){cos(t), sin(t)})), 1.0, 6.0 * 8.0 * 5.0 * 2.2e-16);
+	}
+
+	/* Support value of an ellipse body t + M diag(a, b) S^1: h(n) = <n, t> +
+	 * |diag(a, b) M^T n|. a = 3, b = 1, M = [1 2; 0 1], t = (1, -2):
+	 * n = (0, 1): M^T n = (0, 1), h = -2 + 1 = -1;
+	 * n = (1, 0): M^T n = (1, 2), h = 1 + |(3, 2)| = 1 + sqrt(13).
+	 * A few ulps of the body's size (about 5). */
+	mkBody2 e = mkBody2_Make((mkShape2){3.0, 1.0, 1.0}, mkMat2_Shear(2.0), (mkVec2){1, -2});
+	ENSURE_NEAR(mkBody2_SupportValue(e, (mkVec2){0, 1}), -1.0, 1e-14);
+	ENSURE_NEAR(mkBody2_SupportValue(e, (mkVec2){1, 0}), 1.0 + sqrt(13.0), 1e-14);
+	/* Only n's direction counts (documented for the support point). */
+	ENSURE_NEAR(mkBody2_SupportValue(e, (mkVec2){0, 7}), -7.0, 7e-14);
+
+	/* Canonical superquadric support values: the ellipsoid (1, 2, 3) in the
+	 * unit direction (2, 1, 2)/3 has h = sqrt(4/9 + 4/9 + 36/9) = sqrt(44)/3;
+	 * any shape's h along an axis is its semi-axis (the pole); a near-box
+	 * (eps1 = eps2 = 1e-6) in direction (1, 1, 1)/sqrt(3) is within O(eps)
+	 * of the box's corner value (a + b + c)/sqrt(3), as for the areas above. */
+	mkShape3 ell = {1.0, 2.0, 3.0, 1.0, 1.0}, sq = {1.0, 2.0, 3.0, 0.3, 1.7}, box = {1.0, 2.0, 3.0, MK_EPS_MIN, MK_EPS_MIN};
+	ENSURE_NEAR(mkShape3_SupportValue(ell, (mkVec3){2.0 / 3, 1.0 / 3, 2.0 / 3}), sqrt(44.0) / 3, 1e-15 * 3);
+	ENSURE_NEAR(mkShape3_SupportValue(sq, (mkVec3){0, 0, 1}), 3.0, 1e-15 * 3);
+	ENSURE_NEAR(mkShape3_SupportValue(sq, (mkVec3){-1, 0, 0}), 1.0, 1e-15 * 3);
+	double third = 1.0 / sqrt(3.0);
+	ENSURE_NEAR(mkShape3_SupportValue(box, (mkVec3){third, third, third}), 6.0 * third, 6.0 * 1e-5);
+
+	/* Volumes of placed bodies scale by |det M|: the ellipsoid (1, 2, 3)
+	 * (8 pi) under 2 [1 10 0; 0 1 0; 0 0 1] (det 8) and under a rotation
+	 * (det 1, to rounding), tolerances as for the canonical volumes. */
+	mkMat3 sh = {{{2, 20, 0}, {0, 2, 0}, {0, 0, 2}}};
+	ENSURE_NEAR(mkBody3_Volume(mkBody3_Make(ell, sh, (mkVec3){5, 6, 7})), 64.0 * MK_PI, 1e-13 * 201.0);
+	ENSURE_NEAR(mkBody3_Volume(mkBody3_Make(ell, mkMat3_FromQuat(0.8, 0.3, -0.4, 0.33), (mkVec3){0, 0, 0})), 8.0 * MK_PI,
+		1e-13 * 25.2);
+}
+
 static void test_validation(void)
 {
 	char msg[256];
@@ -166,6 +221,7 @@ int main(void)
 	test_maps2();
 	test_maps3();
 	test_pole();
+	test_placed();
 	test_validation();
 	return mk_summary("test_body");
 }

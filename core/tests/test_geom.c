@@ -19,7 +19,7 @@ int main(void)
 	for (int i = 0; i < 3; ++i)
 		for (int j = 0; j < 3; ++j) ENSURE_NEAR(P.m[i][j], i == j, 1e-15);
 	/* a quarter turn about z maps x to y */
-	mkMat3 R = mkMat3_FromQuat(cos(0.25 * 3.14159265358979323846), 0, 0, sin(0.25 * 3.14159265358979323846));
+	mkMat3 R = mkMat3_FromQuat(cos(0.25 * MK_PI), 0, 0, sin(0.25 * MK_PI));
 	mkVec3 v = mkMat3_MulVec(R, (mkVec3){1, 0, 0});
 	ENSURE_NEAR(v.x, 0, 1e-15);
 	ENSURE_NEAR(v.y, 1, 1e-15);
@@ -29,6 +29,10 @@ int main(void)
 	ENSURE_NEAR(mkMat2_Det(S), 1.0, 1e-15);
 	ENSURE(!mkMat3_IsFinite(mkMat3_FromQuat(0, 0, 0, 0)));
 	ENSURE(mkMat3_IsFinite(mkMat3_FromQuat(0, 0, 0, 1e-100)));
+	/* mkMat2_IsFinite detects the documented NaN of a failed inverse. */
+	ENSURE(mkMat2_IsFinite(Ai));
+	ENSURE(!mkMat2_IsFinite(mkMat2_Inverse((mkMat2){{{1, 2}, {2, 4}}})));
+	ENSURE(!mkMat2_IsFinite((mkMat2){{{1, 0}, {0, INFINITY}}}));
 	ENSURE_NEAR(mkVec3_Length(mkVec3_Make(2, 3, 6)), 7.0, 0.0);
 	ENSURE_NEAR(mkVec2_Length(mkVec2_Make(3, -4)), 5.0, 0.0);
 	ENSURE_NEAR(mkVec3_Cross(mkVec3_Make(1, 0, 0), mkVec3_Make(0, 1, 0)).z, 1.0, 0.0);

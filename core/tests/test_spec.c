@@ -46,6 +46,19 @@ int main(void)
 	ENSURE(mkSpec_Parse("sphere a=1", 3, "b", &s, msg, sizeof msg) == MK_OK);
 	ENSURE(s.body3.shape.c == 1 && s.body3.shape.eps1 == 1);
 
+	/* mkKind_Name gives the KIND word of the grammar (mink/spec.h), which
+	 * parses back to the same kind. */
+	static const char *const kinds[] = {"circle a=1", "ellipse a=1 b=2", "superellipse a=1 b=2 eps=0.5",
+		"sphere a=1", "ellipsoid a=1 b=2 c=3", "superquadric a=1 b=2 c=3 eps1=0.5 eps2=1.5"};
+	for (int k = MK_KIND_CIRCLE; k <= MK_KIND_SUPERQUADRIC; ++k) {
+		const char *name = mkKind_Name((mkKind)k);
+		size_t len = strlen(name);
+		ENSURE(strncmp(kinds[k], name, len) == 0 && kinds[k][len] == ' ');
+		ENSURE(mkSpec_Parse(kinds[k], k <= MK_KIND_SUPERELLIPSE ? 2 : 3, "b", &s, msg, sizeof msg) == MK_OK);
+		ENSURE(s.kind == (mkKind)k);
+	}
+	ENSURE(strcmp(mkKind_Name((mkKind)99), "?") == 0);
+
 	ENSURE(fails_with("superellipse a=3 b=2 eps=2.5", 2, "body1.eps"));
 	ENSURE(fails_with("superellipse a=3 b=2 eps=0", 2, "body1.eps"));
 	ENSURE(fails_with("superellipse a=3 b=2 eps=nan", 2, "body1.eps"));

@@ -25,10 +25,12 @@ MK_EXTERN_C_BEGIN
 MK_API mkResult mkSampled2_Bodies(mkBody2 b1, mkBody2 b2, mkSet set, int n, double *p, double *q);
 MK_API mkResult mkSampled3_Bodies(mkBody3 b1, mkBody3 b2, mkSet set, int n, double *p, double *q);
 
-/* All pairwise sums s[i*m + j] = p_i + q_j (each coordinate one rounded
- * addition), m and n points. s holds dim*m*n doubles. This set is the input
- * of the hull methods and of the referee's hull checks. */
-MK_API void mkSampled_Sums(int dim, const double *p, int m, const double *q, int n, double *s);
+/* All pairwise sums s[i*n + j] = p_i + q_j (each coordinate one rounded
+ * addition) of m points p and n points q, interleaved pairs (2D) or triples
+ * (3D); s holds 2*m*n or 3*m*n doubles. This set is the input of the hull
+ * methods and of the referee's hull checks. */
+MK_API void mkSampled2_Sums(const double *p, int m, const double *q, int n, double *s);
+MK_API void mkSampled3_Sums(const double *p, int m, const double *q, int n, double *s);
 
 /* ---- exact predicates ---------------------------------------------------
  * Sign (+1, 0, -1) of the cross product (b - a) x (d - c), computed exactly

@@ -37,7 +37,7 @@
  *
  * Sampled methods (hull of pairwise sums, edge sorting): the hull check,
  * exact, on CGAL's exact predicates. The referee rebuilds the method's input
- * (mkSampled_Sums over mkSampled2/3_Bodies) and checks that
+ * (mkSampled2/3_Sums over mkSampled2/3_Bodies) and checks that
  *   convex  - the output is a strictly convex polygon in counter-clockwise
  *             order that winds once (2D), or every output point is a vertex
  *             of the output's own convex hull (3D);
@@ -116,30 +116,35 @@ typedef struct mkVerdict {
  * MK_OK when the check ran (v->pass holds the verdict), MK_ERR_ARGUMENT on
  * a NULL pointer, a wrong dimension or point count, MK_ERR_MEMORY when the
  * referee cannot allocate. */
-MK_API mkResult mkReferee_Check2(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n,
+MK_API mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n,
 	const mkPointSet *out, const mkRefereeOptions *opt, mkVerdict *v);
-MK_API mkResult mkReferee_Check3(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n,
+MK_API mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n,
 	const mkPointSet *out, const mkRefereeOptions *opt, mkVerdict *v);
 
 /* The support check with witness normals given by the caller (any nonzero
  * vectors; nz is ignored in 2D), for points that are not parameterised by
  * body 1's surface angles. */
-MK_API mkResult mkReferee_Support2(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts,
+MK_API mkResult mkReferee2_Support(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts,
 	const double *nx, const double *ny, const mkRefereeOptions *opt, mkVerdict *v);
-MK_API mkResult mkReferee_Support3(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts,
+MK_API mkResult mkReferee3_Support(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts,
 	const double *nx, const double *ny, const double *nz, const mkRefereeOptions *opt, mkVerdict *v);
 
 /* The hull check of a sampled method's output against the pairwise sums of
  * n samples per body (3D: n x n grids); n at most MK_HULL2_N_MAX (2D) or
  * MK_HULL3_N_MAX (3D), since all sums are held in memory. */
-MK_API mkResult mkReferee_Hull2(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v);
-MK_API mkResult mkReferee_Hull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v);
+MK_API mkResult mkReferee2_Hull(mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v);
+MK_API mkResult mkReferee3_Hull(mkBody3 b1, mkBody3 b2, mkSet set, int n, const mkPointSet *out, mkVerdict *v);
 
 /* The referee's own body model, for tests: boundary point and unit outward
  * normal (world frame) of a placed body at surface parameter u (a nonzero
  * vector; only its direction counts). */
-MK_API mkVec2 mkReferee_Point2(mkBody2 b, mkVec2 u, mkVec2 *normal);
-MK_API mkVec3 mkReferee_Point3(mkBody3 b, mkVec3 u, mkVec3 *normal);
+MK_API mkVec2 mkReferee2_Point(mkBody2 b, mkVec2 u, mkVec2 *normal);
+MK_API mkVec3 mkReferee3_Point(mkBody3 b, mkVec3 u, mkVec3 *normal);
+
+/* TRANSITION ONLY: the names before the dimension-digit rename, for the
+ * code not renamed yet (experiments/). Delete once nothing uses them. */
+#define mkReferee_Check2 mkReferee2_Check
+#define mkReferee_Check3 mkReferee3_Check
 
 MK_EXTERN_C_END
 
