@@ -45,7 +45,7 @@
  *  in the reference code, and all methods of a trial see the same pair.
  *
  * A method runs for a pair only when the registry says it accepts it
- * (mkMethod_Accepts2/3; e.g. the geometric method needs body 2 an ellipse)
+ * (mkMethod2/3_Accepts; e.g. the geometric method needs body 2 an ellipse)
  * and the level is in its resolution range (mkMethod_CheckN). Everything
  * skipped is listed in the sidecar (key `skipped`) and on stderr. A call that
  * fails is written as a row with its status. */
@@ -426,8 +426,8 @@ static int mkDrawPair(const mkOptions *o, int dim, int c, int level, long trial,
 
 static int mkAccepts(const mkMethod *m, int dim, const mkPair *p, char *msg, size_t msglen)
 {
-	return dim == 2 ? mkMethod_Accepts2(m, p->p1, p->p2, MK_SET_CONTACT, msg, msglen)
-		: mkMethod_Accepts3(m, p->q1, p->q2, MK_SET_CONTACT, msg, msglen);
+	return dim == 2 ? mkMethod2_Accepts(m, p->p1, p->p2, MK_SET_CONTACT, msg, msglen)
+		: mkMethod3_Accepts(m, p->q1, p->q2, MK_SET_CONTACT, msg, msglen);
 }
 
 /* ---- the clock ------------------------------------------------------------ */

@@ -147,8 +147,8 @@ static int run_method(const SumArgs *a, const mkSpec *s1, const mkSpec *s2)
 		fprintf(stderr, "mink sum: --n: %s\n", msg);
 		return 2;
 	}
-	int ok = a->dim == 2 ? mkMethod_Accepts2(m, s1->body2, s2->body2, a->opt.set, msg, sizeof msg)
-		: mkMethod_Accepts3(m, s1->body3, s2->body3, a->opt.set, msg, sizeof msg);
+	int ok = a->dim == 2 ? mkMethod2_Accepts(m, s1->body2, s2->body2, a->opt.set, msg, sizeof msg)
+		: mkMethod3_Accepts(m, s1->body3, s2->body3, a->opt.set, msg, sizeof msg);
 	if (!ok) {
 		fprintf(stderr, "mink sum: method %s does not accept this pair: %s\n", m->name, msg);
 		return 2;

@@ -200,8 +200,8 @@ int mkCmd_Verify(int argc, char **argv)
 		fprintf(stderr, "mink verify: %s\n", msg);
 		return 2;
 	}
-	int ok = dim == 2 ? mkMethod_Accepts2(m, s1.body2, s2.body2, set, msg, sizeof msg)
-		: mkMethod_Accepts3(m, s1.body3, s2.body3, set, msg, sizeof msg);
+	int ok = dim == 2 ? mkMethod2_Accepts(m, s1.body2, s2.body2, set, msg, sizeof msg)
+		: mkMethod3_Accepts(m, s1.body3, s2.body3, set, msg, sizeof msg);
 	if (!ok) {
 		fprintf(stderr, "mink verify: method %s does not accept this pair: %s\n", m->name, msg);
 		return 2;
@@ -255,8 +255,8 @@ int mkCmd_Verify(int argc, char **argv)
 
 	mkRefereeOptions opt = {(int)dense, 0, 0};
 	mkVerdict v;
-	mkResult r = dim == 2 ? mkReferee_Check2(m, s1.body2, s2.body2, set, (int)n, &pts, &opt, &v)
-		: mkReferee_Check3(m, s1.body3, s2.body3, set, (int)n, &pts, &opt, &v);
+	mkResult r = dim == 2 ? mkReferee2_Check(m, s1.body2, s2.body2, set, (int)n, &pts, &opt, &v)
+		: mkReferee3_Check(m, s1.body3, s2.body3, set, (int)n, &pts, &opt, &v);
 	mkPointSet_Free(&pts);
 	if (r != MK_OK) {
 		fprintf(stderr, "mink verify: the referee could not run: %s\n", mkResult_Name(r));
