@@ -346,10 +346,12 @@ static void mkSlice_Digest(const mkCObstacleWork *w, long count, int dim, mkCObs
 	res->checksum += s;
 }
 
-/* The obstacles of a 2D unit, after the robot; NULL after printing why. */
-static mkBody2 *mkDrawObstacles2(mkRng *rng, long nobs, long trial, mkCObstacleWork *w, long *clamped)
+/* The obstacles of a unit (an array of mkBody2 in 2D, of mkBody3 in 3D),
+ * drawn after the robot, and room for their slice; NULL after printing
+ * why. */
+static void *mkDrawObstacles(mkRng *rng, int dim, long nobs, long trial, mkCObstacleWork *w, long *clamped)
 {
-	mkBody2 *obs = malloc((size_t)nobs * sizeof *obs);
+	void *obs = malloc((size_t)nobs * (dim == 2 ? sizeof(mkBody2) : sizeof(mkBody3)));
 	if (!obs || mkCObstacleWork_Reserve(w, nobs * w->n) != 0) {
 		free(obs);
 		fprintf(stderr, "cobstacle: out of memory for %ld obstacles\n", nobs);
@@ -357,74 +359,22 @@ static mkBody2 *mkDrawObstacles2(mkRng *rng, long nobs, long trial, mkCObstacleW
 	}
 	char msg[256];
 	for (long j = 0; j < nobs; ++j) {
-		obs[j] = mkDrawObstacle2(rng, clamped, NULL);
-		if (!mkBody2_IsValid(obs[j], "obstacle", msg, sizeof msg)) {
-			fprintf(stderr, "cobstacle: 2D trial %ld, obstacle %ld: %s\n", trial, j, msg);
-			free(obs);
-			return NULL;
-		}
-	}
-	return obs;
-}
-
-int mkCObstacle_Level2(const mkCObstacleOptions *o, long nobs, long trial, mkCObstacleWork *w,
-	mkProgress *prog, mkCObstacleResult *res)
-{
-	memset(res, 0, sizeof *res);
-	mkRng rng;
-	mkRng_Seed(&rng, o->seed, mkStream(0, 2, nobs, trial));
-	mkShape2 robot = mkDrawShape2(&rng, 5.0, 3.0, 1.0, &res->clamped);
-	const double rv[5] = { robot.a, robot.b, NAN, robot.eps, NAN };
-	memcpy(res->robot, rv, sizeof rv);
-	mkBody2 *obs = mkDrawObstacles2(&rng, nobs, trial, w, &res->clamped);
-	if (!obs)
-		return -1;
-	char msg[256];
-	mkVec2 origin = { 0.0, 0.0 };
-	if (!mkBody2_IsValid(mkBody2_Make(robot, mkMat2_Identity(), origin), "robot", msg, sizeof msg)) {
-		fprintf(stderr, "cobstacle: 2D trial %ld: %s\n", trial, msg);
-		free(obs);
-		return -1;
-	}
-	mkSumOptions opt = mkCObstacle_SumOptions(o);
-	int n = (int)w->n;
-	for (long h = 0; h < o->headings; ++h) {
-		double t0 = mkClock_Wall(), c0 = mkClock_ThreadCpu();
-		mkBody2 rb = mkBody2_Make(robot, mkMat2_Rotation((double)h * MK_PI / (double)o->headings), origin);
-		mkResult rc = MK_OK;
-		for (long j = 0; j < nobs && rc == MK_OK; ++j)
-			rc = mkSum2_Batch(obs[j], rb, &opt, w->ux, w->uy, n,
-				w->x + j * n, w->y + j * n, NULL, NULL);
-		res->cpu_s += mkClock_ThreadCpu() - c0;
-		res->total_s += mkClock_Wall() - t0;
-		if (rc != MK_OK) {
-			fprintf(stderr, "cobstacle: 2D trial %ld: the closed form failed: %s\n", trial, mkResult_Name(rc));
-			free(obs);
-			return -1;
-		}
-		mkSlice_Digest(w, nobs * n, 2, res);
-		mkProgress_Add(prog, 1);
-	}
-	free(obs);
-	return 0;
-}
-
-/* The obstacles of a 3D unit, after the robot; NULL after printing why. */
-static mkBody3 *mkDrawObstacles3(mkRng *rng, long nobs, long trial, mkCObstacleWork *w, long *clamped)
-{
-	mkBody3 *obs = malloc((size_t)nobs * sizeof *obs);
-	if (!obs || mkCObstacleWork_Reserve(w, nobs * w->n) != 0) {
-		free(obs);
-		fprintf(stderr, "cobstacle: out of memory for %ld obstacles\n", nobs);
-		return NULL;
-	}
-	char msg[256];
-	for (long j = 0; j < nobs; ++j) {
-		int ok = mkDrawObstacle3(rng, clamped, &obs[j]);
-		if (!ok || !mkBody3_IsValid(obs[j], "obstacle", msg, sizeof msg)) {
-			if (!ok)
+		int valid;
+		if (dim == 2) {
+			mkBody2 *b = (mkBody2 *)obs + j;
+			*b = mkDrawObstacle2(rng, clamped, NULL);
+			valid = mkBody2_IsValid(*b, "obstacle", msg, sizeof msg);
+		} else {
+			mkBody3 *b = (mkBody3 *)obs + j;
+			if (!mkDrawObstacle3(rng, clamped, b)) {
 				snprintf(msg, sizeof msg, "a zero quaternion was drawn");
-			fprintf(stderr, "cobstacle: 3D trial %ld, obstacle %ld: %s\n", trial, j, msg);
+				valid = 0;
+			} else {
+				valid = mkBody3_IsValid(*b, "obstacle", msg, sizeof msg);
+			}
+		}
+		if (!valid) {
+			fprintf(stderr, "cobstacle: %dD trial %ld, obstacle %ld: %s\n", dim, trial, j, msg);
 			free(obs);
 			return NULL;
 		}
@@ -432,45 +382,109 @@ static mkBody3 *mkDrawObstacles3(mkRng *rng, long nobs, long trial, mkCObstacleW
 	return obs;
 }
 
-int mkCObstacle_Level3(const mkCObstacleOptions *o, long nobs, long trial, const mkRotations *rot,
+/* One unit in progress: the robot and the obstacles drawn for it. */
+typedef struct mkLevel {
+	const mkCObstacleOptions *o;
+	const mkRotations *rot;
+	mkCObstacleWork *w;
+	int dim;
+	long nobs;
+	mkShape2 robot2;
+	mkShape3 robot3;
+	void *obs;            /* mkBody2 or mkBody3 array */
+	mkSumOptions opt;
+} mkLevel;
+
+/* The timed work of orientation k: the robot turned (2D: heading
+ * k pi / H; 3D: rotation k of the file), one batch call per obstacle. */
+static mkResult mkLevel_Slice(const mkLevel *l, long k)
+{
+	const mkCObstacleWork *w = l->w;
+	int n = (int)w->n;
+	mkResult rc = MK_OK;
+	if (l->dim == 2) {
+		mkVec2 origin = { 0.0, 0.0 };
+		mkBody2 rb = mkBody2_Make(l->robot2, mkMat2_Rotation((double)k * MK_PI / (double)l->o->headings), origin);
+		const mkBody2 *obs = l->obs;
+		for (long j = 0; j < l->nobs && rc == MK_OK; ++j)
+			rc = mkSum2_Batch(obs[j], rb, &l->opt, w->ux, w->uy, n,
+				w->x + j * n, w->y + j * n, NULL, NULL);
+	} else {
+		mkVec3 origin = { 0.0, 0.0, 0.0 };
+		mkBody3 rb = mkBody3_Make(l->robot3, l->rot->R[k], origin);
+		const mkBody3 *obs = l->obs;
+		for (long j = 0; j < l->nobs && rc == MK_OK; ++j)
+			rc = mkSum3_Batch(obs[j], rb, &l->opt, w->ux, w->uy, w->uz, n,
+				w->x + j * n, w->y + j * n, w->z + j * n, NULL, NULL, NULL);
+	}
+	return rc;
+}
+
+/* The robot of a unit (drawn first from its stream) into l and res. */
+static void mkLevel_DrawRobot(mkLevel *l, mkRng *rng, mkCObstacleResult *res)
+{
+	if (l->dim == 2) {
+		l->robot2 = mkDrawShape2(rng, 5.0, 3.0, 1.0, &res->clamped);
+		const double rv[5] = { l->robot2.a, l->robot2.b, NAN, l->robot2.eps, NAN };
+		memcpy(res->robot, rv, sizeof rv);
+	} else {
+		l->robot3 = mkDrawShape3(rng, 5.0, &res->clamped);
+		const double rv[5] = { l->robot3.a, l->robot3.b, l->robot3.c, l->robot3.eps1, l->robot3.eps2 };
+		memcpy(res->robot, rv, sizeof rv);
+	}
+}
+
+/* 1 when the unturned robot at the origin is a valid body, else 0 with a
+ * message. */
+static int mkLevel_RobotIsValid(const mkLevel *l, char *msg, size_t msglen)
+{
+	mkVec2 o2 = { 0.0, 0.0 };
+	mkVec3 o3 = { 0.0, 0.0, 0.0 };
+	if (l->dim == 2)
+		return mkBody2_IsValid(mkBody2_Make(l->robot2, mkMat2_Identity(), o2), "robot", msg, msglen);
+	return mkBody3_IsValid(mkBody3_Make(l->robot3, mkMat3_Identity(), o3), "robot", msg, msglen);
+}
+
+int mkCObstacle_Level(const mkCObstacleOptions *o, const mkCObstacleUnit *u, const mkRotations *rot,
 	mkCObstacleWork *w, mkProgress *prog, mkCObstacleResult *res)
 {
 	memset(res, 0, sizeof *res);
+	mkLevel l;
+	memset(&l, 0, sizeof l);
+	l.o = o;
+	l.rot = rot;
+	l.w = w;
+	l.dim = u->dim;
+	l.nobs = u->obstacles;
+	l.opt = mkCObstacle_SumOptions(o);
 	mkRng rng;
-	mkRng_Seed(&rng, o->seed, mkStream(0, 3, nobs, trial));
-	mkShape3 robot = mkDrawShape3(&rng, 5.0, &res->clamped);
-	const double rv[5] = { robot.a, robot.b, robot.c, robot.eps1, robot.eps2 };
-	memcpy(res->robot, rv, sizeof rv);
-	mkBody3 *obs = mkDrawObstacles3(&rng, nobs, trial, w, &res->clamped);
-	if (!obs)
+	mkRng_Seed(&rng, o->seed, mkStream(0, u->dim, u->obstacles, u->trial));
+	mkLevel_DrawRobot(&l, &rng, res);
+	l.obs = mkDrawObstacles(&rng, u->dim, u->obstacles, u->trial, w, &res->clamped);
+	if (!l.obs)
 		return -1;
 	char msg[256];
-	mkVec3 origin = { 0.0, 0.0, 0.0 };
-	if (!mkBody3_IsValid(mkBody3_Make(robot, mkMat3_Identity(), origin), "robot", msg, sizeof msg)) {
-		fprintf(stderr, "cobstacle: 3D trial %ld: %s\n", trial, msg);
-		free(obs);
+	if (!mkLevel_RobotIsValid(&l, msg, sizeof msg)) {
+		fprintf(stderr, "cobstacle: %dD trial %ld: %s\n", u->dim, u->trial, msg);
+		free(l.obs);
 		return -1;
 	}
-	mkSumOptions opt = mkCObstacle_SumOptions(o);
-	int n = (int)w->n;
-	for (long k = 0; k < rot->count; ++k) {
+	long orientations = u->dim == 2 ? o->headings : rot->count;
+	for (long k = 0; k < orientations; ++k) {
 		double t0 = mkClock_Wall(), c0 = mkClock_ThreadCpu();
-		mkBody3 rb = mkBody3_Make(robot, rot->R[k], origin);
-		mkResult rc = MK_OK;
-		for (long j = 0; j < nobs && rc == MK_OK; ++j)
-			rc = mkSum3_Batch(obs[j], rb, &opt, w->ux, w->uy, w->uz, n,
-				w->x + j * n, w->y + j * n, w->z + j * n, NULL, NULL, NULL);
+		mkResult rc = mkLevel_Slice(&l, k);
 		res->cpu_s += mkClock_ThreadCpu() - c0;
 		res->total_s += mkClock_Wall() - t0;
 		if (rc != MK_OK) {
-			fprintf(stderr, "cobstacle: 3D trial %ld: the closed form failed: %s\n", trial, mkResult_Name(rc));
-			free(obs);
+			fprintf(stderr, "cobstacle: %dD trial %ld: the closed form failed: %s\n", u->dim, u->trial,
+				mkResult_Name(rc));
+			free(l.obs);
 			return -1;
 		}
-		mkSlice_Digest(w, nobs * n, 3, res);
+		mkSlice_Digest(w, u->obstacles * w->n, u->dim, res);
 		mkProgress_Add(prog, 1);
 	}
-	free(obs);
+	free(l.obs);
 	return 0;
 }
 
@@ -801,14 +815,14 @@ static void mkCObstacle_Table(mkDoc *d, const mkTable *t, int usable, mkTally *t
 
 void mkCObstacle_Summary(mkDoc *d, const char *dir, mkTally *tally)
 {
+	static const char *const needed[] = { "dim", "obstacles", "points", "orientations", "total_s" };
+	mkDoc_Heading(d, 2, "Configuration-space obstacles (paper §7.1, Table 2)");
 	char path[MK_PATH_MAX];
 	mkTable t;
 	mkMeta m;
-	mkResult_Load(dir, "cobstacle.csv", &t, &m, path, sizeof path);
-	mkDoc_Heading(d, 2, "Configuration-space obstacles (paper §7.1, Table 2)");
-	int usable = t.present && mkTable_Col(&t, "dim") >= 0 && mkTable_Col(&t, "obstacles") >= 0
-		&& mkTable_Col(&t, "points") >= 0 && mkTable_Col(&t, "orientations") >= 0
-		&& mkTable_Col(&t, "total_s") >= 0;
+	int usable = mkResult_Load(dir, "cobstacle.csv", &t, &m, path, sizeof path);
+	for (int i = 0; i < MK_COUNT(needed); ++i)
+		usable = usable && mkTable_Col(&t, needed[i]) >= 0;
 	if (!usable) {
 		mkDoc_Para(d, "%s: `%s` %s. None of the %d published numbers below has a counterpart.", mkNotYet, path,
 			t.present ? "lacks the columns dim, obstacles, points, orientations, total_s"

@@ -134,11 +134,10 @@ typedef struct mkCObstacleResult {
 	double robot[5];   /* a, b, c, eps1, eps2 (c and eps2 NaN in 2D) */
 } mkCObstacleResult;
 
-/* Draw and time one unit (2D: o->headings orientations; 3D: those of rot),
- * one progress step per orientation. Returns 0, or -1 after printing why. */
-int mkCObstacle_Level2(const mkCObstacleOptions *o, long nobs, long trial, mkCObstacleWork *w,
-	mkProgress *prog, mkCObstacleResult *res);
-int mkCObstacle_Level3(const mkCObstacleOptions *o, long nobs, long trial, const mkRotations *rot,
+/* Draw and time one unit (2D: o->headings orientations; 3D: those of
+ * rot, which may be NULL for a 2D unit), one progress step per
+ * orientation. Returns 0, or -1 after printing why. */
+int mkCObstacle_Level(const mkCObstacleOptions *o, const mkCObstacleUnit *u, const mkRotations *rot,
 	mkCObstacleWork *w, mkProgress *prog, mkCObstacleResult *res);
 /* The unit's row. */
 void mkCObstacle_WriteRow(mkCsv *csv, const mkCObstacleOptions *o, const mkCObstacleUnit *u, long points,

@@ -29,10 +29,7 @@ static int mkRunUnits(mkRun *run, const mkCObstacleOptions *o, const mkCObstacle
 	for (long i = begin; i < end && !failed; ++i) {
 		mkCObstacleResult res;
 		const mkCObstacleUnit *u = &units[i];
-		if (u->dim == 2)
-			failed = mkCObstacle_Level2(o, u->obstacles, u->trial, w2, &run->progress, &res) != 0;
-		else
-			failed = mkCObstacle_Level3(o, u->obstacles, u->trial, rot, w3, &run->progress, &res) != 0;
+		failed = mkCObstacle_Level(o, u, rot, u->dim == 2 ? w2 : w3, &run->progress, &res) != 0;
 		if (!failed)
 			mkCObstacle_WriteRow(&run->csv, o, u, u->dim == 2 ? w2->n : w3->n,
 				u->dim == 2 ? o->headings : rot->count, &res);

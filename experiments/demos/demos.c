@@ -145,27 +145,20 @@ static void mkSpec2(char *buf, size_t len, const double s[3], double angle, doub
 		mkFmt(s[0]).s, mkFmt(s[1]).s, mkFmt(s[2]).s, mkFmt(angle).s, mkFmt(shear).s);
 }
 
-static int mkParse2(const char *text, const char *what, mkBody2 *out)
+/* The body of a SPEC text into *out: an mkBody2 when dim is 2, an mkBody3
+ * when 3. Returns 0, or -1 after printing why. */
+static int mkParseBody(const char *text, int dim, const char *what, void *out)
 {
 	mkSpec spec;
 	char msg[512];
-	if (mkSpec_Parse(text, 2, what, &spec, msg, sizeof msg) != MK_OK) {
+	if (mkSpec_Parse(text, dim, what, &spec, msg, sizeof msg) != MK_OK) {
 		fprintf(stderr, "demos: %s: %s (SPEC '%s')\n", what, msg, text);
 		return -1;
 	}
-	*out = spec.body2;
-	return 0;
-}
-
-static int mkParse3(const char *text, const char *what, mkBody3 *out)
-{
-	mkSpec spec;
-	char msg[512];
-	if (mkSpec_Parse(text, 3, what, &spec, msg, sizeof msg) != MK_OK) {
-		fprintf(stderr, "demos: %s: %s (SPEC '%s')\n", what, msg, text);
-		return -1;
-	}
-	*out = spec.body3;
+	if (dim == 2)
+		*(mkBody2 *)out = spec.body2;
+	else
+		*(mkBody3 *)out = spec.body3;
 	return 0;
 }
 
@@ -249,7 +242,7 @@ static void mkFigure1(mkDemoRun *run)
 	mkSpec2(s2, sizeof s2, p2, -MK_PI / 5.0, 1.6);
 	mkBody2 b1, b2;
 	mkPts pt;
-	if (mkParse2(s1, "fig1.body1", &b1) || mkParse2(s2, "fig1.body2", &b2) || mkPts_Alloc(&pt, N)) {
+	if (mkParseBody(s1, 2, "fig1.body1", &b1) || mkParseBody(s2, 2, "fig1.body2", &b2) || mkPts_Alloc(&pt, N)) {
 		run->failed = 1;
 		return;
 	}
@@ -483,7 +476,7 @@ static void mkFigure2(mkDemoRun *run)
 	mkSpec2(f.s1, sizeof f.s1, p1, MK_PI / 6.3, 0.276);
 	mkSpec2(f.s2, sizeof f.s2, p2, -MK_PI / 3.0, 0.85);
 	mkPts pt, ol;
-	if (mkParse2(f.s1, "fig2.body1", &f.b1) || mkParse2(f.s2, "fig2.body2", &f.b2)
+	if (mkParseBody(f.s1, 2, "fig2.body1", &f.b1) || mkParseBody(f.s2, 2, "fig2.body2", &f.b2)
 		|| mkPts_Alloc(&pt, N) || mkPts_Alloc(&ol, (int)o->outline)) {
 		run->failed = 1;
 		return;
@@ -538,7 +531,7 @@ static void mkFigure3(mkDemoRun *run)
 		mkSpec2(specs[p][0], sizeof specs[p][0], mkFig3A1, rot ? mkFig3Angle[0] : 0.0, shear ? mkFig3Shear[0] : 0.0);
 		mkSpec2(specs[p][1], sizeof specs[p][1], mkFig3A2, rot ? mkFig3Angle[1] : 0.0, shear ? mkFig3Shear[1] : 0.0);
 		mkBody2 b1, b2;
-		if (mkParse2(specs[p][0], "fig3.body1", &b1) || mkParse2(specs[p][1], "fig3.body2", &b2)) {
+		if (mkParseBody(specs[p][0], 2, "fig3.body1", &b1) || mkParseBody(specs[p][1], 2, "fig3.body2", &b2)) {
 			run->failed = 1;
 			break;
 		}
@@ -657,48 +650,55 @@ typedef struct mkPanel3 {
 	char spec1[512], spec2[512];
 } mkPanel3;
 
+/* The bodies of Fig. 4 and its panels: which pair, rotated (B1 by
+ * mkQuat1, B2 by mkQuat2) or not, and which of the two are parallelepipeds
+ * (bit 0: B1 mapped by R mkShear1, bit 1: B2 by R mkShear2). */
+enum { MK_SQ1, MK_SQ2, MK_CUBE1, MK_CUBE2, MK_CYL1, MK_CYL2, MK_ELL1, MK_ELL2 };
+static const struct {
+	const char *panel, *title;
+	int body1, body2, rotated, sheared;
+} mkFig4Panels[8] = {
+	{ "a", "two general superquadrics, canonical", MK_SQ1, MK_SQ2, 0, 0 },
+	{ "b", "two general superquadrics, rotated", MK_SQ1, MK_SQ2, 1, 0 },
+	{ "c", "two cubes", MK_CUBE1, MK_CUBE2, 1, 0 },
+	{ "d", "cube and elliptic cylinder", MK_CUBE1, MK_CYL2, 1, 0 },
+	{ "e", "two parallelepipeds", MK_CUBE1, MK_CUBE2, 1, 3 },
+	{ "f", "parallelepiped and elliptic cylinder", MK_CUBE1, MK_CYL2, 1, 1 },
+	{ "g", "two elliptic cylinders", MK_CYL1, MK_CYL2, 1, 0 },
+	{ "h", "two ellipsoids", MK_ELL1, MK_ELL2, 1, 0 },
+};
+
 /* The eight panels' SPEC texts; -1 on a zero quaternion (a program
  * error). */
 static int mkFigure4_Panels(mkPanel3 P[8])
 {
 	memset(P, 0, 8 * sizeof *P);
-	const double *q1 = mkQuat1, *q2 = mkQuat2;
-	double cube1[3], cube2[3], cyl1[3], cyl2[3];
+	double cube1[3], cube2[3];
 	for (int i = 0; i < 3; ++i) {
 		cube1[i] = mkBox1[i] / 2.0;
 		cube2[i] = mkBox2[i] / 2.0;
 	}
-	cyl1[0] = mkCyl1[0];
-	cyl1[1] = mkCyl1[1];
-	cyl1[2] = mkCyl1[2] / 2.0;
-	cyl2[0] = mkCyl2[0];
-	cyl2[1] = mkCyl2[1];
-	cyl2[2] = mkCyl2[2] / 2.0;
+	const double cyl1[3] = { mkCyl1[0], mkCyl1[1], mkCyl1[2] / 2.0 };
+	const double cyl2[3] = { mkCyl2[0], mkCyl2[1], mkCyl2[2] / 2.0 };
+	const struct { const char *kind; const double *a; double e1, e2; } body[8] = {
+		{ "superquadric", mkFig4Sq1, mkFig4Sq1[3], mkFig4Sq1[4] },
+		{ "superquadric", mkFig4Sq2, mkFig4Sq2[3], mkFig4Sq2[4] },
+		{ "superquadric", cube1, 0.1, 0.1 }, { "superquadric", cube2, 0.1, 0.1 },
+		{ "superquadric", cyl1, 0.1, 1.0 }, { "superquadric", cyl2, 0.1, 1.0 },
+		{ "ellipsoid", mkEll1, 1.0, 1.0 }, { "ellipsoid", mkEll2, 1.0, 1.0 },
+	};
+	const double *quat[2] = { mkQuat1, mkQuat2 }, *shear[2] = { mkShear1, mkShear2 };
 	int bad = 0;
-	P[0].panel = "a"; P[0].title = "two general superquadrics, canonical";
-	bad |= mkSpec3(P[0].spec1, 512, "superquadric", mkFig4Sq1, mkFig4Sq1[3], mkFig4Sq1[4], NULL, NULL);
-	bad |= mkSpec3(P[0].spec2, 512, "superquadric", mkFig4Sq2, mkFig4Sq2[3], mkFig4Sq2[4], NULL, NULL);
-	P[1].panel = "b"; P[1].title = "two general superquadrics, rotated";
-	bad |= mkSpec3(P[1].spec1, 512, "superquadric", mkFig4Sq1, mkFig4Sq1[3], mkFig4Sq1[4], q1, NULL);
-	bad |= mkSpec3(P[1].spec2, 512, "superquadric", mkFig4Sq2, mkFig4Sq2[3], mkFig4Sq2[4], q2, NULL);
-	P[2].panel = "c"; P[2].title = "two cubes";
-	bad |= mkSpec3(P[2].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, NULL);
-	bad |= mkSpec3(P[2].spec2, 512, "superquadric", cube2, 0.1, 0.1, q2, NULL);
-	P[3].panel = "d"; P[3].title = "cube and elliptic cylinder";
-	bad |= mkSpec3(P[3].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, NULL);
-	bad |= mkSpec3(P[3].spec2, 512, "superquadric", cyl2, 0.1, 1.0, q2, NULL);
-	P[4].panel = "e"; P[4].title = "two parallelepipeds";
-	bad |= mkSpec3(P[4].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, mkShear1);
-	bad |= mkSpec3(P[4].spec2, 512, "superquadric", cube2, 0.1, 0.1, q2, mkShear2);
-	P[5].panel = "f"; P[5].title = "parallelepiped and elliptic cylinder";
-	bad |= mkSpec3(P[5].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, mkShear1);
-	bad |= mkSpec3(P[5].spec2, 512, "superquadric", cyl2, 0.1, 1.0, q2, NULL);
-	P[6].panel = "g"; P[6].title = "two elliptic cylinders";
-	bad |= mkSpec3(P[6].spec1, 512, "superquadric", cyl1, 0.1, 1.0, q1, NULL);
-	bad |= mkSpec3(P[6].spec2, 512, "superquadric", cyl2, 0.1, 1.0, q2, NULL);
-	P[7].panel = "h"; P[7].title = "two ellipsoids";
-	bad |= mkSpec3(P[7].spec1, 512, "ellipsoid", mkEll1, 1.0, 1.0, q1, NULL);
-	bad |= mkSpec3(P[7].spec2, 512, "ellipsoid", mkEll2, 1.0, 1.0, q2, NULL);
+	for (int p = 0; p < 8; ++p) {
+		P[p].panel = mkFig4Panels[p].panel;
+		P[p].title = mkFig4Panels[p].title;
+		for (int k = 0; k < 2; ++k) {
+			int which = k == 0 ? mkFig4Panels[p].body1 : mkFig4Panels[p].body2;
+			bad |= mkSpec3(k == 0 ? P[p].spec1 : P[p].spec2, sizeof P[p].spec1, body[which].kind, body[which].a,
+				body[which].e1, body[which].e2, mkFig4Panels[p].rotated ? quat[k] : NULL,
+				(mkFig4Panels[p].sheared >> k) & 1 ? shear[k] : NULL);
+		}
+	}
 	return bad ? -1 : 0;
 }
 
@@ -732,7 +732,7 @@ static void mkFigure4_Panel(mkDemoRun *run, const mkPanel3 *P, mkPts *pt, mkPts 
 	mkSumOptions opt = mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
 	static const char *const cols[] = { "surface", "i", "j", "x", "y", "z" };
 	mkBody3 b1, b2;
-	if (mkParse3(P->spec1, "fig4.body1", &b1) || mkParse3(P->spec2, "fig4.body2", &b2)) {
+	if (mkParseBody(P->spec1, 3, "fig4.body1", &b1) || mkParseBody(P->spec2, 3, "fig4.body2", &b2)) {
 		run->failed = 1;
 		return;
 	}

@@ -14,7 +14,7 @@
  * h_B(M^T n). The test scans 3600 directions, then narrows the smallest gap
  * by golden-section search. */
 #include "ensure.h"
-#include <mink_exp/table.h>
+#include "exp_testing.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -23,28 +23,8 @@
 
 #define PI 3.14159265358979323846
 
-/* A cell by column name: "" or NaN when the column is missing. */
-static const char *str(const mkTable *t, long r, const char *name)
-{
-	return mkTable_Str(t, r, mkTable_Col(t, name));
-}
-
-static double num(const mkTable *t, long r, const char *name)
-{
-	return mkTable_Num(t, r, mkTable_Col(t, name));
-}
-
-/* ||(u, v)||_q for q >= 1, scaled by the larger entry (q reaches 2e6). */
-static double qnorm(double u, double v, double q)
-{
-	u = fabs(u);
-	v = fabs(v);
-	double m = u > v ? u : v;
-	if (m == 0.0)
-		return 0.0;
-	return m * pow(pow(u / m, q) + pow(v / m, q), 1.0 / q);
-}
-
+/* The q-norms below are pnorm2 (exp_testing.h), scaled by the larger
+ * entry (q reaches 2e6). */
 typedef struct Body { double a, b, eps, cx, cy, angle; } Body;
 
 /* Support function of the placed superellipse in direction (nx, ny):
@@ -53,7 +33,7 @@ static double support(const Body *B, double nx, double ny)
 {
 	double c = cos(B->angle), s = sin(B->angle);
 	double dx = c * nx + s * ny, dy = -s * nx + c * ny;
-	return nx * B->cx + ny * B->cy + qnorm(B->a * dx, B->b * dy, 2.0 / (2.0 - B->eps));
+	return nx * B->cx + ny * B->cy + pnorm2(B->a * dx, B->b * dy, 2.0 / (2.0 - B->eps));
 }
 
 /* The gauge (2/e)-norm of M^T (x - t) / (a, b): 1 on the boundary. */
@@ -62,7 +42,7 @@ static double gauge(const Body *B, double x, double y)
 	double c = cos(B->angle), s = sin(B->angle);
 	double dx = x - B->cx, dy = y - B->cy;
 	double u = c * dx + s * dy, v = -s * dx + c * dy;
-	return qnorm(u / B->a, v / B->b, 2.0 / B->eps);
+	return pnorm2(u / B->a, v / B->b, 2.0 / B->eps);
 }
 
 static double gap(const Body *O, const Body *R, double x, double y, double th)

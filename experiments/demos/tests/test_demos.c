@@ -16,7 +16,7 @@
  * another (B2 placed on the sum) has all its points at gauge >= 1 - TOL with
  * respect to the other. */
 #include "ensure.h"
-#include <mink_exp/table.h>
+#include "exp_testing.h"
 
 #include <mink/mink.h>
 
@@ -28,30 +28,9 @@
 #define TOL 1e-9
 #define PI 3.14159265358979323846
 
-/* A cell by column name: "" or NaN when the column is missing. */
-static const char *str(const mkTable *t, long r, const char *name)
-{
-	return mkTable_Str(t, r, mkTable_Col(t, name));
-}
-
-static double num(const mkTable *t, long r, const char *name)
-{
-	return mkTable_Num(t, r, mkTable_Col(t, name));
-}
-
 /* ---- gauges from the definitions ----------------------------------------- */
 
-/* The p-norm of (u, v) for p >= 1, scaled by the larger entry so that
- * powers up to p = 2e6 neither overflow nor underflow harmfully. */
-static double pnorm2(double u, double v, double p)
-{
-	u = fabs(u);
-	v = fabs(v);
-	double m = u > v ? u : v;
-	if (m == 0.0)
-		return 0.0;
-	return m * pow(pow(u / m, p) + pow(v / m, p), 1.0 / p);
-}
+/* pnorm2 (exp_testing.h): the p-norm of (u, v), scaled against overflow. */
 
 static mkVec2 inv2(mkMat2 M, mkVec2 x)
 {
@@ -96,27 +75,20 @@ static double gauge3(mkBody3 b, mkVec3 c, mkVec3 x)
 	return pnorm2(r, v.z / b.shape.c, 2.0 / b.shape.eps1);
 }
 
-static int parse2(const char *text, mkBody2 *out)
+/* The body of a SPEC text into *out: an mkBody2 when dim is 2, an mkBody3
+ * when 3. Returns 0, or -1 with a message. */
+static int parseBody(const char *text, int dim, void *out)
 {
 	mkSpec s;
 	char msg[256];
-	if (mkSpec_Parse(text, 2, "body", &s, msg, sizeof msg) != MK_OK) {
+	if (mkSpec_Parse(text, dim, "body", &s, msg, sizeof msg) != MK_OK) {
 		fprintf(stderr, "SPEC '%s': %s\n", text, msg);
 		return -1;
 	}
-	*out = s.body2;
-	return 0;
-}
-
-static int parse3(const char *text, mkBody3 *out)
-{
-	mkSpec s;
-	char msg[256];
-	if (mkSpec_Parse(text, 3, "body", &s, msg, sizeof msg) != MK_OK) {
-		fprintf(stderr, "SPEC '%s': %s\n", text, msg);
-		return -1;
-	}
-	*out = s.body3;
+	if (dim == 2)
+		*(mkBody2 *)out = s.body2;
+	else
+		*(mkBody3 *)out = s.body3;
 	return 0;
 }
 
@@ -163,17 +135,26 @@ static long findIndexRow(const mkTable *ix, const char *file)
 	return -1;
 }
 
+/* The index row of `file` and the two bodies of its SPEC texts; -1 when
+ * the row is missing. */
+static long findPair2(const mkTable *ix, const char *file, mkBody2 *b1, mkBody2 *b2)
+{
+	long r = findIndexRow(ix, file);
+	ENSURE(r >= 0);
+	if (r < 0)
+		return -1;
+	ENSURE(parseBody(str(ix, r, "body1"), 2, b1) == 0);
+	ENSURE(parseBody(str(ix, r, "body2"), 2, b2) == 0);
+	return r;
+}
+
 /* ---- Fig. 1 --------------------------------------------------------------- */
 
 static void checkFigure1(const mkTable *ix)
 {
-	long r = findIndexRow(ix, "fig1-closed.csv");
-	ENSURE(r >= 0);
-	if (r < 0)
-		return;
 	mkBody2 b1, b2;
-	ENSURE(parse2(str(ix, r, "body1"), &b1) == 0);
-	ENSURE(parse2(str(ix, r, "body2"), &b2) == 0);
+	if (findPair2(ix, "fig1-closed.csv", &b1, &b2) < 0)
+		return;
 	/* The paper's parameters, exactly. */
 	ENSURE(b1.shape.a == 10.0 && b1.shape.b == 8.6 && b1.shape.eps == 0.36);
 	ENSURE(b2.shape.a == 9.4 && b2.shape.b == 6.8 && b2.shape.eps == 1.28);
@@ -235,13 +216,9 @@ static void checkFigure1(const mkTable *ix)
 
 static void checkFigure2(const mkTable *ix)
 {
-	long r = findIndexRow(ix, "fig2-contact.csv");
-	ENSURE(r >= 0);
-	if (r < 0)
-		return;
 	mkBody2 b1, b2;
-	ENSURE(parse2(str(ix, r, "body1"), &b1) == 0);
-	ENSURE(parse2(str(ix, r, "body2"), &b2) == 0);
+	if (findPair2(ix, "fig2-contact.csv", &b1, &b2) < 0)
+		return;
 	ENSURE(b1.shape.a == 3.3 && b1.shape.b == 2.6 && b1.shape.eps == 0.73);
 	ENSURE(b2.shape.a == 2.4 && b2.shape.b == 2.0 && b2.shape.eps == 1.28);
 	mkTable c;
@@ -316,8 +293,8 @@ static void checkFigure3(const mkTable *ix)
 		part(str(ix, r, "body1"), p, s1, sizeof s1);
 		part(str(ix, r, "body2"), p, s2, sizeof s2);
 		mkBody2 b1, b2;
-		ENSURE(parse2(s1, &b1) == 0);
-		ENSURE(parse2(s2, &b2) == 0);
+		ENSURE(parseBody(s1, 2, &b1) == 0);
+		ENSURE(parseBody(s2, 2, &b2) == 0);
 		/* The sum's 100 points (and the closing row) with their centres. */
 		mkVec2 sum[101];
 		int nsum = 0, places = 0;
@@ -403,8 +380,8 @@ static void checkFigure4(const mkTable *ix)
 		if (r < 0)
 			continue;
 		mkBody3 b1, b2;
-		ENSURE(parse3(str(ix, r, "body1"), &b1) == 0);
-		ENSURE(parse3(str(ix, r, "body2"), &b2) == 0);
+		ENSURE(parseBody(str(ix, r, "body1"), 3, &b1) == 0);
+		ENSURE(parseBody(str(ix, r, "body2"), 3, &b2) == 0);
 		mkTable t;
 		long blank = 0;
 		ENSURE(readFile(&t, file, &blank) == 0);
