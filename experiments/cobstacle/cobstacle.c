@@ -490,6 +490,16 @@ int mkCObstacle_Level(const mkCObstacleOptions *o, const mkCObstacleUnit *u, con
 
 /* ---- rows and the sidecar ------------------------------------------------ */
 
+/* A number, or an empty field for NaN (a level the paper does not list,
+ * a robot dimension 2D does not have). */
+static void mkCsv_DoubleOrEmpty(mkCsv *csv, double v)
+{
+	if (isnan(v))
+		mkCsv_Empty(csv);
+	else
+		mkCsv_Double(csv, v);
+}
+
 void mkCObstacle_WriteRow(mkCsv *csv, const mkCObstacleOptions *o, const mkCObstacleUnit *u, long points,
 	long orientations, const mkCObstacleResult *res)
 {
@@ -506,22 +516,13 @@ void mkCObstacle_WriteRow(mkCsv *csv, const mkCObstacleOptions *o, const mkCObst
 	mkCsv_Int(csv, u->trial);
 	mkCsv_Str(csv, mkForm_Name(o->form));
 	mkCsv_Str(csv, mkImpl_Name(mkImpl_Resolve(o->impl)));
-	if (pub) {
-		mkCsv_Double(csv, pub->total_s);
-		mkCsv_Double(csv, pub->us_per_point);
-	} else {
-		mkCsv_Empty(csv);
-		mkCsv_Empty(csv);
-	}
+	mkCsv_DoubleOrEmpty(csv, pub ? pub->total_s : NAN);
+	mkCsv_DoubleOrEmpty(csv, pub ? pub->us_per_point : NAN);
 	mkCsv_Int(csv, res->nonfinite);
 	mkCsv_Int(csv, res->clamped);
 	mkCsv_Double(csv, res->checksum);
-	for (int i = 0; i < 5; ++i) {
-		if (isnan(res->robot[i]))
-			mkCsv_Empty(csv);
-		else
-			mkCsv_Double(csv, res->robot[i]);
-	}
+	for (int i = 0; i < 5; ++i)
+		mkCsv_DoubleOrEmpty(csv, res->robot[i]);
 	mkCsv_EndRow(csv);
 }
 
@@ -601,6 +602,29 @@ static void mkEndBlock(mkCsv *csv)
 	fputs("\n\n", csv->file.fp);
 }
 
+/* The closed outline of b at the samples of w (k = n repeats k = 0):
+ * rows of the lead fields (nlead 1: i; 3: i, h, heading), k, x, y, then a
+ * block end. */
+static void mkWriteOutline(mkCsv *csv, mkBody2 b, const mkCObstacleWork *w, int nlead, long i, long h,
+	double heading)
+{
+	int n = (int)w->n;
+	for (int k = 0; k <= n; ++k) {
+		mkVec2 u = { w->ux[k % n], w->uy[k % n] };
+		mkVec2 p = mkBody2_Point(b, u);
+		mkCsv_Int(csv, i);
+		if (nlead == 3) {
+			mkCsv_Int(csv, h);
+			mkCsv_Double(csv, heading);
+		}
+		mkCsv_Int(csv, k);
+		mkCsv_Double(csv, p.x);
+		mkCsv_Double(csv, p.y);
+		mkCsv_EndRow(csv);
+	}
+	mkEndBlock(csv);
+}
+
 static int mkFigure_Scene(mkRun *run, const mkScene *s)
 {
 	static const char *const cols[] = { "body", "index", "a", "b", "eps", "cx", "cy", "angle" };
@@ -626,21 +650,10 @@ static int mkFigure_Obstacles(mkRun *run, const mkScene *s, const mkCObstacleWor
 {
 	static const char *const cols[] = { "obstacle", "k", "x", "y" };
 	mkCsv csv;
-	int n = (int)w->n;
 	if (mkRun_OpenSibling(run, "fig9-obstacles.csv", cols, MK_COUNT(cols), &csv) != 0)
 		return -1;
-	for (long j = 0; j < s->nobs; ++j) {
-		for (int k = 0; k <= n; ++k) {
-			mkVec2 u = { w->ux[k % n], w->uy[k % n] };
-			mkVec2 p = mkBody2_Point(s->obs[j], u);
-			mkCsv_Int(&csv, j);
-			mkCsv_Int(&csv, k);
-			mkCsv_Double(&csv, p.x);
-			mkCsv_Double(&csv, p.y);
-			mkCsv_EndRow(&csv);
-		}
-		mkEndBlock(&csv);
-	}
+	for (long j = 0; j < s->nobs; ++j)
+		mkWriteOutline(&csv, s->obs[j], w, 1, j, 0, 0.0);
 	return mkFigure_Commit(&csv, &run->meta, "fig. 9 obstacles in the workspace, closed outlines");
 }
 
@@ -656,26 +669,13 @@ static int mkFigure_Robot(mkRun *run, const mkCObstacleOptions *o, const mkScene
 {
 	static const char *const cols[] = { "slice", "heading_index", "heading", "k", "x", "y" };
 	mkCsv csv;
-	int n = (int)w->n;
 	mkVec2 origin = { 0.0, 0.0 };
 	if (mkRun_OpenSibling(run, "fig9-robot.csv", cols, MK_COUNT(cols), &csv) != 0)
 		return -1;
 	for (long i = 0; i < o->fig_slices; ++i) {
 		double heading;
 		long h = mkSliceHeading(o, i, &heading);
-		mkBody2 rb = mkBody2_Make(s->robot, mkMat2_Rotation(heading), origin);
-		for (int k = 0; k <= n; ++k) {
-			mkVec2 u = { w->ux[k % n], w->uy[k % n] };
-			mkVec2 p = mkBody2_Point(rb, u);
-			mkCsv_Int(&csv, i);
-			mkCsv_Int(&csv, h);
-			mkCsv_Double(&csv, heading);
-			mkCsv_Int(&csv, k);
-			mkCsv_Double(&csv, p.x);
-			mkCsv_Double(&csv, p.y);
-			mkCsv_EndRow(&csv);
-		}
-		mkEndBlock(&csv);
+		mkWriteOutline(&csv, mkBody2_Make(s->robot, mkMat2_Rotation(heading), origin), w, 3, i, h, heading);
 	}
 	return mkFigure_Commit(&csv, &run->meta, "fig. 9 robot at the drawn headings, centred at the origin");
 }

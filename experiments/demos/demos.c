@@ -201,10 +201,23 @@ static void mkPts_Free(mkPts *p)
 	memset(p, 0, sizeof *p);
 }
 
+#define MK_NO_FIELD (-1000000L)
+
+/* Up to three leading fields of a row: lead1, lead2 (NULL: none), lead3
+ * (MK_NO_FIELD: none). */
+static void mkWriteLeads(mkCsv *csv, const char *lead1, const char *lead2, long lead3)
+{
+	if (lead1)
+		mkCsv_Str(csv, lead1);
+	if (lead2)
+		mkCsv_Str(csv, lead2);
+	if (lead3 != MK_NO_FIELD)
+		mkCsv_Int(csv, lead3);
+}
+
 /* A closed outline of a 2D body: n samples and the first repeated, after
  * up to three leading fields (NULL / MK_NO_FIELD: none); with_kiss adds two
  * empty kissing-point fields. */
-#define MK_NO_FIELD (-1000000L)
 static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, long lead3,
 	mkBody2 b, const mkPts *u, int with_kiss)
 {
@@ -212,12 +225,7 @@ static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, lo
 		int kk = k % u->n;
 		mkVec2 uv = { u->ux[kk], u->uy[kk] };
 		mkVec2 p = mkBody2_Point(b, uv);
-		if (lead1)
-			mkCsv_Str(csv, lead1);
-		if (lead2)
-			mkCsv_Str(csv, lead2);
-		if (lead3 != MK_NO_FIELD)
-			mkCsv_Int(csv, lead3);
+		mkWriteLeads(csv, lead1, lead2, lead3);
 		mkCsv_Int(csv, k);
 		mkCsv_Double(csv, p.x);
 		mkCsv_Double(csv, p.y);
@@ -225,6 +233,27 @@ static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, lo
 			mkCsv_Empty(csv);
 			mkCsv_Empty(csv);
 		}
+		mkCsv_EndRow(csv);
+	}
+	mkEndBlock(csv);
+}
+
+/* A closed-form sum curve: for k = 0..n (k = n repeats k = 0) the lead
+ * fields (as in mkWriteOutline2), k, the parameter's angle when
+ * with_angle, the sum point and the kissing point; then a block end. */
+static void mkWriteSum2(mkCsv *csv, const char *lead1, const char *lead2, long lead3, const mkPts *pt,
+	int with_angle)
+{
+	for (int k = 0; k <= pt->n; ++k) {
+		int kk = k % pt->n;
+		mkWriteLeads(csv, lead1, lead2, lead3);
+		mkCsv_Int(csv, k);
+		if (with_angle)
+			mkCsv_Double(csv, atan2(pt->uy[kk], pt->ux[kk]));
+		mkCsv_Double(csv, pt->x[kk]);
+		mkCsv_Double(csv, pt->y[kk]);
+		mkCsv_Double(csv, pt->kx[kk]);
+		mkCsv_Double(csv, pt->ky[kk]);
 		mkCsv_EndRow(csv);
 	}
 	mkEndBlock(csv);
@@ -305,17 +334,7 @@ static void mkFigure1(mkDemoRun *run)
 	}
 	static const char *const ccols[] = { "k", "theta", "x", "y", "x1", "y1" };
 	if (!run->failed && mkDemoRun_Open(run, "fig1-closed.csv", ccols, 6, &csv) == 0) {
-		for (int k = 0; k <= N; ++k) {
-			int kk = k % N;
-			mkCsv_Int(&csv, k);
-			mkCsv_Double(&csv, atan2(pt.uy[kk], pt.ux[kk]));
-			mkCsv_Double(&csv, pt.x[kk]);
-			mkCsv_Double(&csv, pt.y[kk]);
-			mkCsv_Double(&csv, pt.kx[kk]);
-			mkCsv_Double(&csv, pt.ky[kk]);
-			mkCsv_EndRow(&csv);
-		}
-		mkEndBlock(&csv);
+		mkWriteSum2(&csv, NULL, NULL, MK_NO_FIELD, &pt, 1);
 		mkEntry e = { 1, "b", "fig1-closed.csv",
 			"the closed form x(theta_k) at B1's 50 surface parameters, with B1's point x1(theta_k) at the same parameter; k = 50 repeats k = 0",
 			s1, s2, mkForm_Name(opt.form), mkParam_Name(opt.param), N, "" };
@@ -357,18 +376,7 @@ static void mkFigure2_Curves(mkDemoRun *run, const mkFig2 *f, mkPts *pt)
 				run->failed = 1;
 				break;
 			}
-			for (int k = 0; k <= N; ++k) {
-				int kk = k % N;
-				mkCsv_Int(&csv, th);
-				mkCsv_Int(&csv, k);
-				mkCsv_Double(&csv, atan2(pt->uy[kk], pt->ux[kk]));
-				mkCsv_Double(&csv, pt->x[kk]);
-				mkCsv_Double(&csv, pt->y[kk]);
-				mkCsv_Double(&csv, pt->kx[kk]);
-				mkCsv_Double(&csv, pt->ky[kk]);
-				mkCsv_EndRow(&csv);
-			}
-			mkEndBlock(&csv);
+			mkWriteSum2(&csv, NULL, NULL, th, pt, 1);
 		}
 		if (run->failed) {
 			mkCsv_Discard(&csv);
@@ -542,19 +550,7 @@ static void mkFigure3(mkDemoRun *run)
 			break;
 		}
 		mkWriteOutline2(&csv, panels[p], "b1", -1, b1, &ol, 1);
-		for (int k = 0; k <= N; ++k) {
-			int kk = k % N;
-			mkCsv_Str(&csv, panels[p]);
-			mkCsv_Str(&csv, "sum");
-			mkCsv_Int(&csv, -1);
-			mkCsv_Int(&csv, k);
-			mkCsv_Double(&csv, pt.x[kk]);
-			mkCsv_Double(&csv, pt.y[kk]);
-			mkCsv_Double(&csv, pt.kx[kk]);
-			mkCsv_Double(&csv, pt.ky[kk]);
-			mkCsv_EndRow(&csv);
-		}
-		mkEndBlock(&csv);
+		mkWriteSum2(&csv, panels[p], "sum", -1, &pt, 0);
 		for (int place = 0; place < MK_FIG3_PLACES; ++place) {
 			int k = place * N / MK_FIG3_PLACES;
 			mkBody2 placed = b2;
