@@ -135,9 +135,11 @@ static long findIndexRow(const mkTable *ix, const char *file)
 	return -1;
 }
 
-/* The index row of `file` and the two bodies of its SPEC texts; -1 when
+/* The index row of `file` and the two bodies of its SPEC texts, which must
+ * have the paper's parameters want1, want2 (a, b, eps) exactly; -1 when
  * the row is missing. */
-static long findPair2(const mkTable *ix, const char *file, mkBody2 *b1, mkBody2 *b2)
+static long findPair2(const mkTable *ix, const char *file, const double want1[3], const double want2[3],
+	mkBody2 *b1, mkBody2 *b2)
 {
 	long r = findIndexRow(ix, file);
 	ENSURE(r >= 0);
@@ -145,6 +147,8 @@ static long findPair2(const mkTable *ix, const char *file, mkBody2 *b1, mkBody2 
 		return -1;
 	ENSURE(parseBody(str(ix, r, "body1"), 2, b1) == 0);
 	ENSURE(parseBody(str(ix, r, "body2"), 2, b2) == 0);
+	ENSURE(b1->shape.a == want1[0] && b1->shape.b == want1[1] && b1->shape.eps == want1[2]);
+	ENSURE(b2->shape.a == want2[0] && b2->shape.b == want2[1] && b2->shape.eps == want2[2]);
 	return r;
 }
 
@@ -152,12 +156,11 @@ static long findPair2(const mkTable *ix, const char *file, mkBody2 *b1, mkBody2 
 
 static void checkFigure1(const mkTable *ix)
 {
+	/* The paper's parameters. */
+	static const double want1[3] = { 10.0, 8.6, 0.36 }, want2[3] = { 9.4, 6.8, 1.28 };
 	mkBody2 b1, b2;
-	if (findPair2(ix, "fig1-closed.csv", &b1, &b2) < 0)
+	if (findPair2(ix, "fig1-closed.csv", want1, want2, &b1, &b2) < 0)
 		return;
-	/* The paper's parameters, exactly. */
-	ENSURE(b1.shape.a == 10.0 && b1.shape.b == 8.6 && b1.shape.eps == 0.36);
-	ENSURE(b2.shape.a == 9.4 && b2.shape.b == 6.8 && b2.shape.eps == 1.28);
 
 	mkTable bodies, pairs, closed;
 	ENSURE(readFile(&bodies, "fig1-bodies.csv", NULL) == 0);
@@ -216,11 +219,10 @@ static void checkFigure1(const mkTable *ix)
 
 static void checkFigure2(const mkTable *ix)
 {
+	static const double want1[3] = { 3.3, 2.6, 0.73 }, want2[3] = { 2.4, 2.0, 1.28 };
 	mkBody2 b1, b2;
-	if (findPair2(ix, "fig2-contact.csv", &b1, &b2) < 0)
+	if (findPair2(ix, "fig2-contact.csv", want1, want2, &b1, &b2) < 0)
 		return;
-	ENSURE(b1.shape.a == 3.3 && b1.shape.b == 2.6 && b1.shape.eps == 0.73);
-	ENSURE(b2.shape.a == 2.4 && b2.shape.b == 2.0 && b2.shape.eps == 1.28);
 	mkTable c;
 	ENSURE(readFile(&c, "fig2-contact.csv", NULL) == 0);
 	ENSURE(c.rows == 2);
