@@ -117,6 +117,22 @@ void mkMeta_SetDouble(mkMeta *meta, const char *key, double value)
 	mkMeta_Set(meta, key, buf);
 }
 
+void mkMeta_Remove(mkMeta *meta, const char *key)
+{
+	for (int i = 0; i < meta->count; ++i) {
+		if (strcmp(meta->keys[i], key) != 0)
+			continue;
+		free(meta->keys[i]);
+		free(meta->values[i]);
+		for (int j = i + 1; j < meta->count; ++j) {
+			meta->keys[j - 1] = meta->keys[j];
+			meta->values[j - 1] = meta->values[j];
+		}
+		meta->count -= 1;
+		return;
+	}
+}
+
 const char *mkMeta_Get(const mkMeta *meta, const char *key)
 {
 	for (int i = 0; i < meta->count; ++i) {

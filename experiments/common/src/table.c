@@ -75,14 +75,13 @@ static long mkCsvSplit(char *buf, char ***out_cells, int *out_cols)
 	return count;
 }
 
-/* Load path into t. A missing file leaves t->present = 0; a malformed one
- * is reported and treated as missing. */
-void mkTable_Load(mkTable *t, const char *path)
+/* The whole file into a NUL-terminated buffer (NULL when missing or out
+ * of memory, the latter reported). */
+static char *mkReadAll(const char *path)
 {
-	memset(t, 0, sizeof *t);
 	FILE *fp = fopen(path, "rb");
 	if (!fp)
-		return;
+		return NULL;
 	size_t cap = 1 << 20, len = 0;
 	char *buf = malloc(cap + 1);
 	while (buf) {
@@ -99,9 +98,37 @@ void mkTable_Load(mkTable *t, const char *path)
 	fclose(fp);
 	if (!buf) {
 		fprintf(stderr, "%s: out of memory\n", path);
-		return;
+		return NULL;
 	}
 	buf[len] = '\0';
+	return buf;
+}
+
+/* Drop the blank lines ("\n" or "\r\n" alone) of buf in place; those after
+ * the first line are counted. */
+static long mkDropBlankLines(char *buf)
+{
+	long blank = 0;
+	int first = 1;
+	char *r = buf, *w = buf;
+	while (*r) {
+		if (*r == '\n' || (*r == '\r' && r[1] == '\n')) {
+			r += *r == '\r' ? 2 : 1;
+			blank += !first;
+			continue;
+		}
+		while (*r && *r != '\n')
+			*w++ = *r++;
+		if (*r)
+			*w++ = *r++;
+		first = 0;
+	}
+	*w = '\0';
+	return blank;
+}
+
+static void mkTable_Parse(mkTable *t, const char *path, char *buf)
+{
 	char **cells = NULL;
 	int cols = 0;
 	long count = mkCsvSplit(buf, &cells, &cols);
@@ -116,6 +143,27 @@ void mkTable_Load(mkTable *t, const char *path)
 	t->cells = cells + cols;
 	t->rows = count / cols - 1;
 	t->present = 1;
+}
+
+/* Load path into t. A missing file leaves t->present = 0; a malformed one
+ * is reported and treated as missing. */
+void mkTable_Load(mkTable *t, const char *path)
+{
+	memset(t, 0, sizeof *t);
+	char *buf = mkReadAll(path);
+	if (buf)
+		mkTable_Parse(t, path, buf);
+}
+
+void mkTable_LoadBlocks(mkTable *t, const char *path, long *blank)
+{
+	memset(t, 0, sizeof *t);
+	*blank = 0;
+	char *buf = mkReadAll(path);
+	if (!buf)
+		return;
+	*blank = mkDropBlankLines(buf);
+	mkTable_Parse(t, path, buf);
 }
 
 void mkTable_Free(mkTable *t)

@@ -7,6 +7,7 @@
 
 #include <mink_exp/csv.h>
 #include <mink_exp/meta.h>
+#include <mink_exp/table.h>
 
 #include <dirent.h>
 #include <signal.h>
@@ -211,6 +212,24 @@ int main(void)
 	ENSURE(mkCsv_Open(&csv, path, names, 3, msg, sizeof msg) == 0);
 	mkCsv_Discard(&csv);
 	ENSURE(access(path, F_OK) != 0);
+
+	/* 7. A geometry file read back: blank lines (gnuplot's block
+	 * separators, "\n" or "\r\n") are not rows; those after the header
+	 * are counted, and the plain reader refuses such a file. */
+	mkPathIn(path, sizeof path, "blocks.csv");
+	mkWriteFile(path, "\nk,x\n0,1.5\n1,2\n\n\n0,3\r\n\r\n1,\"4\"\n\n");
+	mkTable t;
+	long blank = -1;
+	mkTable_LoadBlocks(&t, path, &blank);
+	ENSURE(t.present && t.cols == 2 && t.rows == 4);
+	ENSURE(blank == 4);
+	ENSURE(t.present && mkTable_Num(&t, 2, mkTable_Col(&t, "x")) == 3.0);
+	ENSURE(t.present && strcmp(mkTable_Str(&t, 3, 1), "4") == 0);
+	mkTable_Free(&t);
+	fprintf(stderr, "(a message on a non-rectangular file is expected next)\n");
+	mkTable_Load(&t, path);
+	ENSURE(!t.present);
+	mkTable_Free(&t);
 
 	/* Clean up. */
 	char cmd[600];

@@ -51,6 +51,16 @@ int main(void)
 	mkMeta_Set(&m, "note", "two\nlines");
 	mkMeta_Set(&m, "trials", "200"); /* replaces, does not duplicate */
 	ENSURE(mkMeta_Missing(&m) == NULL);
+	/* A removed key is gone, the others keep their order, and removing a
+	 * key that is not there changes nothing. */
+	int count = m.count;
+	mkMeta_Set(&m, "trial_range", "0..9");
+	mkMeta_Set(&m, "after", "x");
+	mkMeta_Remove(&m, "trial_range");
+	mkMeta_Remove(&m, "no_such_key");
+	ENSURE(m.count == count + 1 && mkMeta_Get(&m, "trial_range") == NULL);
+	ENSURE(strcmp(m.keys[m.count - 1], "after") == 0 && strcmp(m.keys[m.count - 2], "note") == 0);
+	mkMeta_Remove(&m, "after");
 
 	mkOutFile f;
 	ENSURE(mkOutFile_Open(&f, path, msg, sizeof msg) == 0);

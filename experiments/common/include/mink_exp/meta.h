@@ -57,6 +57,10 @@ void mkMeta_Set(mkMeta *meta, const char *key, const char *value);
 void mkMeta_SetInt(mkMeta *meta, const char *key, long long value);
 void mkMeta_SetU64(mkMeta *meta, const char *key, uint64_t value);
 void mkMeta_SetDouble(mkMeta *meta, const char *key, double value);
+/* Drop a key (nothing when it is not set); the others keep their order.
+ * For a driver whose shards are not blocks of trials: it replaces the
+ * harness's trial_range by its own account. */
+void mkMeta_Remove(mkMeta *meta, const char *key);
 /* The value, or NULL when the key is not set. */
 const char *mkMeta_Get(const mkMeta *meta, const char *key);
 

@@ -4,7 +4,7 @@
  * RFC 4180 as mink_exp/csv.h writes it: fields may be quoted ("" is a
  * quote), rows end in "\n" or "\r\n", every row has the header's number of
  * fields. Blank lines (gnuplot's block separators in the geometry files)
- * are not rows: such files are read by line, not with this reader. */
+ * are not rows: such files are read with mkTable_LoadBlocks. */
 #ifndef MINK_EXP_TABLE_H
 #define MINK_EXP_TABLE_H
 
@@ -22,6 +22,9 @@ typedef struct mkTable {
 /* Load path into t. A missing file leaves t->present = 0 silently; a
  * malformed one is reported on stderr and treated as missing. */
 void mkTable_Load(mkTable *t, const char *path);
+/* As mkTable_Load, for the geometry files: blank lines separate blocks of
+ * rows; they are dropped, and those after the header counted in *blank. */
+void mkTable_LoadBlocks(mkTable *t, const char *path, long *blank);
 void mkTable_Free(mkTable *t);
 /* The index of the column `name`, or -1. */
 int mkTable_Col(const mkTable *t, const char *name);

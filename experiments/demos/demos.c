@@ -1,49 +1,11 @@
-/* demos.c - the geometry of the paper's demonstration figures 1-4.
- *
- * Writes, for each figure, the curves and surfaces a plot needs (bodies,
- * closed-form Minkowski-sum boundaries, B2 placed on them, contact normals)
- * as CSV files in the directory named like the result without ".csv", and
- * one index row per file in the result itself. Every body is built from its
- * SPEC text (mink/spec.h), which the index records, so that a reader can
- * rebuild it. The sum is always the contact space B1 (+) (-B2): the places
- * of B2's centre at which B2 touches B1 (mink/sum.h).
- *
- * Parameters. Where the paper gives them they are used exactly:
- *  Fig. 1  SE(a=(10,8.6), eps=0.36) and SE(a=(9.4,6.8), eps=1.28), N = 50,
- *          M_i = rot(angle_i) shear(s_i), angles (pi/8, -pi/5), shears
- *          (1.32, 1.6): the pairwise differences x1_i - x2_j of the 50
- *          samples of each body (the definition) and the closed form at B1's
- *          50 surface parameters.
- *  Fig. 2  SE((3.3,2.6), 0.73) and SE((2.4,2), 1.28), N = 100, angles
- *          (pi/6.3, -pi/3), shears (0.276, 0.85); Theorem 1 (normal form at
- *          100 normal angles) and Theorem 2 (gradient form at B1's 100
- *          surface angles), B2 placed where B1's surface parameter is the
- *          25th of 100 (the reference code's idx = 25, i.e. k = 24 here).
- *  Fig. 4  primitives: cubes eps = (0.1, 0.1), elliptic cylinders
- *          eps = (0.1, 1), parallelepipeds = cubes mapped by
- *          M1 = [1 0 .5; 0 1 .2; 0 0 1], M2 = [1 0 .47; 0 1 .14; 0 0 1]
- *          (the shear first, then the body's rotation: M = R S, as in the
- *          reference code),
- *          50 x 50 grids.
- * Where the paper is silent the choices are fixed here and recorded in the
- * index and the sidecar (the constants below; the experiments README says why):
- * the Fig. 3 superellipses and transforms, the general superquadrics of
- * Fig. 4(a, b), the sizes of the primitives (taken from the reference code's
- * demo script where it has them), the rotations (the reference code draws
- * them at random), the ellipsoids' semi-axes, and where B2 is placed.
- *
- * No random draws: the run is the same every time. --shard splits the
- * figures (1..4) into blocks; the shards' index rows, concatenated in
- * order, are the unsplit run's rows. */
-#include <mink/mink.h>
-#include <mink_exp/exp.h>
+/* demos.c - the geometry of the paper's demonstration figures 1-4 (see
+ * demos.h): the fixed choices, the SPEC texts, one writer per figure. */
+#include "demos.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define MK_SCHEMA_VERSION 1
 
 /* ---- the choices where the paper is silent ------------------------------- */
 
@@ -86,118 +48,11 @@ static const double mkShear2[9] = { 1, 0, 0.47, 0, 1, 0.14, 0, 0, 1 };
 static const double mkPlaceDir[3] = { 0.85, 0.45, 0.3 };
 #define MK_FIG4_GRID 50
 
-/* Samples of a body outline drawn for a picture (not of the sum). */
-#define MK_OUTLINE_DEFAULT 400
-
-/* ---- options ------------------------------------------------------------- */
-
-typedef struct mkOptions {
-	int figure[5];     /* figure[f] = 1 when figure f (1..4) is wanted */
-	long outline;
-	mkImpl impl;
-	const char *out;
-	int out_given;
-	mkShard shard;
-	int force;
-} mkOptions;
-
-static const char *const mkFigureNames[] = { "1", "2", "3", "4", "all" };
-
-static void mkUsage(FILE *fp)
-{
-	fputs(
-		"usage: demos [options]\n"
-		"The geometry of the paper's demonstration figures 1-4 (definition vs closed\n"
-		"form, the two theorems, 2D superellipse pairs, 3D superquadrics and\n"
-		"primitives) as CSV files in the directory <out without .csv>/, one index row\n"
-		"per file in <out>, each file with a metadata sidecar.\n"
-		"\n"
-		"  --figure 1|2|3|4|all   which figures (default all)\n"
-		"  --outline N         samples per drawn body outline in 2D, 8..100000\n"
-		"                      (default 400; the sums use the paper's N)\n"
-		"  --impl auto|scalar|avx2|avx512\n"
-		"                      closed-form kernel (default auto)\n"
-		"  --seed S, --trials T  accepted for the drivers' common interface; this\n"
-		"                      driver draws nothing and runs each figure once\n"
-		"  --out PATH          index CSV (default results/demos.csv, or\n"
-		"                      results/demos.shard-I-of-N.csv with --shard)\n"
-		"  --shard I/N         only block I (0-based) of N of the chosen figures\n"
-		"  --force             replace an existing output file\n"
-		"  --help              this text\n",
-		fp);
-}
-
-static const mkOption mkOptionTable[] = {
-	{ "--figure", 1 }, { "--outline", 1 }, { "--impl", 1 }, { "--out", 1 }, { "--shard", 1 },
-	{ "--seed", 1 }, { "--trials", 1 }, { "--force", 0 },
-};
-
-static int mkParseOptions(int argc, char **argv, mkOptions *o, char *outbuf, size_t outlen)
-{
-	memset(o, 0, sizeof *o);
-	for (int f = 1; f <= 4; ++f)
-		o->figure[f] = 1;
-	o->outline = MK_OUTLINE_DEFAULT;
-	o->impl = MK_IMPL_AUTO;
-	o->out = "results/demos.csv";
-	o->shard = mkShard_All();
-
-	char msg[512] = "";
-	mkArgs args;
-	mkArgs_Begin(&args, argc, argv);
-	const char *name, *value;
-	int choice = 0, bad = 0;
-	long dummy;
-	uint64_t seed;
-	mkArgsStep step;
-	while (!bad && (step = mkArgs_Step(&args, mkOptionTable, MK_COUNT(mkOptionTable), &name, &value,
-			msg, sizeof msg)) != MK_ARGS_END) {
-		if (step == MK_ARGS_HELP) {
-			mkUsage(stdout);
-			return 1;
-		}
-		if (step == MK_ARGS_ERROR) {
-			bad = 1;
-		} else if (strcmp(name, "--force") == 0) {
-			o->force = 1;
-		} else if (strcmp(name, "--figure") == 0) {
-			bad = mkArg_Choice(name, value, mkFigureNames, 5, &choice, msg, sizeof msg) != 0;
-			for (int f = 1; f <= 4 && !bad; ++f)
-				o->figure[f] = choice == 4 || choice == f - 1;
-		} else if (strcmp(name, "--outline") == 0) {
-			bad = mkArg_Long(name, value, 8, 100000, &o->outline, msg, sizeof msg) != 0;
-		} else if (strcmp(name, "--seed") == 0) {
-			bad = mkArg_U64(name, value, &seed, msg, sizeof msg) != 0;
-		} else if (strcmp(name, "--trials") == 0) {
-			bad = mkArg_Long(name, value, 1, 1, &dummy, msg, sizeof msg) != 0;
-		} else if (strcmp(name, "--impl") == 0) {
-			bad = mkArg_Impl(name, value, &choice, msg, sizeof msg) != 0;
-			if (!bad)
-				o->impl = (mkImpl)choice;
-		} else if (strcmp(name, "--out") == 0) {
-			bad = mkArg_Path(name, value, &o->out, msg, sizeof msg) != 0;
-			o->out_given = 1;
-		} else if (strcmp(name, "--shard") == 0) {
-			bad = mkShard_Parse(value, name, &o->shard, msg, sizeof msg) != 0;
-		}
-	}
-	if (bad) {
-		fprintf(stderr, "demos: %s\n", msg);
-		return 2;
-	}
-	if (!o->out_given && o->shard.count > 1) {
-		snprintf(outbuf, outlen, "results/demos.shard-%d-of-%d.csv", o->shard.index, o->shard.count);
-		o->out = outbuf;
-	}
-	return 0;
-}
-
 /* ---- the run: index rows, geometry files --------------------------------- */
 
 typedef struct mkDemoRun {
-	const mkOptions *o;
-	mkMeta *meta;
-	mkCsv index;
+	const mkDemosOptions *o;
+	mkRun *run;
 	int failed;
 } mkDemoRun;
 
@@ -215,25 +70,13 @@ typedef struct mkEntry {
 	const char *note;
 } mkEntry;
 
-static const char *const mkIndexColumns[] = {
-	"figure", "panel", "file", "rows", "content", "body1", "body2", "set", "form", "param", "n", "note"
+const char *const mkDemos_Columns[] = {
+	"figure", "panel", "file", "rows", "content", "body1", "body2", "set", "form", "param", "n", "note", NULL
 };
-#define MK_INDEX_COLUMNS ((int)(sizeof mkIndexColumns / sizeof mkIndexColumns[0]))
-
-/* "<out without .csv>/<name>". */
-static void mkGeometryPath(const char *out, const char *name, char *buf, size_t len)
-{
-	size_t n = strlen(out);
-	int cut = n > 4 && strcmp(out + n - 4, ".csv") == 0;
-	snprintf(buf, len, "%.*s/%s", (int)(cut ? n - 4 : n), out, name);
-}
 
 static int mkDemoRun_Open(mkDemoRun *run, const char *name, const char *const *cols, int ncols, mkCsv *csv)
 {
-	char msg[1024], path[MK_PATH_MAX];
-	mkGeometryPath(run->o->out, name, path, sizeof path);
-	if (mkPath_MakeParents(path, msg, sizeof msg) != 0 || mkCsv_Open(csv, path, cols, ncols, msg, sizeof msg) != 0) {
-		fprintf(stderr, "demos: %s\n", msg);
+	if (mkRun_OpenSibling(run->run, name, cols, ncols, csv) != 0) {
 		run->failed = 1;
 		return -1;
 	}
@@ -245,18 +88,19 @@ static int mkDemoRun_Commit(mkDemoRun *run, mkCsv *csv, const mkEntry *e)
 {
 	char msg[1024];
 	long rows = csv->rows;
-	mkMeta_SetInt(run->meta, "figure", e->figure);
-	mkMeta_Set(run->meta, "panel", e->panel);
-	mkMeta_Set(run->meta, "content", e->content);
-	mkMeta_Set(run->meta, "body1", e->body1);
-	mkMeta_Set(run->meta, "body2", e->body2);
-	mkMeta_Set(run->meta, "note", e->note);
-	if (mkCsv_Commit(csv, run->meta, msg, sizeof msg) != 0) {
+	mkMeta *meta = &run->run->meta;
+	mkMeta_SetInt(meta, "figure", e->figure);
+	mkMeta_Set(meta, "panel", e->panel);
+	mkMeta_Set(meta, "content", e->content);
+	mkMeta_Set(meta, "body1", e->body1);
+	mkMeta_Set(meta, "body2", e->body2);
+	mkMeta_Set(meta, "note", e->note);
+	if (mkCsv_Commit(csv, meta, msg, sizeof msg) != 0) {
 		fprintf(stderr, "demos: %s\n", msg);
 		run->failed = 1;
 		return -1;
 	}
-	mkCsv *ix = &run->index;
+	mkCsv *ix = &run->run->csv;
 	mkCsv_Int(ix, e->figure);
 	mkCsv_Str(ix, e->panel);
 	mkCsv_Str(ix, e->file);
@@ -274,7 +118,7 @@ static int mkDemoRun_Commit(mkDemoRun *run, mkCsv *csv, const mkEntry *e)
 }
 
 /* Two blank lines: gnuplot's separator of data blocks (curves, surfaces). */
-static void mkCsv_EndBlock(mkCsv *csv)
+static void mkEndBlock(mkCsv *csv)
 {
 	fputs("\n\n", csv->file.fp);
 }
@@ -301,31 +145,24 @@ static void mkSpec2(char *buf, size_t len, const double s[3], double angle, doub
 		mkFmt(s[0]).s, mkFmt(s[1]).s, mkFmt(s[2]).s, mkFmt(angle).s, mkFmt(shear).s);
 }
 
-static int mkParse2(const char *text, const char *what, mkBody2 *out)
+/* The body of a SPEC text into *out: an mkBody2 when dim is 2, an mkBody3
+ * when 3. Returns 0, or -1 after printing why. */
+static int mkParseBody(const char *text, int dim, const char *what, void *out)
 {
 	mkSpec spec;
 	char msg[512];
-	if (mkSpec_Parse(text, 2, what, &spec, msg, sizeof msg) != MK_OK) {
+	if (mkSpec_Parse(text, dim, what, &spec, msg, sizeof msg) != MK_OK) {
 		fprintf(stderr, "demos: %s: %s (SPEC '%s')\n", what, msg, text);
 		return -1;
 	}
-	*out = spec.body2;
+	if (dim == 2)
+		*(mkBody2 *)out = spec.body2;
+	else
+		*(mkBody3 *)out = spec.body3;
 	return 0;
 }
 
-static int mkParse3(const char *text, const char *what, mkBody3 *out)
-{
-	mkSpec spec;
-	char msg[512];
-	if (mkSpec_Parse(text, 3, what, &spec, msg, sizeof msg) != MK_OK) {
-		fprintf(stderr, "demos: %s: %s (SPEC '%s')\n", what, msg, text);
-		return -1;
-	}
-	*out = spec.body3;
-	return 0;
-}
-
-static mkSumOptions mkOptionsFor(const mkOptions *o, mkForm form, mkParam param)
+static mkSumOptions mkOptionsFor(const mkDemosOptions *o, mkForm form, mkParam param)
 {
 	mkSumOptions opt = mkSumOptions_Default();
 	opt.set = MK_SET_CONTACT;
@@ -364,10 +201,23 @@ static void mkPts_Free(mkPts *p)
 	memset(p, 0, sizeof *p);
 }
 
+#define MK_NO_FIELD (-1000000L)
+
+/* Up to three leading fields of a row: lead1, lead2 (NULL: none), lead3
+ * (MK_NO_FIELD: none). */
+static void mkWriteLeads(mkCsv *csv, const char *lead1, const char *lead2, long lead3)
+{
+	if (lead1)
+		mkCsv_Str(csv, lead1);
+	if (lead2)
+		mkCsv_Str(csv, lead2);
+	if (lead3 != MK_NO_FIELD)
+		mkCsv_Int(csv, lead3);
+}
+
 /* A closed outline of a 2D body: n samples and the first repeated, after
  * up to three leading fields (NULL / MK_NO_FIELD: none); with_kiss adds two
  * empty kissing-point fields. */
-#define MK_NO_FIELD (-1000000L)
 static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, long lead3,
 	mkBody2 b, const mkPts *u, int with_kiss)
 {
@@ -375,12 +225,7 @@ static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, lo
 		int kk = k % u->n;
 		mkVec2 uv = { u->ux[kk], u->uy[kk] };
 		mkVec2 p = mkBody2_Point(b, uv);
-		if (lead1)
-			mkCsv_Str(csv, lead1);
-		if (lead2)
-			mkCsv_Str(csv, lead2);
-		if (lead3 != MK_NO_FIELD)
-			mkCsv_Int(csv, lead3);
+		mkWriteLeads(csv, lead1, lead2, lead3);
 		mkCsv_Int(csv, k);
 		mkCsv_Double(csv, p.x);
 		mkCsv_Double(csv, p.y);
@@ -390,14 +235,35 @@ static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, lo
 		}
 		mkCsv_EndRow(csv);
 	}
-	mkCsv_EndBlock(csv);
+	mkEndBlock(csv);
+}
+
+/* A closed-form sum curve: for k = 0..n (k = n repeats k = 0) the lead
+ * fields (as in mkWriteOutline2), k, the parameter's angle when
+ * with_angle, the sum point and the kissing point; then a block end. */
+static void mkWriteSum2(mkCsv *csv, const char *lead1, const char *lead2, long lead3, const mkPts *pt,
+	int with_angle)
+{
+	for (int k = 0; k <= pt->n; ++k) {
+		int kk = k % pt->n;
+		mkWriteLeads(csv, lead1, lead2, lead3);
+		mkCsv_Int(csv, k);
+		if (with_angle)
+			mkCsv_Double(csv, atan2(pt->uy[kk], pt->ux[kk]));
+		mkCsv_Double(csv, pt->x[kk]);
+		mkCsv_Double(csv, pt->y[kk]);
+		mkCsv_Double(csv, pt->kx[kk]);
+		mkCsv_Double(csv, pt->ky[kk]);
+		mkCsv_EndRow(csv);
+	}
+	mkEndBlock(csv);
 }
 
 /* ---- Fig. 1: definition vs closed form ------------------------------------ */
 
 static void mkFigure1(mkDemoRun *run)
 {
-	const mkOptions *o = run->o;
+	const mkDemosOptions *o = run->o;
 	const int N = 50;
 	char s1[256], s2[256];
 	const double p1[3] = { 10.0, 8.6, 0.36 }, p2[3] = { 9.4, 6.8, 1.28 };
@@ -405,7 +271,7 @@ static void mkFigure1(mkDemoRun *run)
 	mkSpec2(s2, sizeof s2, p2, -MK_PI / 5.0, 1.6);
 	mkBody2 b1, b2;
 	mkPts pt;
-	if (mkParse2(s1, "fig1.body1", &b1) || mkParse2(s2, "fig1.body2", &b2) || mkPts_Alloc(&pt, N)) {
+	if (mkParseBody(s1, 2, "fig1.body1", &b1) || mkParseBody(s2, 2, "fig1.body2", &b2) || mkPts_Alloc(&pt, N)) {
 		run->failed = 1;
 		return;
 	}
@@ -427,7 +293,7 @@ static void mkFigure1(mkDemoRun *run)
 				mkCsv_Double(&csv, body == 0 ? p.y : -p.y);
 				mkCsv_EndRow(&csv);
 			}
-			mkCsv_EndBlock(&csv);
+			mkEndBlock(&csv);
 		}
 		mkEntry e = { 1, "a", "fig1-bodies.csv",
 			"samples x1(theta_k) of B1 and -x2(theta_k) of -B2, theta_k = -pi + 2 pi k / 50; k = 50 repeats k = 0",
@@ -468,17 +334,7 @@ static void mkFigure1(mkDemoRun *run)
 	}
 	static const char *const ccols[] = { "k", "theta", "x", "y", "x1", "y1" };
 	if (!run->failed && mkDemoRun_Open(run, "fig1-closed.csv", ccols, 6, &csv) == 0) {
-		for (int k = 0; k <= N; ++k) {
-			int kk = k % N;
-			mkCsv_Int(&csv, k);
-			mkCsv_Double(&csv, atan2(pt.uy[kk], pt.ux[kk]));
-			mkCsv_Double(&csv, pt.x[kk]);
-			mkCsv_Double(&csv, pt.y[kk]);
-			mkCsv_Double(&csv, pt.kx[kk]);
-			mkCsv_Double(&csv, pt.ky[kk]);
-			mkCsv_EndRow(&csv);
-		}
-		mkCsv_EndBlock(&csv);
+		mkWriteSum2(&csv, NULL, NULL, MK_NO_FIELD, &pt, 1);
 		mkEntry e = { 1, "b", "fig1-closed.csv",
 			"the closed form x(theta_k) at B1's 50 surface parameters, with B1's point x1(theta_k) at the same parameter; k = 50 repeats k = 0",
 			s1, s2, mkForm_Name(opt.form), mkParam_Name(opt.param), N, "" };
@@ -489,60 +345,38 @@ static void mkFigure1(mkDemoRun *run)
 
 /* ---- Fig. 2: the two theorems --------------------------------------------- */
 
-static void mkFigure2(mkDemoRun *run)
-{
-	const mkOptions *o = run->o;
-	const int N = 100, K0 = 24;
+/* The pair of Fig. 2 and its contact at B1's surface parameter K0. */
+typedef struct mkFig2 {
 	char s1[256], s2[256];
-	const double p1[3] = { 3.3, 2.6, 0.73 }, p2[3] = { 2.4, 2.0, 1.28 };
-	mkSpec2(s1, sizeof s1, p1, MK_PI / 6.3, 0.276);
-	mkSpec2(s2, sizeof s2, p2, -MK_PI / 3.0, 0.85);
 	mkBody2 b1, b2;
-	mkPts pt, ol;
-	if (mkParse2(s1, "fig2.body1", &b1) || mkParse2(s2, "fig2.body2", &b2)
-		|| mkPts_Alloc(&pt, N) || mkPts_Alloc(&ol, (int)o->outline)) {
-		run->failed = 1;
-		return;
-	}
-	mkSample2_Angles(N, pt.ux, pt.uy);
-	mkSample2_Angles(ol.n, ol.ux, ol.uy);
+	mkVec2 u0, n1;
+	mkVec2 kiss[2], xs[2];   /* theorem 1, theorem 2 */
+} mkFig2;
 
-	/* The contact: B1's surface parameter K0, its point and world normal. */
-	mkVec2 u0 = { pt.ux[K0], pt.uy[K0] };
-	mkVec2 x1 = mkBody2_Point(b1, u0);
-	mkVec2 m1 = mkBody2_Gradient(b1, x1);
-	double m1n = hypot(m1.x, m1.y);
-	mkVec2 n1 = { m1.x / m1n, m1.y / m1n };
-	mkVec2 kiss[2], xs[2];
-	xs[0] = mkSum2_Point(b1, b2, MK_SET_CONTACT, MK_FORM_NORMAL, MK_PARAM_NORMAL, n1, &kiss[0]);
-	xs[1] = mkSum2_Point(b1, b2, MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, u0, &kiss[1]);
+#define MK_FIG2_N 100
+#define MK_FIG2_K0 24
 
-	/* Curves: Theorem 1 at 100 normal angles, Theorem 2 at B1's 100
-	 * surface angles. */
+/* Curves: Theorem 1 at 100 normal angles, Theorem 2 at B1's 100 surface
+ * angles. */
+static void mkFigure2_Curves(mkDemoRun *run, const mkFig2 *f, mkPts *pt)
+{
+	const mkDemosOptions *o = run->o;
+	const int N = MK_FIG2_N;
+	const char *s1 = f->s1, *s2 = f->s2;
+	mkBody2 b1 = f->b1, b2 = f->b2;
 	static const char *const ccols[] = { "theorem", "k", "param_angle", "x", "y", "kx", "ky" };
 	mkCsv csv;
 	if (mkDemoRun_Open(run, "fig2-curves.csv", ccols, 7, &csv) == 0) {
 		for (int th = 1; th <= 2 && !run->failed; ++th) {
 			mkSumOptions opt = th == 1 ? mkOptionsFor(o, MK_FORM_NORMAL, MK_PARAM_NORMAL)
 				: mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
-			mkResult rc = mkSum2_Batch(b1, b2, &opt, pt.ux, pt.uy, N, pt.x, pt.y, pt.kx, pt.ky);
+			mkResult rc = mkSum2_Batch(b1, b2, &opt, pt->ux, pt->uy, N, pt->x, pt->y, pt->kx, pt->ky);
 			if (rc != MK_OK) {
 				fprintf(stderr, "demos: fig. 2: the closed form failed: %s\n", mkResult_Name(rc));
 				run->failed = 1;
 				break;
 			}
-			for (int k = 0; k <= N; ++k) {
-				int kk = k % N;
-				mkCsv_Int(&csv, th);
-				mkCsv_Int(&csv, k);
-				mkCsv_Double(&csv, atan2(pt.uy[kk], pt.ux[kk]));
-				mkCsv_Double(&csv, pt.x[kk]);
-				mkCsv_Double(&csv, pt.y[kk]);
-				mkCsv_Double(&csv, pt.kx[kk]);
-				mkCsv_Double(&csv, pt.ky[kk]);
-				mkCsv_EndRow(&csv);
-			}
-			mkCsv_EndBlock(&csv);
+			mkWriteSum2(&csv, NULL, NULL, th, pt, 1);
 		}
 		if (run->failed) {
 			mkCsv_Discard(&csv);
@@ -555,16 +389,24 @@ static void mkFigure2(mkDemoRun *run)
 			mkDemoRun_Commit(run, &csv, &e);
 		}
 	}
+}
 
-	/* B1 and B2 placed at the contact, in both panels. */
+/* B1 and B2 placed at the contact, in both panels. */
+static void mkFigure2_Bodies(mkDemoRun *run, const mkFig2 *f, const mkPts *ol)
+{
+	const mkDemosOptions *o = run->o;
+	mkCsv csv;
+	const char *s1 = f->s1, *s2 = f->s2;
+	mkBody2 b1 = f->b1, b2 = f->b2;
+	const mkVec2 *xs = f->xs;
 	static const char *const bcols[] = { "theorem", "body", "k", "x", "y" };
 	if (!run->failed && mkDemoRun_Open(run, "fig2-bodies.csv", bcols, 5, &csv) == 0) {
 		for (int th = 1; th <= 2; ++th) {
 			mkBody2 placed = b2;
 			placed.t = xs[th - 1];
 			char lead[2] = { (char)('0' + th), '\0' };
-			mkWriteOutline2(&csv, lead, "b1", MK_NO_FIELD, b1, &ol, 0);
-			mkWriteOutline2(&csv, lead, "b2", MK_NO_FIELD, placed, &ol, 0);
+			mkWriteOutline2(&csv, lead, "b1", MK_NO_FIELD, b1, ol, 0);
+			mkWriteOutline2(&csv, lead, "b2", MK_NO_FIELD, placed, ol, 0);
 		}
 		char note[128];
 		snprintf(note, sizeof note, "outlines of %ld samples, closed; B2 centred at the contact's sum point", o->outline);
@@ -573,9 +415,19 @@ static void mkFigure2(mkDemoRun *run)
 		mkDemoRun_Commit(run, &csv, &e);
 	}
 
-	/* The contact: centres, kissing point, and the vectors each theorem
-	 * pairs: the unit normals n1 and -n1 (theorem 1), the gradients m1 of
-	 * B1 and m2 of the placed B2 at the kissing point (theorem 2). */
+}
+
+/* The contact: centres, kissing point, and the vectors each theorem pairs:
+ * the unit normals n1 and -n1 (theorem 1), the gradients m1 of B1 and m2 of
+ * the placed B2 at the kissing point (theorem 2). */
+static void mkFigure2_Contact(mkDemoRun *run, const mkFig2 *f)
+{
+	const int N = MK_FIG2_N, K0 = MK_FIG2_K0;
+	mkCsv csv;
+	const char *s1 = f->s1, *s2 = f->s2;
+	mkBody2 b1 = f->b1, b2 = f->b2;
+	const mkVec2 *xs = f->xs, *kiss = f->kiss;
+	mkVec2 u0 = f->u0, n1 = f->n1;
 	static const char *const kcols[] = { "theorem", "c1x", "c1y", "c2x", "c2y", "px", "py",
 		"v1x", "v1y", "v2x", "v2y", "v1_norm", "v2_norm", "param_index", "param_angle", "x_difference" };
 	if (!run->failed && mkDemoRun_Open(run, "fig2-contact.csv", kcols, 16, &csv) == 0) {
@@ -621,6 +473,40 @@ static void mkFigure2(mkDemoRun *run)
 			"k = 24 is the reference code's idx = 25" };
 		mkDemoRun_Commit(run, &csv, &e);
 	}
+}
+
+static void mkFigure2(mkDemoRun *run)
+{
+	const mkDemosOptions *o = run->o;
+	const int N = MK_FIG2_N, K0 = MK_FIG2_K0;
+	mkFig2 f;
+	const double p1[3] = { 3.3, 2.6, 0.73 }, p2[3] = { 2.4, 2.0, 1.28 };
+	mkSpec2(f.s1, sizeof f.s1, p1, MK_PI / 6.3, 0.276);
+	mkSpec2(f.s2, sizeof f.s2, p2, -MK_PI / 3.0, 0.85);
+	mkPts pt, ol;
+	if (mkParseBody(f.s1, 2, "fig2.body1", &f.b1) || mkParseBody(f.s2, 2, "fig2.body2", &f.b2)
+		|| mkPts_Alloc(&pt, N) || mkPts_Alloc(&ol, (int)o->outline)) {
+		run->failed = 1;
+		return;
+	}
+	mkSample2_Angles(N, pt.ux, pt.uy);
+	mkSample2_Angles(ol.n, ol.ux, ol.uy);
+
+	/* The contact: B1's surface parameter K0, its point and world normal. */
+	f.u0.x = pt.ux[K0];
+	f.u0.y = pt.uy[K0];
+	mkVec2 x1 = mkBody2_Point(f.b1, f.u0);
+	mkVec2 m1 = mkBody2_Gradient(f.b1, x1);
+	double m1n = hypot(m1.x, m1.y);
+	f.n1.x = m1.x / m1n;
+	f.n1.y = m1.y / m1n;
+	f.xs[0] = mkSum2_Point(f.b1, f.b2, MK_SET_CONTACT, MK_FORM_NORMAL, MK_PARAM_NORMAL, f.n1, &f.kiss[0]);
+	f.xs[1] = mkSum2_Point(f.b1, f.b2, MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, f.u0, &f.kiss[1]);
+	mkFigure2_Curves(run, &f, &pt);
+	if (!run->failed)
+		mkFigure2_Bodies(run, &f, &ol);
+	if (!run->failed)
+		mkFigure2_Contact(run, &f);
 	mkPts_Free(&pt);
 	mkPts_Free(&ol);
 }
@@ -629,7 +515,7 @@ static void mkFigure2(mkDemoRun *run)
 
 static void mkFigure3(mkDemoRun *run)
 {
-	const mkOptions *o = run->o;
+	const mkDemosOptions *o = run->o;
 	const int N = MK_FIG3_N;
 	static const char *const panels[4] = { "canonical", "rotated", "sheared", "rotated+sheared" };
 	mkPts pt, ol;
@@ -653,7 +539,7 @@ static void mkFigure3(mkDemoRun *run)
 		mkSpec2(specs[p][0], sizeof specs[p][0], mkFig3A1, rot ? mkFig3Angle[0] : 0.0, shear ? mkFig3Shear[0] : 0.0);
 		mkSpec2(specs[p][1], sizeof specs[p][1], mkFig3A2, rot ? mkFig3Angle[1] : 0.0, shear ? mkFig3Shear[1] : 0.0);
 		mkBody2 b1, b2;
-		if (mkParse2(specs[p][0], "fig3.body1", &b1) || mkParse2(specs[p][1], "fig3.body2", &b2)) {
+		if (mkParseBody(specs[p][0], 2, "fig3.body1", &b1) || mkParseBody(specs[p][1], 2, "fig3.body2", &b2)) {
 			run->failed = 1;
 			break;
 		}
@@ -664,19 +550,7 @@ static void mkFigure3(mkDemoRun *run)
 			break;
 		}
 		mkWriteOutline2(&csv, panels[p], "b1", -1, b1, &ol, 1);
-		for (int k = 0; k <= N; ++k) {
-			int kk = k % N;
-			mkCsv_Str(&csv, panels[p]);
-			mkCsv_Str(&csv, "sum");
-			mkCsv_Int(&csv, -1);
-			mkCsv_Int(&csv, k);
-			mkCsv_Double(&csv, pt.x[kk]);
-			mkCsv_Double(&csv, pt.y[kk]);
-			mkCsv_Double(&csv, pt.kx[kk]);
-			mkCsv_Double(&csv, pt.ky[kk]);
-			mkCsv_EndRow(&csv);
-		}
-		mkCsv_EndBlock(&csv);
+		mkWriteSum2(&csv, panels[p], "sum", -1, &pt, 0);
 		for (int place = 0; place < MK_FIG3_PLACES; ++place) {
 			int k = place * N / MK_FIG3_PLACES;
 			mkBody2 placed = b2;
@@ -772,49 +646,146 @@ typedef struct mkPanel3 {
 	char spec1[512], spec2[512];
 } mkPanel3;
 
-static void mkFigure4(mkDemoRun *run)
+/* The bodies of Fig. 4 and its panels: which pair, rotated (B1 by
+ * mkQuat1, B2 by mkQuat2) or not, and which of the two are parallelepipeds
+ * (bit 0: B1 mapped by R mkShear1, bit 1: B2 by R mkShear2). */
+enum { MK_SQ1, MK_SQ2, MK_CUBE1, MK_CUBE2, MK_CYL1, MK_CYL2, MK_ELL1, MK_ELL2 };
+static const struct {
+	const char *panel, *title;
+	int body1, body2, rotated, sheared;
+} mkFig4Panels[8] = {
+	{ "a", "two general superquadrics, canonical", MK_SQ1, MK_SQ2, 0, 0 },
+	{ "b", "two general superquadrics, rotated", MK_SQ1, MK_SQ2, 1, 0 },
+	{ "c", "two cubes", MK_CUBE1, MK_CUBE2, 1, 0 },
+	{ "d", "cube and elliptic cylinder", MK_CUBE1, MK_CYL2, 1, 0 },
+	{ "e", "two parallelepipeds", MK_CUBE1, MK_CUBE2, 1, 3 },
+	{ "f", "parallelepiped and elliptic cylinder", MK_CUBE1, MK_CYL2, 1, 1 },
+	{ "g", "two elliptic cylinders", MK_CYL1, MK_CYL2, 1, 0 },
+	{ "h", "two ellipsoids", MK_ELL1, MK_ELL2, 1, 0 },
+};
+
+/* The eight panels' SPEC texts; -1 on a zero quaternion (a program
+ * error). */
+static int mkFigure4_Panels(mkPanel3 P[8])
 {
-	const mkOptions *o = run->o;
-	const int G = MK_FIG4_GRID, N = G * G;
-	mkPanel3 P[8];
-	memset(P, 0, sizeof P);
-	const double *q1 = mkQuat1, *q2 = mkQuat2;
-	double cube1[3], cube2[3], cyl1[3], cyl2[3];
+	memset(P, 0, 8 * sizeof *P);
+	double cube1[3], cube2[3];
 	for (int i = 0; i < 3; ++i) {
 		cube1[i] = mkBox1[i] / 2.0;
 		cube2[i] = mkBox2[i] / 2.0;
 	}
-	cyl1[0] = mkCyl1[0];
-	cyl1[1] = mkCyl1[1];
-	cyl1[2] = mkCyl1[2] / 2.0;
-	cyl2[0] = mkCyl2[0];
-	cyl2[1] = mkCyl2[1];
-	cyl2[2] = mkCyl2[2] / 2.0;
+	const double cyl1[3] = { mkCyl1[0], mkCyl1[1], mkCyl1[2] / 2.0 };
+	const double cyl2[3] = { mkCyl2[0], mkCyl2[1], mkCyl2[2] / 2.0 };
+	const struct { const char *kind; const double *a; double e1, e2; } body[8] = {
+		{ "superquadric", mkFig4Sq1, mkFig4Sq1[3], mkFig4Sq1[4] },
+		{ "superquadric", mkFig4Sq2, mkFig4Sq2[3], mkFig4Sq2[4] },
+		{ "superquadric", cube1, 0.1, 0.1 }, { "superquadric", cube2, 0.1, 0.1 },
+		{ "superquadric", cyl1, 0.1, 1.0 }, { "superquadric", cyl2, 0.1, 1.0 },
+		{ "ellipsoid", mkEll1, 1.0, 1.0 }, { "ellipsoid", mkEll2, 1.0, 1.0 },
+	};
+	const double *quat[2] = { mkQuat1, mkQuat2 }, *shear[2] = { mkShear1, mkShear2 };
 	int bad = 0;
-	P[0].panel = "a"; P[0].title = "two general superquadrics, canonical";
-	bad |= mkSpec3(P[0].spec1, 512, "superquadric", mkFig4Sq1, mkFig4Sq1[3], mkFig4Sq1[4], NULL, NULL);
-	bad |= mkSpec3(P[0].spec2, 512, "superquadric", mkFig4Sq2, mkFig4Sq2[3], mkFig4Sq2[4], NULL, NULL);
-	P[1].panel = "b"; P[1].title = "two general superquadrics, rotated";
-	bad |= mkSpec3(P[1].spec1, 512, "superquadric", mkFig4Sq1, mkFig4Sq1[3], mkFig4Sq1[4], q1, NULL);
-	bad |= mkSpec3(P[1].spec2, 512, "superquadric", mkFig4Sq2, mkFig4Sq2[3], mkFig4Sq2[4], q2, NULL);
-	P[2].panel = "c"; P[2].title = "two cubes";
-	bad |= mkSpec3(P[2].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, NULL);
-	bad |= mkSpec3(P[2].spec2, 512, "superquadric", cube2, 0.1, 0.1, q2, NULL);
-	P[3].panel = "d"; P[3].title = "cube and elliptic cylinder";
-	bad |= mkSpec3(P[3].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, NULL);
-	bad |= mkSpec3(P[3].spec2, 512, "superquadric", cyl2, 0.1, 1.0, q2, NULL);
-	P[4].panel = "e"; P[4].title = "two parallelepipeds";
-	bad |= mkSpec3(P[4].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, mkShear1);
-	bad |= mkSpec3(P[4].spec2, 512, "superquadric", cube2, 0.1, 0.1, q2, mkShear2);
-	P[5].panel = "f"; P[5].title = "parallelepiped and elliptic cylinder";
-	bad |= mkSpec3(P[5].spec1, 512, "superquadric", cube1, 0.1, 0.1, q1, mkShear1);
-	bad |= mkSpec3(P[5].spec2, 512, "superquadric", cyl2, 0.1, 1.0, q2, NULL);
-	P[6].panel = "g"; P[6].title = "two elliptic cylinders";
-	bad |= mkSpec3(P[6].spec1, 512, "superquadric", cyl1, 0.1, 1.0, q1, NULL);
-	bad |= mkSpec3(P[6].spec2, 512, "superquadric", cyl2, 0.1, 1.0, q2, NULL);
-	P[7].panel = "h"; P[7].title = "two ellipsoids";
-	bad |= mkSpec3(P[7].spec1, 512, "ellipsoid", mkEll1, 1.0, 1.0, q1, NULL);
-	bad |= mkSpec3(P[7].spec2, 512, "ellipsoid", mkEll2, 1.0, 1.0, q2, NULL);
+	for (int p = 0; p < 8; ++p) {
+		P[p].panel = mkFig4Panels[p].panel;
+		P[p].title = mkFig4Panels[p].title;
+		for (int k = 0; k < 2; ++k) {
+			int which = k == 0 ? mkFig4Panels[p].body1 : mkFig4Panels[p].body2;
+			bad |= mkSpec3(k == 0 ? P[p].spec1 : P[p].spec2, sizeof P[p].spec1, body[which].kind, body[which].a,
+				body[which].e1, body[which].e2, mkFig4Panels[p].rotated ? quat[k] : NULL,
+				(mkFig4Panels[p].sheared >> k) & 1 ? shear[k] : NULL);
+		}
+	}
+	return bad ? -1 : 0;
+}
+
+/* Where B2 goes: the grid index whose B1 normal is closest to the
+ * placement direction. */
+static int mkFigure4_Place(mkBody3 b1, const mkPts *pt, int N)
+{
+	double dn = sqrt(mkPlaceDir[0] * mkPlaceDir[0] + mkPlaceDir[1] * mkPlaceDir[1] + mkPlaceDir[2] * mkPlaceDir[2]);
+	int best = 0;
+	double bestdot = -2.0;
+	for (int k = 0; k < N; ++k) {
+		mkVec3 u = { pt->ux[k], pt->uy[k], pt->uz[k] };
+		mkVec3 x1 = mkBody3_Point(b1, u);
+		mkVec3 g = mkBody3_Gradient(b1, x1);
+		double gn = sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+		double dot = (g.x * mkPlaceDir[0] + g.y * mkPlaceDir[1] + g.z * mkPlaceDir[2]) / (gn * dn);
+		if (gn > 0.0 && dot > bestdot) {
+			bestdot = dot;
+			best = k;
+		}
+	}
+	return best;
+}
+
+/* One panel: the sum on the grid, B2 placed on it, the file and its index
+ * row. pt holds the grid; b1p and b2p are room for the bodies' surfaces. */
+static void mkFigure4_Panel(mkDemoRun *run, const mkPanel3 *P, mkPts *pt, mkPts *b1p, mkPts *b2p)
+{
+	const mkDemosOptions *o = run->o;
+	const int G = MK_FIG4_GRID, N = G * G;
+	mkSumOptions opt = mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
+	static const char *const cols[] = { "surface", "i", "j", "x", "y", "z" };
+	mkBody3 b1, b2;
+	if (mkParseBody(P->spec1, 3, "fig4.body1", &b1) || mkParseBody(P->spec2, 3, "fig4.body2", &b2)) {
+		run->failed = 1;
+		return;
+	}
+	mkResult rc = mkSum3_Batch(b1, b2, &opt, pt->ux, pt->uy, pt->uz, N, pt->x, pt->y, pt->z, pt->kx, pt->ky, pt->kz);
+	if (rc != MK_OK) {
+		fprintf(stderr, "demos: fig. 4(%s): the closed form failed: %s\n", P->panel, mkResult_Name(rc));
+		run->failed = 1;
+		return;
+	}
+	int best = mkFigure4_Place(b1, pt, N);
+	mkBody3 placed = b2;
+	placed.t.x = pt->x[best];
+	placed.t.y = pt->y[best];
+	placed.t.z = pt->z[best];
+	for (int k = 0; k < N; ++k) {
+		mkVec3 u = { pt->ux[k], pt->uy[k], pt->uz[k] };
+		mkVec3 a = mkBody3_Point(b1, u), b = mkBody3_Point(placed, u);
+		b1p->x[k] = a.x;
+		b1p->y[k] = a.y;
+		b1p->z[k] = a.z;
+		b2p->x[k] = b.x;
+		b2p->y[k] = b.y;
+		b2p->z[k] = b.z;
+	}
+	int finite = 1;
+	for (int k = 0; k < N; ++k)
+		finite = finite && isfinite(pt->x[k]) && isfinite(pt->y[k]) && isfinite(pt->z[k]);
+	if (!finite) {
+		fprintf(stderr, "demos: fig. 4(%s): a point of the sum is not finite\n", P->panel);
+		run->failed = 1;
+		return;
+	}
+	char file[64], content[512], note[512];
+	snprintf(file, sizeof file, "fig4-%s.csv", P->panel);
+	mkCsv csv;
+	if (mkDemoRun_Open(run, file, cols, 6, &csv) != 0)
+		return;
+	mkWriteSurface(&csv, "b1", G, b1p->x, b1p->y, b1p->z);
+	mkWriteSurface(&csv, "sum", G, pt->x, pt->y, pt->z);
+	mkWriteSurface(&csv, "b2", G, b2p->x, b2p->y, b2p->z);
+	snprintf(content, sizeof content, "%s: surfaces b1 (data block 0), sum (1) and b2 placed on the sum (2) "
+		"on the 50 x 50 grid of B1's surface angles (eta_i, omega_j; i = 0 and 49 the exact poles; "
+		"j = 50 repeats j = 0)",
+		P->title);
+	snprintf(note, sizeof note, "B2 centred at the sum point of grid index (i, j) = (%d, %d), "
+		"at %.17g,%.17g,%.17g, where B1's normal is closest to (%g, %g, %g)",
+		best / G, best % G, placed.t.x, placed.t.y, placed.t.z, mkPlaceDir[0], mkPlaceDir[1], mkPlaceDir[2]);
+	mkEntry e = { 4, P->panel, file, content, P->spec1, P->spec2,
+		mkForm_Name(opt.form), mkParam_Name(opt.param), G, note };
+	mkDemoRun_Commit(run, &csv, &e);
+}
+
+static void mkFigure4(mkDemoRun *run)
+{
+	const int G = MK_FIG4_GRID, N = G * G;
+	mkPanel3 P[8];
+	int bad = mkFigure4_Panels(P) != 0;
 	mkPts pt, b1p, b2p;
 	if (bad || mkPts_Alloc(&pt, N) || mkPts_Alloc(&b1p, N) || mkPts_Alloc(&b2p, N)) {
 		if (bad)
@@ -823,154 +794,56 @@ static void mkFigure4(mkDemoRun *run)
 		return;
 	}
 	mkSample3_Grid(G, pt.ux, pt.uy, pt.uz);
-	double dn = sqrt(mkPlaceDir[0] * mkPlaceDir[0] + mkPlaceDir[1] * mkPlaceDir[1] + mkPlaceDir[2] * mkPlaceDir[2]);
-	mkSumOptions opt = mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
-	static const char *const cols[] = { "surface", "i", "j", "x", "y", "z" };
-	for (int p = 0; p < 8 && !run->failed; ++p) {
-		mkBody3 b1, b2;
-		if (mkParse3(P[p].spec1, "fig4.body1", &b1) || mkParse3(P[p].spec2, "fig4.body2", &b2)) {
-			run->failed = 1;
-			break;
-		}
-		mkResult rc = mkSum3_Batch(b1, b2, &opt, pt.ux, pt.uy, pt.uz, N, pt.x, pt.y, pt.z, pt.kx, pt.ky, pt.kz);
-		if (rc != MK_OK) {
-			fprintf(stderr, "demos: fig. 4(%s): the closed form failed: %s\n", P[p].panel, mkResult_Name(rc));
-			run->failed = 1;
-			break;
-		}
-		/* Where B2 goes: the parameter whose B1 normal is closest to the
-		 * placement direction. */
-		int best = 0;
-		double bestdot = -2.0;
-		for (int k = 0; k < N; ++k) {
-			mkVec3 u = { pt.ux[k], pt.uy[k], pt.uz[k] };
-			mkVec3 x1 = mkBody3_Point(b1, u);
-			mkVec3 g = mkBody3_Gradient(b1, x1);
-			double gn = sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
-			double dot = (g.x * mkPlaceDir[0] + g.y * mkPlaceDir[1] + g.z * mkPlaceDir[2]) / (gn * dn);
-			if (gn > 0.0 && dot > bestdot) {
-				bestdot = dot;
-				best = k;
-			}
-		}
-		mkBody3 placed = b2;
-		placed.t.x = pt.x[best];
-		placed.t.y = pt.y[best];
-		placed.t.z = pt.z[best];
-		for (int k = 0; k < N; ++k) {
-			mkVec3 u = { pt.ux[k], pt.uy[k], pt.uz[k] };
-			mkVec3 a = mkBody3_Point(b1, u), b = mkBody3_Point(placed, u);
-			b1p.x[k] = a.x;
-			b1p.y[k] = a.y;
-			b1p.z[k] = a.z;
-			b2p.x[k] = b.x;
-			b2p.y[k] = b.y;
-			b2p.z[k] = b.z;
-		}
-		int finite = 1;
-		for (int k = 0; k < N; ++k)
-			finite = finite && isfinite(pt.x[k]) && isfinite(pt.y[k]) && isfinite(pt.z[k]);
-		if (!finite) {
-			fprintf(stderr, "demos: fig. 4(%s): a point of the sum is not finite\n", P[p].panel);
-			run->failed = 1;
-			break;
-		}
-		char file[64], content[512], note[512];
-		snprintf(file, sizeof file, "fig4-%s.csv", P[p].panel);
-		mkCsv csv;
-		if (mkDemoRun_Open(run, file, cols, 6, &csv) != 0)
-			break;
-		mkWriteSurface(&csv, "b1", G, b1p.x, b1p.y, b1p.z);
-		mkWriteSurface(&csv, "sum", G, pt.x, pt.y, pt.z);
-		mkWriteSurface(&csv, "b2", G, b2p.x, b2p.y, b2p.z);
-		snprintf(content, sizeof content, "%s: surfaces b1 (data block 0), sum (1) and b2 placed on the sum (2) "
-			"on the 50 x 50 grid of B1's surface angles (eta_i, omega_j; i = 0 and 49 the exact poles; "
-			"j = 50 repeats j = 0)",
-			P[p].title);
-		snprintf(note, sizeof note, "B2 centred at the sum point of grid index (i, j) = (%d, %d), "
-			"at %.17g,%.17g,%.17g, where B1's normal is closest to (%g, %g, %g)",
-			best / G, best % G, placed.t.x, placed.t.y, placed.t.z, mkPlaceDir[0], mkPlaceDir[1], mkPlaceDir[2]);
-		mkEntry e = { 4, P[p].panel, file, content, P[p].spec1, P[p].spec2,
-			mkForm_Name(opt.form), mkParam_Name(opt.param), G, note };
-		mkDemoRun_Commit(run, &csv, &e);
-	}
+	for (int p = 0; p < 8 && !run->failed; ++p)
+		mkFigure4_Panel(run, &P[p], &pt, &b1p, &b2p);
 	mkPts_Free(&pt);
 	mkPts_Free(&b1p);
 	mkPts_Free(&b2p);
 }
 
-/* ---- main ---------------------------------------------------------------- */
+/* ---- the run ------------------------------------------------------------- */
 
-int main(int argc, char **argv)
+int mkDemos_Figure(mkRun *run, const mkDemosOptions *o, int f)
 {
-	mkOptions o;
-	char outbuf[128];
-	int parsed = mkParseOptions(argc, argv, &o, outbuf, sizeof outbuf);
-	if (parsed == 1)
-		return 0;
-	if (parsed != 0)
-		return 2;
+	mkDemoRun d = { o, run, 0 };
+	switch (f) {
+	case 1: mkFigure1(&d); break;
+	case 2: mkFigure2(&d); break;
+	case 3: mkFigure3(&d); break;
+	default: mkFigure4(&d); break;
+	}
+	return d.failed ? -1 : 0;
+}
 
-	if (mkPath_PrepareOutput("demos", o.out, o.force) != 0)
-		return 1;
-	char msg[1024];
-
-	/* The chosen figures, in order, are the run's units. */
-	int units[4], nunits = 0;
-	for (int f = 1; f <= 4; ++f)
-		if (o.figure[f])
-			units[nunits++] = f;
-	long begin, end;
-	mkShard_Range(o.shard, nunits, &begin, &end);
-
-	mkMeta meta;
-	mkMeta_Init(&meta, "demos", MK_SCHEMA_VERSION, argc, argv);
-	char text[512];
-	mkMeta_Set(&meta, "seed", "none (no random draws)");
-	mkMeta_Set(&meta, "trials", "1 (each figure once)");
-	snprintf(text, sizeof text, "%d/%d", o.shard.index, o.shard.count);
-	mkMeta_Set(&meta, "shard", text);
-	text[0] = '\0';
+void mkDemos_Describe(mkMeta *meta, const mkDemosOptions *o, const int *units, long begin, long end)
+{
+	char text[512] = "";
+	mkMeta_Set(meta, "seed", "none (no random draws)");
+	mkMeta_Set(meta, "trials", "1 (each figure once)");
 	for (long i = begin; i < end; ++i)
 		snprintf(text + strlen(text), sizeof text - strlen(text), "%s%d", i > begin ? "," : "", units[i]);
-	mkMeta_Set(&meta, "figures", text[0] ? text : "none");
-	mkMeta_Set(&meta, "set", mkSet_Name(MK_SET_CONTACT));
-	mkMeta_Set(&meta, "impl_requested", mkImpl_Name(o.impl));
-	mkMeta_Set(&meta, "impl", mkImpl_Name(mkImpl_Resolve(o.impl)));
-	mkMeta_SetInt(&meta, "outline_samples_2d", o.outline);
-	mkMeta_Set(&meta, "transform_2d", "M = rot(angle) shear(s), shear(s) = [1 s; 0 1] (the paper's M^(3))");
-	mkMeta_Set(&meta, "choices_fig3", "B1 SE(a=(5.2,3.1), eps=0.45), B2 SE(a=(2.6,1.5), eps=1.55); "
+	mkMeta_Set(meta, "figures", text[0] ? text : "none");
+	mkMeta_Set(meta, "set", mkSet_Name(MK_SET_CONTACT));
+	mkMeta_Set(meta, "impl_requested", mkImpl_Name(o->impl));
+	mkMeta_Set(meta, "impl", mkImpl_Name(mkImpl_Resolve(o->impl)));
+	mkMeta_SetInt(meta, "outline_samples_2d", o->outline);
+	mkMeta_Set(meta, "transform_2d", "M = rot(angle) shear(s), shear(s) = [1 s; 0 1] (the paper's M^(3))");
+	mkMeta_Set(meta, "choices_fig3", "B1 SE(a=(5.2,3.1), eps=0.45), B2 SE(a=(2.6,1.5), eps=1.55); "
 		"angles (pi/5, -2pi/7); shears (0.8, -0.6); N = 100; B2 at sum points k = 0, 10, ..., 90");
-	mkMeta_Set(&meta, "choices_fig4", "general SQs B1 a=(7.5,5,4) eps=(0.4,1.4), B2 a=(3.5,2.2,1.6) eps=(1.6,0.3); "
+	mkMeta_Set(meta, "choices_fig4", "general SQs B1 a=(7.5,5,4) eps=(0.4,1.4), B2 a=(3.5,2.2,1.6) eps=(1.6,0.3); "
 		"rotations quat (0.86,0.22,0.38,0.26) for B1 and (0.42,0.71,0.13,0.55) for B2 in every rotated panel; "
 		"cubes of edges (5.2,3.3,2.87) and (4.3,2.8,1.254), cylinders (semi-axes, height) (6.24,3.6,10) "
 		"and (3.58,2.52,5) (reference demo script); parallelepiped = R S with the paper's shears; "
 		"ellipsoids a=(8.6,5.5,3.5) and (3.56,2.4,1.6); B2 placed where B1's normal is closest to (0.85,0.45,0.3)");
-	mkMeta_Set(&meta, "choices_fig2", "contact at B1's surface parameter k = 24 of 100 (the reference code's idx = 25)");
+	mkMeta_Set(meta, "choices_fig2", "contact at B1's surface parameter k = 24 of 100 (the reference code's idx = 25)");
+}
 
-	mkDemoRun run;
-	memset(&run, 0, sizeof run);
-	run.o = &o;
-	run.meta = &meta;
-	if (mkCsv_Open(&run.index, o.out, mkIndexColumns, MK_INDEX_COLUMNS, msg, sizeof msg) != 0) {
-		fprintf(stderr, "demos: %s\n", msg);
-		mkMeta_Free(&meta);
-		return 1;
-	}
-	for (long i = begin; i < end && !run.failed; ++i) {
-		switch (units[i]) {
-		case 1: mkFigure1(&run); break;
-		case 2: mkFigure2(&run); break;
-		case 3: mkFigure3(&run); break;
-		default: mkFigure4(&run); break;
-		}
-	}
-	/* The index's own sidecar describes the whole run. */
-	mkMeta_Set(&meta, "figure", "index");
-	mkMeta_Set(&meta, "panel", "all");
-	mkMeta_Set(&meta, "content", "one row per geometry file of this run, files in the directory named like this file without .csv");
-	mkMeta_Set(&meta, "body1", "see rows");
-	mkMeta_Set(&meta, "body2", "see rows");
-	mkMeta_Set(&meta, "note", "");
-	return mkCsv_Finish(&run.index, &meta, run.failed, "demos");
+void mkDemos_DescribeIndex(mkMeta *meta)
+{
+	mkMeta_Set(meta, "figure", "index");
+	mkMeta_Set(meta, "panel", "all");
+	mkMeta_Set(meta, "content", "one row per geometry file of this run, files in the directory named like this file without .csv");
+	mkMeta_Set(meta, "body1", "see rows");
+	mkMeta_Set(meta, "body2", "see rows");
+	mkMeta_Set(meta, "note", "");
 }

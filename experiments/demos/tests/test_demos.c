@@ -16,7 +16,7 @@
  * another (B2 placed on the sum) has all its points at gauge >= 1 - TOL with
  * respect to the other. */
 #include "ensure.h"
-#include "table.h"
+#include "exp_testing.h"
 
 #include <mink/mink.h>
 
@@ -30,17 +30,7 @@
 
 /* ---- gauges from the definitions ----------------------------------------- */
 
-/* The p-norm of (u, v) for p >= 1, scaled by the larger entry so that
- * powers up to p = 2e6 neither overflow nor underflow harmfully. */
-static double pnorm2(double u, double v, double p)
-{
-	u = fabs(u);
-	v = fabs(v);
-	double m = u > v ? u : v;
-	if (m == 0.0)
-		return 0.0;
-	return m * pow(pow(u / m, p) + pow(v / m, p), 1.0 / p);
-}
+/* pnorm2 (exp_testing.h): the p-norm of (u, v), scaled against overflow. */
 
 static mkVec2 inv2(mkMat2 M, mkVec2 x)
 {
@@ -85,27 +75,20 @@ static double gauge3(mkBody3 b, mkVec3 c, mkVec3 x)
 	return pnorm2(r, v.z / b.shape.c, 2.0 / b.shape.eps1);
 }
 
-static int parse2(const char *text, mkBody2 *out)
+/* The body of a SPEC text into *out: an mkBody2 when dim is 2, an mkBody3
+ * when 3. Returns 0, or -1 with a message. */
+static int parseBody(const char *text, int dim, void *out)
 {
 	mkSpec s;
 	char msg[256];
-	if (mkSpec_Parse(text, 2, "body", &s, msg, sizeof msg) != MK_OK) {
+	if (mkSpec_Parse(text, dim, "body", &s, msg, sizeof msg) != MK_OK) {
 		fprintf(stderr, "SPEC '%s': %s\n", text, msg);
 		return -1;
 	}
-	*out = s.body2;
-	return 0;
-}
-
-static int parse3(const char *text, mkBody3 *out)
-{
-	mkSpec s;
-	char msg[256];
-	if (mkSpec_Parse(text, 3, "body", &s, msg, sizeof msg) != MK_OK) {
-		fprintf(stderr, "SPEC '%s': %s\n", text, msg);
-		return -1;
-	}
-	*out = s.body3;
+	if (dim == 2)
+		*(mkBody2 *)out = s.body2;
+	else
+		*(mkBody3 *)out = s.body3;
 	return 0;
 }
 
@@ -113,11 +96,18 @@ static int parse3(const char *text, mkBody3 *out)
 
 static char dir[2048];
 
-static int readFile(mkTable *t, const char *name)
+/* A geometry file of the run (blank lines separate its blocks; *blank,
+ * when not NULL, receives their number). Returns 0, or -1 when missing or
+ * malformed. */
+static int readFile(mkTable *t, const char *name, long *blank)
 {
 	char path[4096];
+	long b = 0;
 	snprintf(path, sizeof path, "%s/%s", dir, name);
-	return mkTable_Read(t, path);
+	mkTable_LoadBlocks(t, path, &b);
+	if (blank)
+		*blank = b;
+	return t->present ? 0 : -1;
 }
 
 /* The sidecar exists and its "rows:" equals the index's count. */
@@ -140,30 +130,42 @@ static void checkSidecar(const char *name, long rows)
 static long findIndexRow(const mkTable *ix, const char *file)
 {
 	for (long r = 0; r < ix->rows; ++r)
-		if (strcmp(mkTable_Str(ix, r, "file"), file) == 0)
+		if (strcmp(str(ix, r, "file"), file) == 0)
 			return r;
 	return -1;
+}
+
+/* The index row of `file` and the two bodies of its SPEC texts, which must
+ * have the paper's parameters want1, want2 (a, b, eps) exactly; -1 when
+ * the row is missing. */
+static long findPair2(const mkTable *ix, const char *file, const double want1[3], const double want2[3],
+	mkBody2 *b1, mkBody2 *b2)
+{
+	long r = findIndexRow(ix, file);
+	ENSURE(r >= 0);
+	if (r < 0)
+		return -1;
+	ENSURE(parseBody(str(ix, r, "body1"), 2, b1) == 0);
+	ENSURE(parseBody(str(ix, r, "body2"), 2, b2) == 0);
+	ENSURE(b1->shape.a == want1[0] && b1->shape.b == want1[1] && b1->shape.eps == want1[2]);
+	ENSURE(b2->shape.a == want2[0] && b2->shape.b == want2[1] && b2->shape.eps == want2[2]);
+	return r;
 }
 
 /* ---- Fig. 1 --------------------------------------------------------------- */
 
 static void checkFigure1(const mkTable *ix)
 {
-	long r = findIndexRow(ix, "fig1-closed.csv");
-	ENSURE(r >= 0);
-	if (r < 0)
-		return;
+	/* The paper's parameters. */
+	static const double want1[3] = { 10.0, 8.6, 0.36 }, want2[3] = { 9.4, 6.8, 1.28 };
 	mkBody2 b1, b2;
-	ENSURE(parse2(mkTable_Str(ix, r, "body1"), &b1) == 0);
-	ENSURE(parse2(mkTable_Str(ix, r, "body2"), &b2) == 0);
-	/* The paper's parameters, exactly. */
-	ENSURE(b1.shape.a == 10.0 && b1.shape.b == 8.6 && b1.shape.eps == 0.36);
-	ENSURE(b2.shape.a == 9.4 && b2.shape.b == 6.8 && b2.shape.eps == 1.28);
+	if (findPair2(ix, "fig1-closed.csv", want1, want2, &b1, &b2) < 0)
+		return;
 
 	mkTable bodies, pairs, closed;
-	ENSURE(readFile(&bodies, "fig1-bodies.csv") == 0);
-	ENSURE(readFile(&pairs, "fig1-pairwise.csv") == 0);
-	ENSURE(readFile(&closed, "fig1-closed.csv") == 0);
+	ENSURE(readFile(&bodies, "fig1-bodies.csv", NULL) == 0);
+	ENSURE(readFile(&pairs, "fig1-pairwise.csv", NULL) == 0);
+	ENSURE(readFile(&closed, "fig1-closed.csv", NULL) == 0);
 	ENSURE(bodies.rows == 102 && pairs.rows == 2500 && closed.rows == 51);
 	if (bodies.rows != 102 || pairs.rows != 2500 || closed.rows != 51)
 		return;
@@ -171,8 +173,8 @@ static void checkFigure1(const mkTable *ix)
 	mkVec2 zero = { 0.0, 0.0 };
 	double worst = 0.0;
 	for (long k = 0; k < 102; ++k) {
-		mkVec2 p = { mkTable_Num(&bodies, k, "x"), mkTable_Num(&bodies, k, "y") };
-		int minus = strcmp(mkTable_Str(&bodies, k, "body"), "minus_b2") == 0;
+		mkVec2 p = { num(&bodies, k, "x"), num(&bodies, k, "y") };
+		int minus = strcmp(str(&bodies, k, "body"), "minus_b2") == 0;
 		mkVec2 q = { minus ? -p.x : p.x, minus ? -p.y : p.y };
 		worst = fmax(worst, fabs(gauge2(minus ? b2 : b1, zero, q) - 1.0));
 	}
@@ -184,9 +186,9 @@ static void checkFigure1(const mkTable *ix)
 	for (int i = 0; i < 50; ++i)
 		for (int j = 0; j < 50; ++j) {
 			long row = i * 50 + j;
-			double x = mkTable_Num(&bodies, i, "x") + mkTable_Num(&bodies, 51 + j, "x");
-			double y = mkTable_Num(&bodies, i, "y") + mkTable_Num(&bodies, 51 + j, "y");
-			exact = exact && mkTable_Num(&pairs, row, "x") == x && mkTable_Num(&pairs, row, "y") == y;
+			double x = num(&bodies, i, "x") + num(&bodies, 51 + j, "x");
+			double y = num(&bodies, i, "y") + num(&bodies, 51 + j, "y");
+			exact = exact && num(&pairs, row, "x") == x && num(&pairs, row, "y") == y;
 		}
 	ENSURE(exact);
 	/* The closed form: B1's point at the same parameter is the sample k
@@ -197,10 +199,10 @@ static void checkFigure1(const mkTable *ix)
 	double wb1 = 0.0, wb2 = 0.0;
 	int same = 1;
 	for (int k = 0; k <= 50; ++k) {
-		mkVec2 x = { mkTable_Num(&closed, k, "x"), mkTable_Num(&closed, k, "y") };
-		mkVec2 p = { mkTable_Num(&closed, k, "x1"), mkTable_Num(&closed, k, "y1") };
-		same = same && fabs(p.x - mkTable_Num(&bodies, k, "x")) <= 1e-12
-			&& fabs(p.y - mkTable_Num(&bodies, k, "y")) <= 1e-12;
+		mkVec2 x = { num(&closed, k, "x"), num(&closed, k, "y") };
+		mkVec2 p = { num(&closed, k, "x1"), num(&closed, k, "y1") };
+		same = same && fabs(p.x - num(&bodies, k, "x")) <= 1e-12
+			&& fabs(p.y - num(&bodies, k, "y")) <= 1e-12;
 		wb1 = fmax(wb1, fabs(gauge2(b1, zero, p) - 1.0));
 		wb2 = fmax(wb2, fabs(gauge2(b2, x, p) - 1.0));
 	}
@@ -217,24 +219,19 @@ static void checkFigure1(const mkTable *ix)
 
 static void checkFigure2(const mkTable *ix)
 {
-	long r = findIndexRow(ix, "fig2-contact.csv");
-	ENSURE(r >= 0);
-	if (r < 0)
-		return;
+	static const double want1[3] = { 3.3, 2.6, 0.73 }, want2[3] = { 2.4, 2.0, 1.28 };
 	mkBody2 b1, b2;
-	ENSURE(parse2(mkTable_Str(ix, r, "body1"), &b1) == 0);
-	ENSURE(parse2(mkTable_Str(ix, r, "body2"), &b2) == 0);
-	ENSURE(b1.shape.a == 3.3 && b1.shape.b == 2.6 && b1.shape.eps == 0.73);
-	ENSURE(b2.shape.a == 2.4 && b2.shape.b == 2.0 && b2.shape.eps == 1.28);
+	if (findPair2(ix, "fig2-contact.csv", want1, want2, &b1, &b2) < 0)
+		return;
 	mkTable c;
-	ENSURE(readFile(&c, "fig2-contact.csv") == 0);
+	ENSURE(readFile(&c, "fig2-contact.csv", NULL) == 0);
 	ENSURE(c.rows == 2);
 	mkVec2 zero = { 0.0, 0.0 };
 	for (long k = 0; k < c.rows; ++k) {
-		mkVec2 p = { mkTable_Num(&c, k, "px"), mkTable_Num(&c, k, "py") };
-		mkVec2 c2 = { mkTable_Num(&c, k, "c2x"), mkTable_Num(&c, k, "c2y") };
-		mkVec2 v1 = { mkTable_Num(&c, k, "v1x"), mkTable_Num(&c, k, "v1y") };
-		mkVec2 v2 = { mkTable_Num(&c, k, "v2x"), mkTable_Num(&c, k, "v2y") };
+		mkVec2 p = { num(&c, k, "px"), num(&c, k, "py") };
+		mkVec2 c2 = { num(&c, k, "c2x"), num(&c, k, "c2y") };
+		mkVec2 v1 = { num(&c, k, "v1x"), num(&c, k, "v1y") };
+		mkVec2 v2 = { num(&c, k, "v2x"), num(&c, k, "v2y") };
 		/* The contact point is on both bodies. */
 		ENSURE_NEAR(gauge2(b1, zero, p), 1.0, TOL);
 		ENSURE_NEAR(gauge2(b2, c2, p), 1.0, TOL);
@@ -252,7 +249,7 @@ static void checkFigure2(const mkTable *ix)
 		}
 		/* Both theorems find the same sum point: the distance is a few
 		 * units of rounding of coordinates near 5. */
-		ENSURE(mkTable_Num(&c, k, "x_difference") <= 1e-12);
+		ENSURE(num(&c, k, "x_difference") <= 1e-12);
 		printf("fig2 theorem %ld: |g-1| contact on B1 %.3g, on B2 %.3g; sin(v1, v2) %.3g\n", k + 1,
 			fabs(gauge2(b1, zero, p) - 1.0), fabs(gauge2(b2, c2, p) - 1.0),
 			fabs(v1.x * v2.y - v1.y * v2.x) / (n1 * n2));
@@ -291,26 +288,26 @@ static void checkFigure3(const mkTable *ix)
 	if (r < 0)
 		return;
 	mkTable t;
-	ENSURE(readFile(&t, "fig3.csv") == 0);
+	ENSURE(readFile(&t, "fig3.csv", NULL) == 0);
 	mkVec2 zero = { 0.0, 0.0 };
 	for (int p = 0; p < 4; ++p) {
 		char s1[512], s2[512];
-		part(mkTable_Str(ix, r, "body1"), p, s1, sizeof s1);
-		part(mkTable_Str(ix, r, "body2"), p, s2, sizeof s2);
+		part(str(ix, r, "body1"), p, s1, sizeof s1);
+		part(str(ix, r, "body2"), p, s2, sizeof s2);
 		mkBody2 b1, b2;
-		ENSURE(parse2(s1, &b1) == 0);
-		ENSURE(parse2(s2, &b2) == 0);
+		ENSURE(parseBody(s1, 2, &b1) == 0);
+		ENSURE(parseBody(s2, 2, &b2) == 0);
 		/* The sum's 100 points (and the closing row) with their centres. */
 		mkVec2 sum[101];
 		int nsum = 0, places = 0;
 		double on1 = 0.0, on2 = 0.0, b2on = 0.0, b1on = 0.0, outside = 2.0;
 		for (long k = 0; k < t.rows; ++k) {
-			if (strcmp(mkTable_Str(&t, k, "panel"), panels[p]) != 0)
+			if (strcmp(str(&t, k, "panel"), panels[p]) != 0)
 				continue;
-			const char *curve = mkTable_Str(&t, k, "curve");
-			mkVec2 x = { mkTable_Num(&t, k, "x"), mkTable_Num(&t, k, "y") };
+			const char *curve = str(&t, k, "curve");
+			mkVec2 x = { num(&t, k, "x"), num(&t, k, "y") };
 			if (strcmp(curve, "sum") == 0 && nsum < 101) {
-				mkVec2 kiss = { mkTable_Num(&t, k, "kx"), mkTable_Num(&t, k, "ky") };
+				mkVec2 kiss = { num(&t, k, "kx"), num(&t, k, "ky") };
 				sum[nsum++] = x;
 				on1 = fmax(on1, fabs(gauge2(b1, zero, kiss) - 1.0));
 				on2 = fmax(on2, fabs(gauge2(b2, x, kiss) - 1.0));
@@ -319,7 +316,7 @@ static void checkFigure3(const mkTable *ix)
 			} else if (strcmp(curve, "b2") == 0) {
 				/* B2 at place q is centred at the sum point k = 10 q (the
 				 * sum rows come before the B2 rows). */
-				int q = (int)mkTable_Num(&t, k, "place");
+				int q = (int)num(&t, k, "place");
 				places = q + 1 > places ? q + 1 : places;
 				ENSURE(nsum == 101 && q >= 0 && q < 10);
 				if (nsum == 101 && q >= 0 && q < 10) {
@@ -351,12 +348,12 @@ static void loadSurface(const mkTable *t, const char *name, mkGrid *g)
 {
 	g->count = 0;
 	for (long k = 0; k < t->rows && g->count < 50 * 51; ++k) {
-		if (strcmp(mkTable_Str(t, k, "surface"), name) != 0)
+		if (strcmp(str(t, k, "surface"), name) != 0)
 			continue;
-		mkVec3 x = { mkTable_Num(t, k, "x"), mkTable_Num(t, k, "y"), mkTable_Num(t, k, "z") };
+		mkVec3 x = { num(t, k, "x"), num(t, k, "y"), num(t, k, "z") };
 		g->p[g->count] = x;
-		g->i[g->count] = (int)mkTable_Num(t, k, "i");
-		g->j[g->count] = (int)mkTable_Num(t, k, "j");
+		g->i[g->count] = (int)num(t, k, "i");
+		g->j[g->count] = (int)num(t, k, "j");
 		g->count += 1;
 	}
 }
@@ -385,21 +382,22 @@ static void checkFigure4(const mkTable *ix)
 		if (r < 0)
 			continue;
 		mkBody3 b1, b2;
-		ENSURE(parse3(mkTable_Str(ix, r, "body1"), &b1) == 0);
-		ENSURE(parse3(mkTable_Str(ix, r, "body2"), &b2) == 0);
+		ENSURE(parseBody(str(ix, r, "body1"), 3, &b1) == 0);
+		ENSURE(parseBody(str(ix, r, "body2"), 3, &b2) == 0);
 		mkTable t;
-		ENSURE(readFile(&t, file) == 0);
+		long blank = 0;
+		ENSURE(readFile(&t, file, &blank) == 0);
 		/* Three surfaces of 50 rows of 51 points; a blank line after each
 		 * grid row and one more after each surface. */
 		ENSURE(t.rows == 3 * 50 * 51);
-		ENSURE(t.blank == 3 * 50 + 3);
+		ENSURE(blank == 3 * 50 + 3);
 		loadSurface(&t, "b1", &gb1);
 		loadSurface(&t, "sum", &gsum);
 		loadSurface(&t, "b2", &gb2);
 		ENSURE(gb1.count == 50 * 51 && gsum.count == 50 * 51 && gb2.count == 50 * 51);
 		/* Where B2 was placed: the grid index in the note. */
 		int ci = -1, cj = -1;
-		const char *note = strstr(mkTable_Str(ix, r, "note"), "(i, j) = (");
+		const char *note = strstr(str(ix, r, "note"), "(i, j) = (");
 		ENSURE(note && sscanf(note, "(i, j) = (%d, %d)", &ci, &cj) == 2);
 		mkVec3 c2 = { NAN, NAN, NAN };
 		for (long k = 0; k < gsum.count; ++k)
@@ -432,8 +430,8 @@ static void checkFigure4(const mkTable *ix)
 			 * grid directions are recomputed from (i, j). Both sides are
 			 * O(10) operations on numbers near 10: agreement to 1e-9 of
 			 * the size leaves a wide margin over rounding. */
-			const char *q1 = strstr(mkTable_Str(ix, r, "body1"), "quat=");
-			const char *q2 = strstr(mkTable_Str(ix, r, "body2"), "quat=");
+			const char *q1 = strstr(str(ix, r, "body1"), "quat=");
+			const char *q2 = strstr(str(ix, r, "body2"), "quat=");
 			double w1[4], w2[4];
 			ENSURE(q1 && sscanf(q1, "quat=%lf,%lf,%lf,%lf", &w1[0], &w1[1], &w1[2], &w1[3]) == 4);
 			ENSURE(q2 && sscanf(q2, "quat=%lf,%lf,%lf,%lf", &w2[0], &w2[1], &w2[2], &w2[3]) == 4);
@@ -497,12 +495,13 @@ int main(int argc, char **argv)
 	snprintf(dir, sizeof dir, "%.*s", (int)(n - 4), index);
 
 	mkTable ix;
-	ENSURE(mkTable_Read(&ix, index) == 0);
+	mkTable_Load(&ix, index);
+	ENSURE(ix.present);
 	/* Three files for Fig. 1, three for Fig. 2, one for Fig. 3, eight for
 	 * Fig. 4; each has its sidecar with the same row count. */
 	ENSURE(ix.rows == 15);
 	for (long r = 0; r < ix.rows; ++r)
-		checkSidecar(mkTable_Str(&ix, r, "file"), (long)mkTable_Num(&ix, r, "rows"));
+		checkSidecar(str(&ix, r, "file"), (long)num(&ix, r, "rows"));
 	checkFigure1(&ix);
 	checkFigure2(&ix);
 	checkFigure3(&ix);

@@ -14,7 +14,7 @@
  * h_B(M^T n). The test scans 3600 directions, then narrows the smallest gap
  * by golden-section search. */
 #include "ensure.h"
-#include "table.h"
+#include "exp_testing.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -23,17 +23,8 @@
 
 #define PI 3.14159265358979323846
 
-/* ||(u, v)||_q for q >= 1, scaled by the larger entry (q reaches 2e6). */
-static double qnorm(double u, double v, double q)
-{
-	u = fabs(u);
-	v = fabs(v);
-	double m = u > v ? u : v;
-	if (m == 0.0)
-		return 0.0;
-	return m * pow(pow(u / m, q) + pow(v / m, q), 1.0 / q);
-}
-
+/* The q-norms below are pnorm2 (exp_testing.h), scaled by the larger
+ * entry (q reaches 2e6). */
 typedef struct Body { double a, b, eps, cx, cy, angle; } Body;
 
 /* Support function of the placed superellipse in direction (nx, ny):
@@ -42,7 +33,7 @@ static double support(const Body *B, double nx, double ny)
 {
 	double c = cos(B->angle), s = sin(B->angle);
 	double dx = c * nx + s * ny, dy = -s * nx + c * ny;
-	return nx * B->cx + ny * B->cy + qnorm(B->a * dx, B->b * dy, 2.0 / (2.0 - B->eps));
+	return nx * B->cx + ny * B->cy + pnorm2(B->a * dx, B->b * dy, 2.0 / (2.0 - B->eps));
 }
 
 /* The gauge (2/e)-norm of M^T (x - t) / (a, b): 1 on the boundary. */
@@ -51,7 +42,7 @@ static double gauge(const Body *B, double x, double y)
 	double c = cos(B->angle), s = sin(B->angle);
 	double dx = x - B->cx, dy = y - B->cy;
 	double u = c * dx + s * dy, v = -s * dx + c * dy;
-	return qnorm(u / B->a, v / B->b, 2.0 / B->eps);
+	return pnorm2(u / B->a, v / B->b, 2.0 / B->eps);
 }
 
 static double gap(const Body *O, const Body *R, double x, double y, double th)
@@ -105,32 +96,33 @@ static double minGap(const Body *O, const Body *R, double x, double y, double *m
 static void checkRows(const char *path, long expected)
 {
 	mkTable t;
-	ENSURE(mkTable_Read(&t, path) == 0);
+	mkTable_Load(&t, path);
+	ENSURE(t.present);
 	ENSURE(t.rows == expected);
 	static const char *const cols[] = { "dim", "obstacles", "points", "orientations", "total_points", "total_s",
 		"us_per_point", "cpu_s", "trial", "form", "impl", "published_total_s", "published_us_per_point", "nonfinite",
 		"clamped", "checksum", "robot_a", "robot_b", "robot_c", "robot_eps1", "robot_eps2" };
-	ENSURE(t.columns == (int)(sizeof cols / sizeof cols[0]));
-	for (int c = 0; c < t.columns && c < (int)(sizeof cols / sizeof cols[0]); ++c)
+	ENSURE(t.cols == (int)(sizeof cols / sizeof cols[0]));
+	for (int c = 0; c < t.cols && c < (int)(sizeof cols / sizeof cols[0]); ++c)
 		ENSURE(strcmp(t.names[c], cols[c]) == 0);
 	for (long r = 0; r < t.rows; ++r) {
-		double n = mkTable_Num(&t, r, "obstacles"), p = mkTable_Num(&t, r, "points");
-		double o = mkTable_Num(&t, r, "orientations"), tot = mkTable_Num(&t, r, "total_points");
-		double s = mkTable_Num(&t, r, "total_s"), us = mkTable_Num(&t, r, "us_per_point");
+		double n = num(&t, r, "obstacles"), p = num(&t, r, "points");
+		double o = num(&t, r, "orientations"), tot = num(&t, r, "total_points");
+		double s = num(&t, r, "total_s"), us = num(&t, r, "us_per_point");
 		ENSURE(tot == n * p * o);
 		ENSURE(s > 0.0);
-		ENSURE(mkTable_Num(&t, r, "cpu_s") > 0.0);
+		ENSURE(num(&t, r, "cpu_s") > 0.0);
 		/* One division and one product: a few units of 1e-16 apart. */
 		ENSURE_NEAR(us, s * 1e6 / tot, 1e-12 * us);
-		ENSURE(mkTable_Num(&t, r, "nonfinite") == 0.0);
-		ENSURE(isfinite(mkTable_Num(&t, r, "checksum")));
-		ENSURE(strcmp(mkTable_Str(&t, r, "form"), "gradient") == 0);
+		ENSURE(num(&t, r, "nonfinite") == 0.0);
+		ENSURE(isfinite(num(&t, r, "checksum")));
+		ENSURE(strcmp(str(&t, r, "form"), "gradient") == 0);
 		/* The small levels of this run are none of the paper's. */
-		ENSURE(strcmp(mkTable_Str(&t, r, "published_total_s"), "") == 0);
-		int dim = (int)mkTable_Num(&t, r, "dim");
+		ENSURE(strcmp(str(&t, r, "published_total_s"), "") == 0);
+		int dim = (int)num(&t, r, "dim");
 		ENSURE(dim == 2 || dim == 3);
-		ENSURE((dim == 2) == (strcmp(mkTable_Str(&t, r, "robot_c"), "") == 0));
-		double eps1 = mkTable_Num(&t, r, "robot_eps1");
+		ENSURE((dim == 2) == (strcmp(str(&t, r, "robot_c"), "") == 0));
+		double eps1 = num(&t, r, "robot_eps1");
 		ENSURE(eps1 >= 1e-6 && eps1 <= 2.0 - 1e-6);
 	}
 	mkTable_Free(&t);
@@ -140,27 +132,32 @@ static void checkFigure(const char *dir)
 {
 	char path[8192];
 	mkTable scene, obst, robot, slices;
+	long blank = 0;   /* the outlines' block separators */
 	snprintf(path, sizeof path, "%s/fig9-scene.csv", dir);
-	ENSURE(mkTable_Read(&scene, path) == 0);
+	mkTable_Load(&scene, path);
+	ENSURE(scene.present);
 	snprintf(path, sizeof path, "%s/fig9-obstacles.csv", dir);
-	ENSURE(mkTable_Read(&obst, path) == 0);
+	mkTable_LoadBlocks(&obst, path, &blank);
+	ENSURE(obst.present);
 	snprintf(path, sizeof path, "%s/fig9-robot.csv", dir);
-	ENSURE(mkTable_Read(&robot, path) == 0);
+	mkTable_LoadBlocks(&robot, path, &blank);
+	ENSURE(robot.present);
 	snprintf(path, sizeof path, "%s/fig9-slices.csv", dir);
-	ENSURE(mkTable_Read(&slices, path) == 0);
+	mkTable_LoadBlocks(&slices, path, &blank);
+	ENSURE(slices.present);
 	if (scene.rows < 2 || slices.rows == 0)
 		return;
 	long nobs = scene.rows - 1;
-	ENSURE(strcmp(mkTable_Str(&scene, 0, "body"), "robot") == 0);
-	Body R = { mkTable_Num(&scene, 0, "a"), mkTable_Num(&scene, 0, "b"), mkTable_Num(&scene, 0, "eps"), 0, 0, 0 };
+	ENSURE(strcmp(str(&scene, 0, "body"), "robot") == 0);
+	Body R = { num(&scene, 0, "a"), num(&scene, 0, "b"), num(&scene, 0, "eps"), 0, 0, 0 };
 	Body *O = malloc(sizeof *O * (size_t)nobs);
 	for (long j = 0; j < nobs; ++j) {
-		O[j].a = mkTable_Num(&scene, j + 1, "a");
-		O[j].b = mkTable_Num(&scene, j + 1, "b");
-		O[j].eps = mkTable_Num(&scene, j + 1, "eps");
-		O[j].cx = mkTable_Num(&scene, j + 1, "cx");
-		O[j].cy = mkTable_Num(&scene, j + 1, "cy");
-		O[j].angle = mkTable_Num(&scene, j + 1, "angle");
+		O[j].a = num(&scene, j + 1, "a");
+		O[j].b = num(&scene, j + 1, "b");
+		O[j].eps = num(&scene, j + 1, "eps");
+		O[j].cx = num(&scene, j + 1, "cx");
+		O[j].cy = num(&scene, j + 1, "cy");
+		O[j].angle = num(&scene, j + 1, "angle");
 		/* The draws: a, b in (0, 10], eps in [1e-6, 2 - 1e-6], centres in
 		 * [-200, 200), angles in [0, pi). */
 		ENSURE(O[j].a > 0 && O[j].a <= 10 && O[j].b > 0 && O[j].b <= 10);
@@ -172,18 +169,18 @@ static void checkFigure(const char *dir)
 	 * be 0.1), 1e-9 is a wide margin. */
 	double worst = 0.0;
 	for (long k = 0; k < obst.rows; ++k) {
-		long j = (long)mkTable_Num(&obst, k, "obstacle");
+		long j = (long)num(&obst, k, "obstacle");
 		ENSURE(j >= 0 && j < nobs);
 		if (j >= 0 && j < nobs)
-			worst = fmax(worst, fabs(gauge(&O[j], mkTable_Num(&obst, k, "x"), mkTable_Num(&obst, k, "y")) - 1.0));
+			worst = fmax(worst, fabs(gauge(&O[j], num(&obst, k, "x"), num(&obst, k, "y")) - 1.0));
 	}
 	printf("obstacle outlines: |g - 1| %.3g\n", worst);
 	ENSURE(worst <= 1e-9);
 	worst = 0.0;
 	for (long k = 0; k < robot.rows; ++k) {
 		Body Rh = R;
-		Rh.angle = mkTable_Num(&robot, k, "heading");
-		worst = fmax(worst, fabs(gauge(&Rh, mkTable_Num(&robot, k, "x"), mkTable_Num(&robot, k, "y")) - 1.0));
+		Rh.angle = num(&robot, k, "heading");
+		worst = fmax(worst, fabs(gauge(&Rh, num(&robot, k, "x"), num(&robot, k, "y")) - 1.0));
 	}
 	ENSURE(worst <= 1e-9);
 	/* Every C-obstacle point on the boundary of O (+) (-R): the gap is never
@@ -191,13 +188,13 @@ static void checkFigure(const char *dir)
 	 * to ~300 evaluated in double, a few 1e-13; 1e-8 is the bound. */
 	double lowest = INFINITY, largest_min = 0.0;
 	for (long k = 0; k < slices.rows; ++k) {
-		long j = (long)mkTable_Num(&slices, k, "obstacle");
+		long j = (long)num(&slices, k, "obstacle");
 		if (j < 0 || j >= nobs)
 			continue;
 		Body Rh = R;
-		Rh.angle = mkTable_Num(&slices, k, "heading");
+		Rh.angle = num(&slices, k, "heading");
 		double neg;
-		double m = minGap(&O[j], &Rh, mkTable_Num(&slices, k, "x"), mkTable_Num(&slices, k, "y"), &neg);
+		double m = minGap(&O[j], &Rh, num(&slices, k, "x"), num(&slices, k, "y"), &neg);
 		lowest = fmin(lowest, neg);
 		largest_min = fmax(largest_min, m);
 	}
