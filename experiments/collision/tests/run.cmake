@@ -1,59 +1,6 @@
-# collision.cmake - the collision-detection driver `collision` (paper
-# Sec. 7.2, Table 3) and its tests.
-#
-# Included from experiments/CMakeLists.txt it adds the target and registers
-# the tests. Run as a script (cmake -DMODE=... -P collision.cmake) it is the
-# body of the tests that need more than one command: MODE=tiny or shards.
-
-if(NOT CMAKE_SCRIPT_MODE_FILE)
-
-if(NOT TARGET mink_collide)
-  message(STATUS "collision: the collision queries are not built (MINK_BUILD_BASELINES=OFF); no collision driver")
-else()
-  add_executable(collision ${CMAKE_CURRENT_LIST_DIR}/collision.c)
-  target_link_libraries(collision PRIVATE mink_collide mink_exp m)
-  target_compile_options(collision PRIVATE ${MINK_C_WARNINGS})
-
-  if(MINK_BUILD_TESTS)
-    set(mk_collision_script ${CMAKE_CURRENT_LIST_DIR}/collision.cmake)
-    # Bad flags: a one-line error naming the flag and its range, exit 2.
-    function(mk_collision_badflag name args expect)
-      add_test(NAME collision.badflag.${name}
-        COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:collision> "-DARGS=${args}"
-          "-DEXPECT=${expect}" -P ${CMAKE_CURRENT_LIST_DIR}/common/tests/expect_usage_error.cmake)
-    endfunction()
-    mk_collision_badflag(trials "--trials|0" "^collision: --trials: expected an integer in \\[1, 10000000\\], got '0'$")
-    mk_collision_badflag(pair "--pair|cubes" "^collision: --pair: expected one of ellipsoids[|]superquadrics[|]both, got 'cubes'$")
-    mk_collision_badflag(rotations "--rotations|haar" "^collision: --rotations: expected one of paper[|]uniform, got 'haar'$")
-    mk_collision_badflag(margin "--margin|2" "^collision: --margin: expected a number in \\[0, 1\\], got '2'$")
-    mk_collision_badflag(seed "--seed|x" "^collision: --seed: expected an integer in \\[0, 2\\^64-1\\]")
-    mk_collision_badflag(shard "--shard|2/2" "^collision: --shard: expected I/N with 1 <= N <= 1000000 and 0 <= I < N, got '2/2'$")
-    mk_collision_badflag(unknown "--bogus|1" "^collision: --bogus: unknown option")
-    mk_collision_badflag(missing "--trials" "^collision: --trials: missing value")
-    mk_collision_badflag(forcevalue "--force=1" "^collision: --force: takes no value$")
-    add_test(NAME collision.help COMMAND collision --help)
-    set_tests_properties(collision.help PROPERTIES PASS_REGULAR_EXPRESSION "--pair ellipsoids[|]superquadrics[|]both")
-    # A tiny run writes the documented columns, the right algorithms per
-    # pair, and the sidecar keys tables.c reads.
-    # With gnuplot, the figure's script draws the tiny run too.
-    find_program(MKCOLLISION_GNUPLOT gnuplot)
-    if(NOT MKCOLLISION_GNUPLOT)
-      message(STATUS "gnuplot not found: collision.tiny does not draw plots/collision.gp")
-      set(MKCOLLISION_GNUPLOT "")
-    endif()
-    add_test(NAME collision.tiny
-      COMMAND ${CMAKE_COMMAND} -DMODE=tiny -DEXE=$<TARGET_FILE:collision>
-        -DWORK=${CMAKE_CURRENT_BINARY_DIR}/collision_tiny "-DGNUPLOT=${MKCOLLISION_GNUPLOT}"
-        -DPLOT=${PROJECT_SOURCE_DIR}/plots/collision.gp -P ${mk_collision_script})
-    # Shards concatenate to the unsplit run, the timing column aside.
-    add_test(NAME collision.shards
-      COMMAND ${CMAKE_COMMAND} -DMODE=shards -DEXE=$<TARGET_FILE:collision>
-        -DWORK=${CMAKE_CURRENT_BINARY_DIR}/collision_shards -P ${mk_collision_script})
-    set_tests_properties(collision.tiny collision.shards PROPERTIES TIMEOUT 120)
-  endif()
-endif()
-
-else() # ---- script mode -------------------------------------------------
+# run.cmake - the bodies of the collision driver's tests that need more than
+# one command: cmake -DMODE=tiny|shards -DEXE=... -DWORK=... [-DGNUPLOT=...
+# -DPLOT=...] -P run.cmake
 
 # The lines of a CSV with the 4th field (seconds) emptied.
 function(mk_collision_untimed path outvar)
@@ -148,8 +95,6 @@ elseif(MODE STREQUAL "shards")
     message(FATAL_ERROR "concatenated shards differ from the unsplit run (seconds aside): see ${WORK}")
   endif()
 else()
-  message(FATAL_ERROR "collision.cmake: unknown MODE '${MODE}'")
+  message(FATAL_ERROR "run.cmake: unknown MODE '${MODE}'")
 endif()
 file(REMOVE_RECURSE ${WORK})
-
-endif()
