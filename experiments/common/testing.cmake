@@ -10,12 +10,15 @@ function(mk_expect_usage_error name exe args expect)
       -P ${MINK_EXP_TESTING_DIR}/expect_usage_error.cmake)
 endfunction()
 
-# mk_shard_test(NAME EXE ARGS SHARDS): the run split into SHARDS shards,
-# concatenated under one header, is byte for byte the unsplit run (ARGS a
-# ";"-list).
+# mk_shard_test(NAME EXE ARGS SHARDS [UNTIMED COLUMN...]): the run split
+# into SHARDS shards, concatenated under one header, is byte for byte the
+# unsplit run (ARGS a ";"-list), once the measured columns given after
+# UNTIMED (0-based indices) are emptied in both.
 function(mk_shard_test name exe args shards)
+  cmake_parse_arguments(PARSE_ARGV 4 mk "" "" "UNTIMED")
   add_test(NAME ${name}
     COMMAND ${CMAKE_COMMAND} -DEXE=${exe} -DWORK=${CMAKE_CURRENT_BINARY_DIR}/${name}.work
-      "-DARGS=${args}" -DSHARDS=${shards} -P ${MINK_EXP_TESTING_DIR}/shard_concat.cmake)
+      "-DARGS=${args}" -DSHARDS=${shards} "-DUNTIMED=${mk_UNTIMED}"
+      -P ${MINK_EXP_TESTING_DIR}/shard_concat.cmake)
   set_tests_properties(${name} PROPERTIES TIMEOUT 120)
 endfunction()

@@ -16,29 +16,7 @@
 #include <string.h>
 
 #include "ensure.h"
-
-/* The Markdown of mkCollision_Summary on dir, in a malloc'd string. */
-static char *mkSummaryText(const char *dir, mkTally *tally)
-{
-	mkDoc d = { tmpfile(), tmpfile(), 0 };
-	ENSURE(d.md != NULL && d.tex != NULL);
-	mkCollision_Summary(&d, dir, tally);
-	long n = ftell(d.md);
-	char *text = calloc((size_t)n + 1, 1);
-	ENSURE(text != NULL);
-	rewind(d.md);
-	ENSURE(fread(text, 1, (size_t)n, d.md) == (size_t)n);
-	fclose(d.md);
-	fclose(d.tex);
-	return text;
-}
-
-static void mkExpect(const char *text, const char *want)
-{
-	if (!strstr(text, want))
-		fprintf(stderr, "the summary lacks '%s':\n%s\n", want, text);
-	ENSURE(strstr(text, want) != NULL);
-}
+#include "summary_text.h"
 
 int main(int argc, char **argv)
 {
@@ -62,23 +40,23 @@ int main(int argc, char **argv)
 	fclose(fp);
 
 	mkTally tally = { 0, 0, 0 };
-	char *md = mkSummaryText(argv[1], &tally);
-	mkExpect(md, "Rotation draw: paper.");
-	mkExpect(md, "| GJK | 18.4 | 15 | 0.815 | 18.3 | **NOT REPRODUCED YET** | — |");
-	mkExpect(md, "| ASC | 0.133 | **NOT REPRODUCED YET** | — | — | — | — |");
-	mkExpect(md, "| MinkSum (Normal) | 3.5 | 3 | 0.857 | 5.1 | 5.1 | 1 |");
+	char *md = mkSummary_Text(mkCollision_Summary, argv[1], &tally);
+	mkSummary_Expect(md, "Rotation draw: paper.");
+	mkSummary_Expect(md, "| GJK | 18.4 | 15 | 0.815 | 18.3 | **NOT REPRODUCED YET** | — |");
+	mkSummary_Expect(md, "| ASC | 0.133 | **NOT REPRODUCED YET** | — | — | — | — |");
+	mkSummary_Expect(md, "| MinkSum (Normal) | 3.5 | 3 | 0.857 | 5.1 | 5.1 | 1 |");
 	ENSURE(tally.published == 11 && tally.reproduced == 3 && tally.missing == 8);
-	mkExpect(md, "|min g| exceeds the margin (0.001)");
-	mkExpect(md, "| ellipsoids | GJK | 2 | 15 | 15 | — | 0.5000 (1/2) | 0 |");
-	mkExpect(md, "| ellipsoids | MinkSum (Normal) | 2 | 3 | 3 | 0.5000 | 1.0000 (1/1) | 1 |");
-	mkExpect(md, "| superquadrics | MinkSum (Normal) | 1 | 5.1 | 5.1 | 1.0000 | 1.0000 (1/1) | 0 |");
-	mkExpect(md, "| superquadrics | My Query | 1 | 1 | 1 | — | 1.0000 (1/1) | 0 |");
+	mkSummary_Expect(md, "|min g| exceeds the margin (0.001)");
+	mkSummary_Expect(md, "| ellipsoids | GJK | 2 | 15 | 15 | — | 0.5000 (1/2) | 0 |");
+	mkSummary_Expect(md, "| ellipsoids | MinkSum (Normal) | 2 | 3 | 3 | 0.5000 | 1.0000 (1/1) | 1 |");
+	mkSummary_Expect(md, "| superquadrics | MinkSum (Normal) | 1 | 5.1 | 5.1 | 1.0000 | 1.0000 (1/1) | 0 |");
+	mkSummary_Expect(md, "| superquadrics | My Query | 1 | 1 | 1 | — | 1.0000 (1/1) | 0 |");
 	free(md);
 
 	snprintf(path, sizeof path, "%s/none", argv[1]);
 	tally = (mkTally){ 0, 0, 0 };
-	md = mkSummaryText(path, &tally);
-	mkExpect(md, "none/collision.csv` does not exist");
+	md = mkSummary_Text(mkCollision_Summary, path, &tally);
+	mkSummary_Expect(md, "none/collision.csv` does not exist");
 	ENSURE(tally.published == 11 && tally.reproduced == 0 && tally.missing == 11);
 	free(md);
 	return 0;

@@ -2,7 +2,39 @@
 # shards' CSVs are concatenated in order under one header, exactly the bytes
 # of the unsplit run. ARGS are the driver's arguments (";"-list), EXE the
 # driver, WORK a scratch directory. Each output must have its .meta sidecar
-# with the shard recorded.
+# with the shard recorded. UNTIMED (optional, ";"-list of 0-based column
+# indices) names measured columns, emptied in every line before the
+# comparison: a measured time differs from run to run, the rest must not.
+# The fields of such a CSV must not be quoted.
+
+# The text of a CSV with the UNTIMED columns emptied, line by line (a
+# REGEX REPLACE over the whole text would anchor ^ again after each match).
+function(mk_untimed text out)
+  if(NOT UNTIMED)
+    set(${out} "${text}" PARENT_SCOPE)
+    return()
+  endif()
+  string(REPLACE ";" "\\;" text "${text}")
+  string(REPLACE "\n" ";" lines "${text}")
+  set(result "")
+  foreach(line IN LISTS lines)
+    foreach(col IN LISTS UNTIMED)
+      set(before "^")
+      while(col GREATER 0)
+        string(APPEND before "[^,]*,")
+        math(EXPR col "${col} - 1")
+      endwhile()
+      string(REGEX MATCH "${before}" keep "${line}")
+      string(REGEX MATCH "${before}[^,]*" cut "${line}")
+      string(LENGTH "${cut}" n)
+      string(SUBSTRING "${line}" ${n} -1 rest)
+      set(line "${keep}${rest}")
+    endforeach()
+    string(APPEND result "${line}\n")
+  endforeach()
+  set(${out} "${result}" PARENT_SCOPE)
+endfunction()
+
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${EXE} ${ARGS} --out ${WORK}/all.csv
@@ -38,9 +70,12 @@ foreach(i RANGE 0 ${last})
     message(FATAL_ERROR "sidecar of shard ${i} says '${shardline}'")
   endif()
 endforeach()
+mk_untimed("${whole}" whole)
+mk_untimed("${joined}" joined)
 if(NOT joined STREQUAL whole)
   file(WRITE ${WORK}/joined.csv "${joined}")
-  message(FATAL_ERROR "concatenated shards differ from the unsplit run: compare ${WORK}/joined.csv with ${WORK}/all.csv")
+  file(WRITE ${WORK}/whole.csv "${whole}")
+  message(FATAL_ERROR "concatenated shards differ from the unsplit run: compare ${WORK}/joined.csv with ${WORK}/whole.csv")
 endif()
 file(GLOB leftovers ${WORK}/*.tmp.*)
 if(leftovers)

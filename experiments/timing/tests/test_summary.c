@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "ensure.h"
+#include "summary_text.h"
 
 static const char *mkDir;
 
@@ -30,29 +31,6 @@ static void mkWrite(const char *name, const char *text)
 	ENSURE(fp != NULL);
 	fputs(text, fp);
 	fclose(fp);
-}
-
-/* The Markdown of mkTiming_Summary on dir, in a malloc'd string. */
-static char *mkSummaryText(const char *dir, mkTally *tally)
-{
-	mkDoc d = { tmpfile(), tmpfile(), 0 };
-	ENSURE(d.md != NULL && d.tex != NULL);
-	mkTiming_Summary(&d, dir, tally);
-	long n = ftell(d.md);
-	char *text = calloc((size_t)n + 1, 1);
-	ENSURE(text != NULL);
-	rewind(d.md);
-	ENSURE(fread(text, 1, (size_t)n, d.md) == (size_t)n);
-	fclose(d.md);
-	fclose(d.tex);
-	return text;
-}
-
-static void mkExpect(const char *text, const char *want)
-{
-	if (!strstr(text, want))
-		fprintf(stderr, "the summary lacks '%s':\n%s\n", want, text);
-	ENSURE(strstr(text, want) != NULL);
 }
 
 static void mkTestStatementsAndUnknown(void)
@@ -72,21 +50,21 @@ static void mkTestStatementsAndUnknown(void)
 	mkWrite("timing.csv", rows);
 	mkWrite("timing.csv.meta", "experiment: timing\nseed: 1\ntrials: 1\nrotation_draw: paper\n");
 	mkTally tally = { 0, 0, 0 };
-	char *md = mkSummaryText(mkDir, &tally);
-	mkExpect(md, "| closed form (proposed) is linear in N | 2D | SQ | slope of closed-gradient, 20–160 points | 1.00 |");
-	mkExpect(md, "| edge sorting is faster than the closed form for two superellipses | 2D | SQ | levels where "
+	char *md = mkSummary_Text(mkTiming_Summary, mkDir, &tally);
+	mkSummary_Expect(md, "| closed form (proposed) is linear in N | 2D | SQ | slope of closed-gradient, 20–160 points | 1.00 |");
+	mkSummary_Expect(md, "| edge sorting is faster than the closed form for two superellipses | 2D | SQ | levels where "
 		"edge-sort is faster than closed-gradient | 5 of 5 |");
-	mkExpect(md, "| convex hull grows much faster | 2D | SQ | slopes of hull-qhull and closed-gradient; time ratio "
+	mkSummary_Expect(md, "| convex hull grows much faster | 2D | SQ | slopes of hull-qhull and closed-gradient; time ratio "
 		"at level 160 | 2.00 vs 1.00; 1.6 | slopes differ by ≥ 0.5 and ratio ≥ 10 | **disagrees** |");
-	mkExpect(md, "| edge sorting is linear | 2D | SQ | slope of edge-sort, 20–160 points | 1.00 |");
+	mkSummary_Expect(md, "| edge sorting is linear | 2D | SQ | slope of edge-sort, 20–160 points | 1.00 |");
 	ENSURE(tally.published == 6 && tally.reproduced == 6 && tally.missing == 0);
 	/* Table 1: closed-gradient, edge sorting and the hull ran 2D SQ only. */
-	mkExpect(md, "| Closed-form (proposed): closed-gradient | Any | ✓ | ✓ ✓ ✓ | — — ✓ | — — — |");
-	mkExpect(md, "| Closed-form geometric | Any | ✓ | ✓ ✓ — | — — — | — — — |");
+	mkSummary_Expect(md, "| Closed-form (proposed): closed-gradient | Any | ✓ | ✓ ✓ ✓ | — — ✓ | — — — |");
+	mkSummary_Expect(md, "| Closed-form geometric | Any | ✓ | ✓ ✓ — | — — — | — — — |");
 	/* The means: every method, the unknown one last, its own numbers. */
-	mkExpect(md, "| case | method | N = 10 | N = 20 | N = 40 | N = 80 | N = 160 |");
-	mkExpect(md, "| SQ | closed-gradient | 10 ± 0 µs | 20 ± 0 µs | 40 ± 0 µs | 80 ± 0 µs | 160 ± 0 µs |");
-	mkExpect(md, "| SQ | my-method | — | 3 ± 1 ms | — | — | — |");
+	mkSummary_Expect(md, "| case | method | N = 10 | N = 20 | N = 40 | N = 80 | N = 160 |");
+	mkSummary_Expect(md, "| SQ | closed-gradient | 10 ± 0 µs | 20 ± 0 µs | 40 ± 0 µs | 80 ± 0 µs | 160 ± 0 µs |");
+	mkSummary_Expect(md, "| SQ | my-method | — | 3 ± 1 ms | — | — | — |");
 	const char *cg = strstr(md, "| SQ | closed-gradient |"), *qh = strstr(md, "| SQ | hull-qhull |");
 	const char *es = strstr(md, "| SQ | edge-sort |"), *mine = strstr(md, "| SQ | my-method |");
 	ENSURE(cg && qh && es && mine && cg < qh && qh < es && es < mine);
@@ -98,9 +76,9 @@ static void mkTestMissing(void)
 	char dir[MK_PATH_MAX];
 	snprintf(dir, sizeof dir, "%s/none", mkDir);
 	mkTally tally = { 0, 0, 0 };
-	char *md = mkSummaryText(dir, &tally);
-	mkExpect(md, "**NOT REPRODUCED YET**: `");
-	mkExpect(md, "timing.csv` does not exist (run the `timing` driver)");
+	char *md = mkSummary_Text(mkTiming_Summary, dir, &tally);
+	mkSummary_Expect(md, "**NOT REPRODUCED YET**: `");
+	mkSummary_Expect(md, "timing.csv` does not exist (run the `timing` driver)");
 	ENSURE(tally.published == 6 && tally.reproduced == 0 && tally.missing == 6);
 	free(md);
 }
