@@ -26,9 +26,9 @@ set datafile columnheaders
 # walks the rows once and collects every distinct `method` value, in order
 # of first appearance (the driver writes the registry's methods in registry
 # order), into the string `found` ("|name|name|...|"); the names then go to
-# the array mnames[1..nmeth] and to `ids` ("|name=01|name=02..."), from
-# which midx(s) reads a name's index with two fixed-width digits (up to 99
-# methods). A name must not contain "|" or "=". Key titles are the names
+# the array mnames[1..nmeth] and to `ids` ("|name=11|name=12..."), from
+# which midx(s) reads a name's index + 10 in two fixed-width digits (up to 89
+# methods; never a leading 0, which real() would read as octal). A name must not contain "|" or "=". Key titles are the names
 # themselves, printed as they are (noenhanced); colours and point types
 # cycle through ten.
 found = "|"
@@ -39,17 +39,17 @@ rest = found[2:]
 do for [i = 1:strlen(found)] {
 	if (strlen(rest) > 0) { nmeth = nmeth + 1; rest = rest[strstrt(rest, "|") + 1:] }
 }
-if (nmeth > 99) { print sprintf("timing.gp: %d methods; only the first 99 are drawn", nmeth); nmeth = 99 }
+if (nmeth > 89) { print sprintf("timing.gp: %d methods; only the first 89 are drawn", nmeth); nmeth = 89 }
 array mnames[nmeth > 0 ? nmeth : 1]
 ids = ""
 rest = found[2:]
 do for [i = 1:nmeth] {
 	mnames[i] = rest[1:strstrt(rest, "|") - 1]
 	rest = rest[strstrt(rest, "|") + 1:]
-	ids = ids . sprintf("|%s=%02d", mnames[i], i)
+	ids = ids . sprintf("|%s=%d", mnames[i], i + 10)
 }
 mpos(s) = strstrt(ids . "|", "|" . s . "=")
-midx(s) = mpos(s) > 0 ? int(real(ids[mpos(s) + strlen(s) + 2:mpos(s) + strlen(s) + 3])) : 0
+midx(s) = mpos(s) > 0 ? int(real(ids[mpos(s) + strlen(s) + 2:mpos(s) + strlen(s) + 3])) - 10 : 0
 color_of(m) = word("#1b6ca8 #d1495b #edae49 #00798c #6a994e #8e7dbe #5fa8d3 #3d405b #f4845f #2a9d8f", (m - 1) % 10 + 1)
 pt_of(m) = word("7 5 9 11 13 15 7 5 9 11", (m - 1) % 10 + 1) + 0
 case_title(c) = c == 1 ? "EE: two ellipses / ellipsoids" : c == 2 ? \
