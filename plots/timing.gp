@@ -6,7 +6,9 @@
 # +- one population standard deviation (as the paper's shaded regions),
 # on log-log axes (times span six decades). Levels whose cell ran fewer
 # trials than planned (the driver's time budget; column trials_run) are
-# marked with open circles. Writes <outdir>/timing.pdf and timing.png.
+# marked with open circles. One curve per method found in the data (see
+# below), keyed by its name. Writes <outdir>/timing.pdf and timing.png
+# (`formats`, a space-separated choice of pdf, png and svg, changes that).
 #
 #   gnuplot plots/timing.gp                          (results/timing.csv -> plots/)
 #   gnuplot -e "results='results/quick/timing.csv'; outdir='plots/quick'" plots/timing.gp
@@ -15,36 +17,59 @@
 
 if (!exists("results")) results = 'results/timing.csv'
 if (!exists("outdir")) outdir = 'plots'
+if (!exists("formats")) formats = 'pdf png'
 
 set datafile separator comma
 set datafile columnheaders
 
-methods = "closed-gradient closed-normal closed-paper geometric edge-sort hull-qhull hull-cgal-epick hull-cgal-epeck"
-label_of(m) = m == 1 ? "closed form, gradient (proposed)" : m == 2 ? "closed form, normal" : \
-	m == 3 ? "closed form, as printed in the paper" : m == 4 ? "closed-form geometric" : \
-	m == 5 ? "edge sorting" : m == 6 ? "convex hull, Qhull" : m == 7 ? "convex hull, CGAL Epick" : \
-	"convex hull, CGAL Epeck"
-color_of(m) = word("#1b6ca8 #5fa8d3 #8e7dbe #d1495b #edae49 #00798c #6a994e #3d405b", m)
-pt_of(m) = word("7 5 9 11 13 15 7 5", m) + 0
+# The methods are those of the data: no list of names lives here. `stats`
+# walks the rows once and collects every distinct `method` value, in order
+# of first appearance (the driver writes the registry's methods in registry
+# order), into the string `found` ("|name|name|...|"); the names then go to
+# the array mnames[1..nmeth] and to `ids` ("|name=11|name=12..."), from
+# which midx(s) reads a name's index + 10 in two fixed-width digits (up to 89
+# methods; never a leading 0, which real() would read as octal). A name must not contain "|" or "=". Key titles are the names
+# themselves, printed as they are (noenhanced); colours and point types
+# cycle through ten.
+found = "|"
+add_method(s) = strstrt(found, "|" . s . "|") > 0 ? 0 : (found = found . s . "|", 1)
+stats results using (add_method(strcol("method"))) nooutput
+nmeth = 0
+rest = found[2:]
+do for [i = 1:strlen(found)] {
+	if (strlen(rest) > 0) { nmeth = nmeth + 1; rest = rest[strstrt(rest, "|") + 1:] }
+}
+if (nmeth > 89) { print sprintf("timing.gp: %d methods; only the first 89 are drawn", nmeth); nmeth = 89 }
+array mnames[nmeth > 0 ? nmeth : 1]
+ids = ""
+rest = found[2:]
+do for [i = 1:nmeth] {
+	mnames[i] = rest[1:strstrt(rest, "|") - 1]
+	rest = rest[strstrt(rest, "|") + 1:]
+	ids = ids . sprintf("|%s=%d", mnames[i], i + 10)
+}
+mpos(s) = strstrt(ids . "|", "|" . s . "=")
+midx(s) = mpos(s) > 0 ? int(real(ids[mpos(s) + strlen(s) + 2:mpos(s) + strlen(s) + 3])) - 10 : 0
+color_of(m) = word("#1b6ca8 #d1495b #edae49 #00798c #6a994e #8e7dbe #5fa8d3 #3d405b #f4845f #2a9d8f", (m - 1) % 10 + 1)
+pt_of(m) = word("7 5 9 11 13 15 7 5 9 11", (m - 1) % 10 + 1) + 0
 case_title(c) = c == 1 ? "EE: two ellipses / ellipsoids" : c == 2 ? \
 	"ES: superellipse / superquadric and ellipse / ellipsoid" : "SQ: two superellipses / superquadrics"
 
-midx(s) = s eq "closed-gradient" ? 1 : s eq "closed-normal" ? 2 : s eq "closed-paper" ? 3 : \
-	s eq "geometric" ? 4 : s eq "edge-sort" ? 5 : s eq "hull-qhull" ? 6 : \
-	s eq "hull-cgal-epick" ? 7 : s eq "hull-cgal-epeck" ? 8 : 0
 cidx(s) = s eq "EE" ? 1 : s eq "ES" ? 2 : s eq "SQ" ? 3 : 0
 
 # Every (dim, case, method, level) is one integer key; rows that are not
 # timed calls of a known method (failed calls included) all go to key -1, so
 # that the data stay one block and `smooth unique` averages each key over
 # the whole file.
-key(d, c, m, p) = (c > 0 && m > 0 && (d == 2 || d == 3)) ? ((d * 4 + c) * 16 + m) * 1e8 + p : -1
+key(d, c, m, p) = (c > 0 && m > 0 && (d == 2 || d == 3)) ? ((d * 4 + c) * 100 + m) * 1e8 + p : -1
 rowkey = 'key(column("dim"), cidx(strcol("case")), midx(strcol("method")), column("points_per_body")) * (strcol("status") eq "ok" ? 1 : 0) + (strcol("status") eq "ok" ? 0 : -1)'
 
 # `set table` writes numbers in the axes' formats: keep every digit of the
-# keys and the times.
+# keys and the times. The times in %e form: gnuplot's real() refuses an
+# integer mantissa with an exponent ("1e-05"), which %g writes for round
+# values.
 set format x "%.15g"
-set format y "%.15g"
+set format y "%.15e"
 set table $M
 plot results using (@rowkey):(column("seconds")) smooth unique
 set table $S
@@ -75,7 +100,7 @@ do for [i = 1:|$M|] {
 			g = floor(k / 1e8)
 			if (g != prev) {
 				if (prev >= 0) { print ""; print "" }
-				eval sprintf("blk_%d_%d_%d = %d", floor(g / 64), int(floor(g / 16)) % 4, int(g) % 16, nblk)
+				eval sprintf("blk_%d_%d_%d = %d", floor(g / 400), int(floor(g / 100)) % 4, int(g) % 100, nblk)
 				nblk = nblk + 1
 				prev = g
 			}
@@ -105,14 +130,17 @@ set style fill transparent solid 0.18 noborder
 
 # Each panel: the bands, then the mean curves, then open circles on capped
 # levels.
-do for [out = 1:2] {
-	if (out == 1) {
+do for [fmt in formats] {
+	if (fmt eq "pdf") {
 		set terminal pdfcairo size 11in, 13in font "Helvetica,10"
-		set output outdir . '/timing.pdf'
 	} else {
-		set terminal pngcairo size 1500, 1750 font "Helvetica,11"
-		set output outdir . '/timing.png'
+		if (fmt eq "svg") {
+			set terminal svg size 1500, 1750 font "Helvetica,11"
+		} else {
+			set terminal pngcairo size 1500, 1750 font "Helvetica,11"
+		}
 	}
+	set output outdir . '/timing.' . fmt
 	set multiplot layout 3, 2 title sprintf("Running time per call, mean ± population std over the trials of each level (from %s)\nopen circles: levels whose cell ran fewer trials than planned (time budget); band lower edge at mean/10 where mean - std <= 0", results)
 	do for [c = 1:3] {
 		do for [d = 2:3] {
@@ -123,18 +151,18 @@ do for [out = 1:2] {
 				set xlabel "points per body n^2 (n x n grid)"
 			}
 			cmd = ""
-			do for [m = 1:8] {
+			do for [m = 1:nmeth] {
 				if (has(d, c, m)) {
 					b = blk(d, c, m)
 					cmd = cmd . sprintf("%s$D index %d using 1:(lo($2,$3)):($2+$3) with filledcurves lc rgb '%s' notitle", \
 						(strlen(cmd) > 0 ? ", " : ""), b, color_of(m))
 				}
 			}
-			do for [m = 1:8] {
+			do for [m = 1:nmeth] {
 				if (has(d, c, m)) {
 					b = blk(d, c, m)
-					cmd = cmd . sprintf(", $D index %d using 1:2 with linespoints lw 2 pt %d ps 0.6 lc rgb '%s' title '%s'", \
-						b, pt_of(m), color_of(m), label_of(m))
+					cmd = cmd . sprintf(", $D index %d using 1:2 with linespoints lw 2 pt %d ps 0.6 lc rgb '%s' title mnames[%d] noenhanced", \
+						b, pt_of(m), color_of(m), m)
 					cmd = cmd . sprintf(", $D index %d using 1:($4 > 0 ? $2 : NaN) with points pt 6 ps 1.4 lc rgb '%s' notitle", \
 						b, color_of(m))
 				}
