@@ -32,8 +32,8 @@ int mkCObstacleLevels_Parse(void *levels, const char *text, char *msg, size_t ms
 			bad = mkArg_Long("level", item, 1, MK_COBSTACLE_OBSTACLES_MAX, &v, why, sizeof why) != 0;
 		}
 		if (bad) {
-			snprintf(msg, msglen, "expected up to %d comma-separated integers in [1, %ld], got '%s'",
-				MK_COBSTACLE_MAX_LEVELS, MK_COBSTACLE_OBSTACLES_MAX, text);
+			snprintf(msg, msglen, "is not allowed: must be up to %d comma-separated integers in [1, %ld]",
+				MK_COBSTACLE_MAX_LEVELS, MK_COBSTACLE_OBSTACLES_MAX);
 			return -1;
 		}
 		l->count[l->n++] = v;

@@ -72,8 +72,8 @@ int main(int argc, char **argv)
 	if (status != MK_RUN_GO)
 		return mkRun_Status(status);
 	if (o.fig_obstacles > 0 && o.fig_slices > o.headings) {
-		mkRun_Fail(&run, "--fig-slices: expected an integer in [1, %ld] (the headings), got '%ld'",
-			o.headings, o.fig_slices);
+		mkRun_Fail(&run, "--fig-slices = '%ld' is out of range: must be an integer in [1, %ld] (the headings)",
+			o.fig_slices, o.headings);
 		mkRun_End(&run, 1);
 		return mkRun_Status(MK_RUN_USAGE);
 	}

@@ -226,8 +226,8 @@ static int mkDrawPair(const mkTimingOptions *o, int dim, int c, int level, long 
 
 static int mkAccepts(const mkMethod *m, int dim, const mkPair *p, char *msg, size_t msglen)
 {
-	return dim == 2 ? mkMethod_Accepts2(m, p->p1, p->p2, MK_SET_CONTACT, msg, msglen)
-		: mkMethod_Accepts3(m, p->q1, p->q2, MK_SET_CONTACT, msg, msglen);
+	return dim == 2 ? mkMethod2_Accepts(m, p->p1, p->p2, MK_SET_CONTACT, msg, msglen)
+		: mkMethod3_Accepts(m, p->q1, p->q2, MK_SET_CONTACT, msg, msglen);
 }
 
 /* ---- the cells ------------------------------------------------------------- */

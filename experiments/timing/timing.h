@@ -46,7 +46,7 @@
  *  reference code, and all methods of a trial see the same pair.
  *
  * A method runs for a pair only when the registry says it accepts it
- * (mkMethod_Accepts2/3; e.g. the geometric method needs body 2 an ellipse)
+ * (mkMethod2/3_Accepts; e.g. the geometric method needs body 2 an ellipse)
  * and the level is in its resolution range (mkMethod_CheckN). Everything
  * skipped is listed in the sidecar (key `skipped`) and on stderr. A call that
  * fails is written as a row with its status.
