@@ -815,26 +815,17 @@ static void mkCObstacle_Table(mkDoc *d, const mkTable *t, int usable, mkTally *t
 
 void mkCObstacle_Summary(mkDoc *d, const char *dir, mkTally *tally)
 {
-	static const char *const needed[] = { "dim", "obstacles", "points", "orientations", "total_s" };
-	mkDoc_Heading(d, 2, "Configuration-space obstacles (paper §7.1, Table 2)");
-	char path[MK_PATH_MAX];
-	mkTable t;
-	mkMeta m;
-	int usable = mkResult_Load(dir, "cobstacle.csv", &t, &m, path, sizeof path);
-	for (int i = 0; i < MK_COUNT(needed); ++i)
-		usable = usable && mkTable_Col(&t, needed[i]) >= 0;
-	if (!usable) {
-		mkDoc_Para(d, "%s: `%s` %s. None of the %d published numbers below has a counterpart.", mkNotYet, path,
-			t.present ? "lacks the columns dim, obstacles, points, orientations, total_s"
-			: "does not exist (run the `cobstacle` driver)", 2 * mkPaper_Table2Count);
-	} else {
-		mkDoc_Source(d, path, &t, &m);
-		const char *d3 = mkMeta_Get(&m, "draw_3d"), *so3 = mkMeta_Get(&m, "so3_file");
-		const char *timed = mkMeta_Get(&m, "timed_region");
+	static const char *const columns[] = { "dim", "obstacles", "points", "orientations", "total_s", NULL };
+	mkSection s;
+	int usable = mkSection_Begin(&s, d, "Configuration-space obstacles (paper §7.1, Table 2)", dir,
+		"cobstacle.csv", columns, "None of the 12 published numbers below has a counterpart.");
+	if (usable) {
+		const char *d3 = mkMeta_Get(&s.m, "draw_3d"), *so3 = mkMeta_Get(&s.m, "so3_file");
+		const char *timed = mkMeta_Get(&s.m, "timed_region");
 		mkDoc_Para(d, "Rotation draw: in the 3D draws (%s); robot orientations from %s. Timed: %s. The paper "
 			"ran MATLAB on one core of a Xeon at 2.8 GHz. Means over the trials of each level.",
 			d3 ? d3 : "(draw not recorded)", so3 ? so3 : "(not recorded)", timed ? timed : "not recorded");
 	}
-	mkCObstacle_Table(d, &t, usable, tally);
-	mkResult_Free(&t, &m);
+	mkCObstacle_Table(d, &s.t, usable, tally);
+	mkSection_End(&s);
 }

@@ -318,24 +318,16 @@ static void mkCollision_Table3(mkDoc *d, const mkTable *t, int usable, mkTally *
 
 void mkCollision_Summary(mkDoc *d, const char *dir, mkTally *tally)
 {
-	char path[MK_PATH_MAX];
-	mkTable t;
-	mkMeta m;
-	mkResult_Load(dir, "collision.csv", &t, &m, path, sizeof path);
-	mkDoc_Heading(d, 2, "Collision detection (paper §7.2, Table 3)");
-	int usable = t.present && mkTable_Col(&t, "pair") >= 0 && mkTable_Col(&t, "algorithm") >= 0
-		&& mkTable_Col(&t, "seconds") >= 0;
-	if (!usable) {
-		mkDoc_Para(d, "%s: `%s` %s. None of the 11 published mean times below has a counterpart.", mkNotYet,
-			path, t.present ? "lacks the columns pair (ellipsoids|superquadrics), algorithm, seconds"
-			: "does not exist (the collision experiment is not built)");
-	} else {
-		mkDoc_Source(d, path, &t, &m);
-		const char *rot = mkMeta_Get(&m, "rotation_draw");
+	static const char *const columns[] = { "pair", "algorithm", "seconds", NULL };
+	mkSection s;
+	int usable = mkSection_Begin(&s, d, "Collision detection (paper §7.2, Table 3)", dir, "collision.csv",
+		columns, "None of the 11 published mean times below has a counterpart.");
+	if (usable) {
+		const char *rot = mkMeta_Get(&s.m, "rotation_draw");
 		mkDoc_Para(d, "Rotation draw: %s.", rot ? rot : "not recorded in the sidecar");
 	}
-	mkCollision_Table3(d, &t, usable, tally);
+	mkCollision_Table3(d, &s.t, usable, tally);
 	if (usable)
-		mkCollision_Details(d, &t, &m);
-	mkResult_Free(&t, &m);
+		mkCollision_Details(d, &s.t, &s.m);
+	mkSection_End(&s);
 }

@@ -76,22 +76,14 @@ static mkMean mkFitting_Mean(const mkTable *t, const mkPaperFitting *pub)
 
 void mkFitting_Summary(mkDoc *d, const char *dir, mkTally *tally)
 {
-	char path[MK_PATH_MAX];
-	mkTable t;
-	mkMeta m;
-	mkResult_Load(dir, "fitting.csv", &t, &m, path, sizeof path);
-	mkDoc_Heading(d, 2, "Fitting errors (paper §6.2)");
-	int ccase = mkTable_Col(&t, "case"), ctruth = mkTable_Col(&t, "truth"), cmodel = mkTable_Col(&t, "model");
-	int csamp = mkTable_Col(&t, "sampling"), clevel = mkTable_Col(&t, "level");
-	int cvol = mkTable_Col(&t, "e_volume"), cimp = mkTable_Col(&t, "e_implicit");
-	int usable = t.present && ccase >= 0 && ctruth >= 0 && cmodel >= 0 && csamp >= 0 && clevel >= 0
-		&& cvol >= 0 && cimp >= 0;
-	if (!usable) {
-		mkDoc_Para(d, "%s: `%s` %s.", mkNotYet, path, t.present ? "lacks the columns case, truth, model, "
-			"sampling, level, e_volume, e_implicit" : "does not exist (run the `fitting` driver)");
-	} else {
-		mkDoc_Source(d, path, &t, &m);
-		const char *c2 = mkMeta_Get(&m, "case2_draw");
+	static const char *const columns[] = { "case", "truth", "model", "sampling", "level", "e_volume",
+		"e_implicit", NULL };
+	mkSection s;
+	int usable = mkSection_Begin(&s, d, "Fitting errors (paper §6.2)", dir, "fitting.csv", columns,
+		"The nine published means are listed without a counterpart.");
+	const mkTable *t = &s.t;
+	if (usable) {
+		const char *c2 = mkMeta_Get(&s.m, "case2_draw");
 		mkDoc_Para(d, "Rotation draw: only case 2 rotates its superquadric (%s); a rotation cannot change a "
 			"volume, so the draw does not enter these errors. Ratio = reproduced / published.",
 			c2 ? c2 : "draw not recorded");
@@ -106,7 +98,7 @@ void mkFitting_Summary(mkDoc *d, const char *dir, mkTally *tally)
 		mkMean mean;
 		memset(&mean, 0, sizeof mean);
 		if (usable)
-			mean = mkFitting_Mean(&t, pub);
+			mean = mkFitting_Mean(t, pub);
 		double v = mkMean_Get(&mean);
 		char got[MK_CELL_MAX], ratio[MK_CELL_MAX], rows[MK_CELL_MAX];
 		if (!usable || (mean.n == 0 && mean.nan == 0)) {
@@ -130,6 +122,6 @@ void mkFitting_Summary(mkDoc *d, const char *dir, mkTally *tally)
 			"[0.8, 1.25]); means of 100 random trials of these errors scatter by several percent between "
 			"seeds. The `distinct` sampling rows of the CSV (grids without the repeated longitude of the "
 			"reference code) are not in this table.", disagree, mkPaper_FittingCount);
-	mkResult_Free(&t, &m);
+	mkSection_End(&s);
 }
 

@@ -544,21 +544,16 @@ static void mkTiming_Conditions(mkDoc *d, const mkMeta *m)
 
 void mkTiming_Summary(mkDoc *d, const char *dir, mkTally *tally)
 {
-	char path[MK_PATH_MAX];
-	mkTable t;
-	mkMeta m;
-	mkResult_Load(dir, "timing.csv", &t, &m, path, sizeof path);
-	mkDoc_Heading(d, 2, "Running time (paper §6.3, Table 1, Figs. 5–8)");
+	static const char *const columns[] = { "dim", "case", "method", "level", "points_per_body", "status",
+		"seconds", "trials_planned", "trials_run", NULL };
+	mkSection s;
 	mkTimingData tm;
 	memset(&tm, 0, sizeof tm);
-	int usable = t.present && mkTiming_Load(&tm, &t) == 0;
-	if (!usable) {
-		mkDoc_Para(d, "%s: `%s` %s. The paper publishes no running-time numbers for this section, only the "
-			"statements listed below, none of which is checked here yet.", mkNotYet, path, t.present
-			? "lacks the columns of the `timing` driver" : "does not exist (run the `timing` driver)");
-	} else {
-		mkDoc_Source(d, path, &t, &m);
-		mkTiming_Conditions(d, &m);
+	int usable = mkSection_Begin(&s, d, "Running time (paper §6.3, Table 1, Figs. 5–8)", dir, "timing.csv",
+		columns, "The paper publishes no running-time numbers for this section, only the statements listed "
+		"below, none of which is checked here yet.") && mkTiming_Load(&tm, &s.t) == 0;
+	if (usable) {
+		mkTiming_Conditions(d, &s.m);
 		mkDoc_Para(d, "The paper ran MATLAB R2020b on an Intel Xeon at 2.80 GHz and reports curves, not "
 			"numbers; absolute times here are not comparable with its figures, only the shapes and orderings "
 			"that its text states.");
@@ -575,5 +570,5 @@ void mkTiming_Summary(mkDoc *d, const char *dir, mkTally *tally)
 			mkDoc_Para(d, "**%ld calls failed** (status other than ok); they are left out of the means.", failed);
 	}
 	mkTiming_Free(&tm);
-	mkResult_Free(&t, &m);
+	mkSection_End(&s);
 }

@@ -394,21 +394,13 @@ static void mkValidation_Findings(mkDoc *d, const mkValidationMeans *v, int have
 
 void mkValidation_Summary(mkDoc *d, const char *dir, mkTally *tally)
 {
-	char path[MK_PATH_MAX];
-	mkTable t;
-	mkMeta m;
-	mkResult_Load(dir, "validation.csv", &t, &m, path, sizeof path);
-	mkDoc_Heading(d, 2, "Numerical validation (paper §6.1)");
-	int usable = t.present && mkTable_Col(&t, "dim") >= 0 && mkTable_Col(&t, "form") >= 0
-		&& mkTable_Col(&t, "e_implicit_mean") >= 0 && mkTable_Col(&t, "e_gradient_mean") >= 0;
-	int have_support = mkTable_Col(&t, "e_support_mean") >= 0;
-	if (!usable) {
-		mkDoc_Para(d, "%s: `%s` %s. The four published means are listed without a counterpart.",
-			mkNotYet, path, t.present ? "lacks the columns dim, form, e_implicit_mean, e_gradient_mean"
-			: "does not exist (run the `validation` driver)");
-	} else {
-		mkDoc_Source(d, path, &t, &m);
-		const char *rot = mkMeta_Get(&m, "rotation_draw");
+	static const char *const columns[] = { "dim", "form", "e_implicit_mean", "e_gradient_mean", NULL };
+	mkSection s;
+	int usable = mkSection_Begin(&s, d, "Numerical validation (paper §6.1)", dir, "validation.csv", columns,
+		"The four published means are listed without a counterpart.");
+	int have_support = mkTable_Col(&s.t, "e_support_mean") >= 0;
+	if (usable) {
+		const char *rot = mkMeta_Get(&s.m, "rotation_draw");
 		mkDoc_Para(d, "Rotation draw (3D): **%s**%s. The 2D bodies are rotated and sheared "
 			"(`M = rot(2π U) [1 s; 0 1]`, s ~ U(−2, 2)).", rot ? rot : "not recorded",
 			rot && strcmp(rot, "paper") == 0 ? " (the reference code's normalised quaternion with "
@@ -418,9 +410,9 @@ void mkValidation_Summary(mkDoc *d, const char *dir, mkTally *tally)
 	mkValidationMeans v;
 	memset(&v, 0, sizeof v);
 	if (usable)
-		mkValidationMeans_Load(&v, &t);
+		mkValidationMeans_Load(&v, &s.t);
 	mkValidation_Table(d, &v, usable, have_support, tally);
 	if (usable)
 		mkValidation_Findings(d, &v, have_support);
-	mkResult_Free(&t, &m);
+	mkSection_End(&s);
 }

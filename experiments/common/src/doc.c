@@ -244,3 +244,33 @@ double mkMean_Get(const mkMean *m)
 {
 	return m->n ? m->sum / (double)m->n : NAN;
 }
+
+int mkSection_Begin(mkSection *s, mkDoc *d, const char *heading, const char *dir, const char *file,
+	const char *const *columns, const char *consequence)
+{
+	mkDoc_Heading(d, 2, heading);
+	s->usable = mkResult_Load(dir, file, &s->t, &s->m, s->path, sizeof s->path);
+	char list[512] = "";
+	size_t len = 0;
+	for (int i = 0; columns[i]; ++i) {
+		s->usable = s->usable && mkTable_Col(&s->t, columns[i]) >= 0;
+		len += (size_t)snprintf(list + len, len < sizeof list ? sizeof list - len : 0, "%s%s", i ? ", " : "",
+			columns[i]);
+	}
+	if (s->usable) {
+		mkDoc_Source(d, s->path, &s->t, &s->m);
+		return 1;
+	}
+	size_t stem = strcspn(file, ".");
+	if (s->t.present)
+		mkDoc_Para(d, "%s: `%s` lacks the columns %s. %s", mkNotYet, s->path, list, consequence);
+	else
+		mkDoc_Para(d, "%s: `%s` does not exist (run the `%.*s` driver). %s", mkNotYet, s->path, (int)stem, file,
+			consequence);
+	return 0;
+}
+
+void mkSection_End(mkSection *s)
+{
+	mkResult_Free(&s->t, &s->m);
+}

@@ -64,6 +64,24 @@ typedef struct mkMean {
 void mkMean_Add(mkMean *m, double v);
 double mkMean_Get(const mkMean *m);
 
+/* An experiment's section of the tables, opened: its result and sidecar
+ * loaded, its heading written, and either the source line (when the result
+ * is there with every column the summary reads) or the NOT REPRODUCED YET
+ * line that says what is missing and what follows from it. */
+typedef struct mkSection {
+	mkTable t;
+	mkMeta m;
+	char path[MK_PATH_MAX];
+	int usable;
+} mkSection;
+/* Heading `heading` (level 2); loads <dir>/<file>; `columns` NULL-ended, the
+ * columns the summary needs; `consequence` one sentence for the missing case
+ * ("The four published means are listed without a counterpart."). The
+ * missing text names the driver: the file's stem. Returns s->usable. */
+int mkSection_Begin(mkSection *s, mkDoc *d, const char *heading, const char *dir, const char *file,
+	const char *const *columns, const char *consequence);
+void mkSection_End(mkSection *s);
+
 /* Load <dir>/<file> and its sidecar <dir>/<file>.meta (m is initialised
  * here; free both with mkResult_Free). path receives "<dir>/<file>".
  * Returns 1 when the CSV is present, 0 when missing or malformed. */
