@@ -37,12 +37,15 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, int ellipsoids,
 	mkMeta_Set(meta, "rng", "xoshiro256** seeded by splitmix64, one stream per trial: (pair << 32) | trial, pair 0 ellipsoids 1 superquadrics");
 	mkMeta_Set(meta, "draw", "B1 a,b,c~U(1,11) c~U(-5,5)^3; B2 a,b,c~U(1,6) c~U(5,15)^3; eps1,eps2~U(0.1,1.9) (ellipsoids 1,1)");
 	mkMeta_SetInt(meta, "lm_max_iterations", MK_COLLIDE_LM_MAX_ITER);
-	mkMeta_Set(meta, "lm", "cminpack lmder, central-difference Jacobian (step 1e-6 rad), ftol=xtol=1e-15, gtol=0");
-	mkMeta_Set(meta, "implicit", "Ipopt, limited-memory BFGS Hessian, tol=1e-10, max_iter=1000, constraints Psi^eps1<=1, collide iff distance<=1e-3");
-	mkMeta_Set(meta, "gjk", "libccd ccdGJKIntersect on 10x10 grid vertex sets, max 100 iterations; vertex sets built outside the timer");
-	mkMeta_Set(meta, "asc", "Eigen EigenSolver on A^-1 B (4x4), separated iff two distinct positive roots of det(lambda A + B)");
-	mkMeta_Set(meta, "success", "LM: residual norm < 1e-10; Implicit: Ipopt Solve_Succeeded at tol 1e-10");
-	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the query call only, one thread");
+	static const char *const fixed[][2] = {
+		{ "lm", "cminpack lmder, central-difference Jacobian (step 1e-6 rad), ftol=xtol=1e-15, gtol=0" },
+		{ "implicit", "Ipopt, limited-memory BFGS Hessian, tol=1e-10, max_iter=1000, constraints Psi^eps1<=1, collide iff distance<=1e-3" },
+		{ "gjk", "libccd ccdGJKIntersect on 10x10 grid vertex sets, max 100 iterations; vertex sets built outside the timer" },
+		{ "asc", "Eigen EigenSolver on A^-1 B (4x4), separated iff two distinct positive roots of det(lambda A + B)" },
+		{ "success", "LM: residual norm < 1e-10; Implicit: Ipopt Solve_Succeeded at tol 1e-10" },
+		{ "timer", "CLOCK_MONOTONIC around the query call only, one thread" },
+	};
+	mkMeta_SetPairs(meta, fixed, MK_COUNT(fixed));
 	mkMeta_Set(meta, "ipopt_version", mkCollide_IpoptVersion());
 	mkMeta_Set(meta, "libccd_version", mkCollide_CcdVersion());
 	mkMeta_Set(meta, "cminpack_version", mkCollide_CminpackVersion());

@@ -69,3 +69,16 @@ function(mk_plot_test name script results fixture)
     ${PROJECT_SOURCE_DIR}/plots/${script})
   set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${fixture} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 endfunction()
+
+# mk_summary_test(NAME LIBRARY SOURCE): a test program SOURCE linking
+# LIBRARY that writes an experiment's summary into a scratch folder it gets
+# as its argument, registered as NAME.
+function(mk_summary_test name library source)
+  string(REPLACE "." "_" exe "test_${name}")
+  add_executable(${exe} ${source})
+  target_compile_options(${exe} PRIVATE ${MINK_C_WARNINGS})
+  target_link_libraries(${exe} PRIVATE ${library} mink_ensure)
+  target_include_directories(${exe} PRIVATE ${MINK_EXP_TESTING_DIR})
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/${name}.work)
+  add_test(NAME ${name} COMMAND ${exe} ${CMAKE_CURRENT_BINARY_DIR}/${name}.work)
+endfunction()

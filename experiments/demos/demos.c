@@ -840,10 +840,13 @@ void mkDemos_Describe(mkMeta *meta, const mkDemosOptions *o, const int *units, l
 
 void mkDemos_DescribeIndex(mkMeta *meta)
 {
-	mkMeta_Set(meta, "figure", "index");
-	mkMeta_Set(meta, "panel", "all");
-	mkMeta_Set(meta, "content", "one row per geometry file of this run, files in the directory named like this file without .csv");
-	mkMeta_Set(meta, "body1", "see rows");
-	mkMeta_Set(meta, "body2", "see rows");
-	mkMeta_Set(meta, "note", "");
+	static const char *const fixed[][2] = {
+		{ "figure", "index" },
+		{ "panel", "all" },
+		{ "content", "one row per geometry file of this run, files in the directory named like this file without .csv" },
+		{ "body1", "see rows" },
+		{ "body2", "see rows" },
+		{ "note", "" },
+	};
+	mkMeta_SetPairs(meta, fixed, MK_COUNT(fixed));
 }

@@ -381,3 +381,9 @@ int mkMeta_ReadFile(mkMeta *meta, const char *path, char *msg, size_t msglen)
 	fclose(fp);
 	return rc;
 }
+
+void mkMeta_SetPairs(mkMeta *meta, const char *const pairs[][2], int count)
+{
+	for (int i = 0; i < count; ++i)
+		mkMeta_Set(meta, pairs[i][0], pairs[i][1]);
+}

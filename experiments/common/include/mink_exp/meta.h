@@ -61,6 +61,9 @@ void mkMeta_SetDouble(mkMeta *meta, const char *key, double value);
  * For a driver whose shards are not blocks of trials: it replaces the
  * harness's trial_range by its own account. */
 void mkMeta_Remove(mkMeta *meta, const char *key);
+/* Set several text keys in order: pairs[i][0] the key, pairs[i][1] its value
+ * (a driver's fixed description of its run). */
+void mkMeta_SetPairs(mkMeta *meta, const char *const pairs[][2], int count);
 /* The value, or NULL when the key is not set. */
 const char *mkMeta_Get(const mkMeta *meta, const char *key);
 
