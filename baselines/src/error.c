@@ -872,7 +872,11 @@ static void signed_distance3(const Prob3 *P, const double *start, const double *
 			r[0] += (e.x[i] - p[i]) * e1[i];
 			r[1] += (e.x[i] - p[i]) * e2[i];
 		}
-		double dl = fmin(1e-4, fmax(1e-9, step));
+		/* Finite-difference step: small enough that x stays on the same
+		 * smooth patch even where the radii of curvature are large (the
+		 * faces of boxy bodies), large enough that rounding (u |x| / dl)
+		 * stays far below the derivative. */
+		double dl = fmin(1e-7, fmax(1e-10, step));
 		move3(e.n, e1, e2, dl, 0, n1);
 		move3(e.n, e1, e2, 0, dl, n2);
 		double x1[3], x2[3];
