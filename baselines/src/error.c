@@ -860,6 +860,121 @@ static void move3(const double *n, const double *e1, const double *e2, double s1
 	unit3(out);
 }
 
+/* A lower bound of g = h_{K-p} over the spherical triangle with unit corners
+ * n[0..2], from the support points y[i] = x_K(n[i]) - p: on the flat
+ * triangle, g(w) >= max_i <y_i, w> (the tangent planes of the convex g), a
+ * piecewise-linear function whose minimum over the triangle is at a
+ * corner, where two pieces cross on an edge, or where all three meet; and
+ * a unit direction is w / |w| with mu <= |w| <= 1 (mu as in tri_bound). */
+static double sph_lower(double n[3][3], double y[3][3])
+{
+	double A[3][3]; /* A[i][j] = <y_i, n_j> */
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) A[i][j] = dot3(y[i], n[j]);
+	double lb = HUGE_VAL;
+	for (int j = 0; j < 3; ++j) lb = fmin(lb, fmax(A[0][j], fmax(A[1][j], A[2][j])));
+	for (int j = 0; j < 3; ++j) {
+		int k = (j + 1) % 3;
+		for (int i = 0; i < 3; ++i)
+			for (int l = i + 1; l < 3; ++l) {
+				double dj = A[i][j] - A[l][j], dk = A[i][k] - A[l][k];
+				if (dj == dk) continue;
+				double t = dj / (dj - dk);
+				if (!(t > 0 && t < 1)) continue;
+				double v = -HUGE_VAL;
+				for (int m = 0; m < 3; ++m) v = fmax(v, (1 - t) * A[m][j] + t * A[m][k]);
+				lb = fmin(lb, v);
+			}
+	}
+	/* All three equal: with l2 = 1 - l0 - l1, row i is (A[i][0] - A[i][2]) l0
+	 * + (A[i][1] - A[i][2]) l1 + A[i][2]; rows 0 and 1 minus row 2 give a
+	 * 2 x 2 system (Cramer). */
+	double m00 = (A[0][0] - A[0][2]) - (A[2][0] - A[2][2]), m01 = (A[0][1] - A[0][2]) - (A[2][1] - A[2][2]);
+	double m10 = (A[1][0] - A[1][2]) - (A[2][0] - A[2][2]), m11 = (A[1][1] - A[1][2]) - (A[2][1] - A[2][2]);
+	double det = m00 * m11 - m01 * m10;
+	if (det != 0) {
+		double c0 = -(A[0][2] - A[2][2]), c1 = -(A[1][2] - A[2][2]);
+		double l0 = (c0 * m11 - m01 * c1) / det, l1 = (m00 * c1 - c0 * m10) / det, l2 = 1 - l0 - l1;
+		if (l0 >= 0 && l1 >= 0 && l2 >= 0) {
+			double v = -HUGE_VAL;
+			for (int m = 0; m < 3; ++m) v = fmax(v, A[m][0] * l0 + A[m][1] * l1 + A[m][2] * l2);
+			lb = fmin(lb, v);
+		}
+	}
+	if (lb >= 0) return lb;
+	double c[3] = {n[0][0] + n[1][0] + n[2][0], n[0][1] + n[1][1] + n[2][1], n[0][2] + n[1][2] + n[2][2]};
+	if (!unit3(c)) return -HUGE_VAL;
+	double mu = fmin(dot3(n[0], c), fmin(dot3(n[1], c), dot3(n[2], c)));
+	return mu > 0 ? lb / mu : -HUGE_VAL;
+}
+
+typedef struct STri { double n[3][3], y[3][3]; int depth; } STri;
+
+#define SD_BUDGET 1500
+
+/* Branch and bound for min g over a hexagon of spherical triangles of
+ * radius rho around n0: *best receives the smallest g found (attained, with
+ * its direction in nbest), the return value a lower bound of g over the
+ * hexagon. */
+static double sd_branch(const Prob3 *P, const double *n0, double rho, const double *p, double *best, double *nbest)
+{
+	STri stack[4 * 64 + 16];
+	int sp = 0;
+	long evals = 0;
+	double e1[3], e2[3], ring[6][3], yr[6][3], yc[3], x[3];
+	frame3(n0, e1, e2);
+	double g0 = hk3(P, n0, x);
+	for (int i = 0; i < 3; ++i) yc[i] = x[i] - p[i];
+	g0 -= dot3(n0, p);
+	if (g0 < *best) *best = g0, memcpy(nbest, n0, 3 * sizeof *n0);
+	for (int k = 0; k < 6; ++k) {
+		move3(n0, e1, e2, rho * cos(MK_PI * k / 3), rho * sin(MK_PI * k / 3), ring[k]);
+		double g = hk3(P, ring[k], x) - dot3(ring[k], p);
+		for (int i = 0; i < 3; ++i) yr[k][i] = x[i] - p[i];
+		if (g < *best) *best = g, memcpy(nbest, ring[k], 3 * sizeof *n0);
+	}
+	for (int k = 0; k < 6; ++k) {
+		STri t;
+		memcpy(t.n[0], n0, 3 * sizeof *n0), memcpy(t.y[0], yc, sizeof yc);
+		memcpy(t.n[1], ring[k], sizeof ring[k]), memcpy(t.y[1], yr[k], sizeof yr[k]);
+		memcpy(t.n[2], ring[(k + 1) % 6], sizeof ring[k]), memcpy(t.y[2], yr[(k + 1) % 6], sizeof yr[k]);
+		t.depth = 0;
+		stack[sp++] = t;
+	}
+	double low = HUGE_VAL;
+	while (sp > 0) {
+		STri t = stack[--sp];
+		double lb = sph_lower(t.n, t.y), tol = fmax(1e-3 * fabs(*best), P->round);
+		if (lb >= *best - tol || evals >= SD_BUDGET || t.depth >= 60 || sp + 4 > (int)(sizeof stack / sizeof *stack)) {
+			low = fmin(low, lb);
+			continue;
+		}
+		double m[3][3], ym[3][3];
+		for (int k = 0; k < 3; ++k) {
+			const double *a = t.n[k], *b = t.n[(k + 1) % 3];
+			for (int i = 0; i < 3; ++i) m[k][i] = a[i] + b[i];
+			unit3(m[k]);
+			double g = hk3(P, m[k], x) - dot3(m[k], p);
+			for (int i = 0; i < 3; ++i) ym[k][i] = x[i] - p[i];
+			if (g < *best) *best = g, memcpy(nbest, m[k], sizeof m[k]);
+		}
+		evals += 3;
+		/* Children: (n0, m0, m2), (m0, n1, m1), (m2, m1, n2), (m0, m1, m2). */
+		const double *cn[4][3] = {{t.n[0], m[0], m[2]}, {m[0], t.n[1], m[1]}, {m[2], m[1], t.n[2]}, {m[0], m[1], m[2]}};
+		const double *cy[4][3] = {{t.y[0], ym[0], ym[2]}, {ym[0], t.y[1], ym[1]}, {ym[2], ym[1], t.y[2]}, {ym[0], ym[1], ym[2]}};
+		for (int c = 0; c < 4; ++c) {
+			STri u;
+			for (int k = 0; k < 3; ++k) {
+				memcpy(u.n[k], cn[c][k], 3 * sizeof(double));
+				memcpy(u.y[k], cy[c][k], 3 * sizeof(double));
+			}
+			u.depth = t.depth + 1;
+			stack[sp++] = u;
+		}
+	}
+	return fmin(low, *best);
+}
+
 static void signed_distance3(const Prob3 *P, const double *start, const double *p, double *sd, double *left)
 {
 	Eval3 e = eval3(P, start, p);
@@ -929,6 +1044,28 @@ static void signed_distance3(const Prob3 *P, const double *start, const double *
 	}
 	*sd = e.f;
 	*left = last == HUGE_VAL ? 0.0 : last;
+	/* Newton stalls where the support map is not differentiable (the axis
+	 * normals of a boxy body). At the maximiser the tangential part of
+	 * x_K(n) - p vanishes; where it does not, branch and bound on spherical
+	 * triangles (sph_lower) takes over around the best direction, recentred
+	 * while the best direction lies near the hexagon's rim. */
+	double e1[3], e2[3], r0 = 0, r1 = 0;
+	frame3(e.n, e1, e2);
+	for (int i = 0; i < 3; ++i) {
+		r0 += (e.x[i] - p[i]) * e1[i];
+		r1 += (e.x[i] - p[i]) * e2[i];
+	}
+	if (hypot(r0, r1) > 1e-7 * P->R) {
+		double best = -e.f, nb[3], n0[3], rho = 0.02, low = -HUGE_VAL;
+		memcpy(nb, e.n, sizeof nb);
+		for (int round = 0; round < 4; ++round) {
+			memcpy(n0, nb, sizeof n0);
+			low = sd_branch(P, n0, rho, p, &best, nb);
+			if (dot3(nb, n0) > cos(0.6 * rho)) break;
+		}
+		*sd = -best;
+		*left = fmax(0.0, best - low);
+	}
 }
 
 /* ---- gap_in in 3D ---------------------------------------------------------------------

@@ -43,14 +43,17 @@
  *            directions near the point's polar angle, which is right for
  *            points closer to K's boundary than its radii of curvature.
  *   gap_out, off_boundary (3D): Newton on the sphere from the point's own
- *            normal cone in P; the bound is the last step's change (an
- *            estimate, not a certificate). Every value found is attained,
- *            so gap_out never exceeds the truth and off_boundary of a point
- *            inside K never falls below it; but near the axis normals of a
- *            boxy body (eps < 1), where the support map is not
- *            differentiable, Newton can stop short: points that are on the
- *            boundary to 1e-16 were measured up to 1e-4 of the scale deep
- *            (docs/error-measure.md). Known weakness.
+ *            normal cone in P; where it stops with the tangential residual
+ *            of x_K(n) - p above 1e-7 R (near the axis normals of a boxy
+ *            body, where the support map is not differentiable), a branch
+ *            and bound over spherical triangles with tangent-plane lower
+ *            bounds (certified within its hexagon, budget 1500
+ *            evaluations). The bound is that branch and bound's gap, or
+ *            Newton's last step (an estimate). Every value found is
+ *            attained, so gap_out never exceeds the truth and the depth of
+ *            a point inside K is never understated; on boxy superquadrics
+ *            boundary points were measured up to 3e-7 of the scale deep
+ *            (bound reported: 3e-5). Known weakness (docs/error-measure.md).
  *   area (2D): certified: |K| lies between the inscribed polygon of exact
  *            support points and the circumscribed polygon of their tangent
  *            lines, refined until the two agree to 1e-11 (or a cap).
