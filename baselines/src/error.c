@@ -1181,21 +1181,28 @@ static double refine_cone(const Prob3 *P, const double *v, const double *nrm, co
 	return top;
 }
 
-/* Lexicographic order of points (for matching input points to hull vertices). */
-static const double *sort_base;
-static int cmp_xyz(const void *a, const void *b)
+/* Points with their index, in lexicographic order (for matching the input
+ * points to hull vertices; no global state, so the measure is reentrant). */
+typedef struct Keyed { double c[3]; int i; } Keyed;
+
+static int cmp_keyed(const void *a, const void *b)
 {
-	const double *p = sort_base + 3 * *(const int *)a, *q = sort_base + 3 * *(const int *)b;
+	const Keyed *p = a, *q = b;
 	for (int i = 0; i < 3; ++i)
-		if (p[i] != q[i]) return p[i] < q[i] ? -1 : 1;
+		if (p->c[i] != q->c[i]) return p->c[i] < q->c[i] ? -1 : 1;
 	return 0;
 }
 
-static void sort_points(const double *xyz, int *idx, int n)
+static Keyed *sorted_points(const double *xyz, int n)
 {
-	sort_base = xyz;
-	qsort(idx, (size_t)n, sizeof *idx, cmp_xyz);
-	sort_base = NULL;
+	Keyed *k = malloc((size_t)(n > 0 ? n : 1) * sizeof *k);
+	if (!k) return NULL;
+	for (int i = 0; i < n; ++i) {
+		memcpy(k[i].c, xyz + 3 * i, sizeof k[i].c);
+		k[i].i = i;
+	}
+	qsort(k, (size_t)n, sizeof *k, cmp_keyed);
+	return k;
 }
 
 #define TABLE3 2048
@@ -1295,22 +1302,17 @@ mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *p
 		out->gap_in = best;
 		out->vertices = nv;
 		/* Match the points to hull vertices (CGAL keeps input coordinates). */
-		int *ps = malloc((size_t)nf * sizeof *ps), *hs = malloc((size_t)nv * sizeof *hs);
+		Keyed *ps = sorted_points(xyz, nf), *hs = sorted_points(V, nv);
 		if (!ps || !hs) {
 			free(ps);
 			free(hs);
 			r = MK_ERR_MEMORY;
 			goto done;
 		}
-		for (int k = 0; k < nf; ++k) ps[k] = k, pv[k] = -1;
-		for (int v = 0; v < nv; ++v) hs[v] = v;
-		sort_points(xyz, ps, nf);
-		sort_points(V, hs, nv);
+		for (int k = 0; k < nf; ++k) pv[k] = -1;
 		for (int i = 0, j = 0; i < nf && j < nv;) {
-			const double *p = xyz + 3 * ps[i], *q = V + 3 * hs[j];
-			int c = 0;
-			for (int d = 0; d < 3 && !c; ++d) c = p[d] < q[d] ? -1 : p[d] > q[d] ? 1 : 0;
-			if (c == 0) pv[ps[i++]] = hs[j];
+			int c = cmp_keyed(ps + i, hs + j);
+			if (c == 0) pv[ps[i++].i] = hs[j].i;
 			else if (c < 0) ++i;
 			else ++j;
 		}
