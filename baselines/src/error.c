@@ -975,6 +975,97 @@ static double sd_branch(const Prob3 *P, const double *n0, double rho, const doub
 	return fmin(low, *best);
 }
 
+/* Body 1's outward unit normal (world) where the ray of canonical direction
+ * v meets its surface: the gradient of the implicit function Psi there,
+ * which depends only on v's direction (Psi is homogeneous), mapped by M1^-T.
+ * In this parameter the normal is smooth across the flat faces of a boxy
+ * body (exponents 2/eps - 1 > 1), where the support map in n is not. */
+static void ray_normal(const Prob3 *P, const mkMat3 *MinvT, const double *v, double *n)
+{
+	const mkShape3 *sh = &P->b1.shape;
+	double s0 = v[0] / sh->a, s1 = v[1] / sh->b, s2 = v[2] / sh->c;
+	double big = fmax(fabs(s0), fmax(fabs(s1), fabs(s2)));
+	s0 /= big, s1 /= big, s2 /= big;
+	double A = pow(fabs(s0), 2.0 / sh->eps2) + pow(fabs(s1), 2.0 / sh->eps2);
+	double f = A > 0 ? pow(A, sh->eps2 / sh->eps1 - 1.0) : 0.0;
+	double g[3] = {A > 0 ? f * spow(s0, 2.0 / sh->eps2 - 1.0) / sh->a : 0.0,
+		A > 0 ? f * spow(s1, 2.0 / sh->eps2 - 1.0) / sh->b : 0.0, spow(s2, 2.0 / sh->eps1 - 1.0) / sh->c};
+	for (int i = 0; i < 3; ++i) n[i] = MinvT->m[i][0] * g[0] + MinvT->m[i][1] * g[1] + MinvT->m[i][2] * g[2];
+	unit3(n);
+}
+
+/* f as a function of body 1's canonical ray direction v. */
+static double ray_f(const Prob3 *P, const mkMat3 *MinvT, const double *v, const double *p, Eval3 *e)
+{
+	double n[3];
+	ray_normal(P, MinvT, v, n);
+	*e = eval3(P, n, p);
+	return e->f;
+}
+
+/* Newton in the ray parameter, with a finite-difference gradient and
+ * Hessian on the tangent plane of v (6 evaluations a step); steps that do
+ * not raise f are halved. Raises *e when it finds a larger f. */
+static void ray_newton(const Prob3 *P, const double *p, Eval3 *e)
+{
+	mkMat3 MinvT = mkMat3_Transpose(mkMat3_Inverse(P->b1.M));
+	double xc[3], m[3], v[3];
+	const double(*M)[3] = P->b1.M.m;
+	for (int j = 0; j < 3; ++j) m[j] = M[0][j] * e->n[0] + M[1][j] * e->n[1] + M[2][j] * e->n[2];
+	canon3(P->b1.shape, m[0], m[1], m[2], xc);
+	memcpy(v, xc, sizeof v);
+	if (!unit3(v)) return;
+	Eval3 cur;
+	double fc = ray_f(P, &MinvT, v, p, &cur), h = 1e-5;
+	for (int it = 0; it < 30; ++it) {
+		double e1[3], e2[3], w[3], F[3][3];
+		frame3(v, e1, e2);
+		Eval3 tmp;
+		for (int a = -1; a <= 1; ++a)
+			for (int b = -1; b <= 1; ++b) {
+				if (a == 0 && b == 0) {
+					F[1][1] = fc;
+					continue;
+				}
+				if (a * b == -1) continue;
+				move3(v, e1, e2, a * h, b * h, w);
+				F[a + 1][b + 1] = ray_f(P, &MinvT, w, p, &tmp);
+			}
+		double ga = (F[2][1] - F[0][1]) / (2 * h), gb = (F[1][2] - F[1][0]) / (2 * h);
+		double haa = (F[2][1] - 2 * fc + F[0][1]) / (h * h), hbb = (F[1][2] - 2 * fc + F[1][0]) / (h * h);
+		double hab = (F[2][2] - F[2][1] - F[1][2] + 2 * fc - F[0][1] - F[1][0] + F[0][0]) / (2 * h * h);
+		double det = haa * hbb - hab * hab, sa, sb;
+		if (haa < 0 && det > 0) {
+			sa = -(hbb * ga - hab * gb) / det;
+			sb = -(-hab * ga + haa * gb) / det;
+		} else {
+			double gn = hypot(ga, gb);
+			if (!(gn > 0)) break;
+			sa = 1e-3 * ga / gn;
+			sb = 1e-3 * gb / gn;
+		}
+		double len = hypot(sa, sb);
+		if (len > 0.1) sa *= 0.1 / len, sb *= 0.1 / len, len = 0.1;
+		int moved = 0;
+		for (int k = 0; k < 40 && len > 1e-16; ++k) {
+			move3(v, e1, e2, sa, sb, w);
+			Eval3 t;
+			double ft = ray_f(P, &MinvT, w, p, &t);
+			if (ft > fc) {
+				memcpy(v, w, sizeof v);
+				fc = ft;
+				cur = t;
+				moved = 1;
+				break;
+			}
+			sa *= 0.5, sb *= 0.5, len *= 0.5;
+		}
+		if (!moved) break;
+		h = fmin(1e-5, fmax(1e-7, len));
+	}
+	if (cur.f > e->f) *e = cur;
+}
+
 static void signed_distance3(const Prob3 *P, const double *start, const double *p, double *sd, double *left)
 {
 	Eval3 e = eval3(P, start, p);
@@ -1046,10 +1137,26 @@ static void signed_distance3(const Prob3 *P, const double *start, const double *
 	*left = last == HUGE_VAL ? 0.0 : last;
 	/* Newton stalls where the support map is not differentiable (the axis
 	 * normals of a boxy body). At the maximiser the tangential part of
-	 * x_K(n) - p vanishes; where it does not, branch and bound on spherical
-	 * triangles (sph_lower) takes over around the best direction, recentred
-	 * while the best direction lies near the hexagon's rim. */
+	 * x_K(n) - p vanishes; where it does not, Newton is run again in body
+	 * 1's ray parameter (smooth there), and if that does not settle it
+	 * either, branch and bound on spherical triangles (sph_lower) takes over
+	 * around the best direction, recentred while the best direction lies
+	 * near the hexagon's rim. */
 	double e1[3], e2[3], r0 = 0, r1 = 0;
+	frame3(e.n, e1, e2);
+	for (int i = 0; i < 3; ++i) {
+		r0 += (e.x[i] - p[i]) * e1[i];
+		r1 += (e.x[i] - p[i]) * e2[i];
+	}
+	if (hypot(r0, r1) > 1e-7 * P->R) {
+		double f0 = e.f;
+		ray_newton(P, p, &e);
+		if (e.f > f0) {
+			*sd = e.f;
+			*left = fmax(*left, e.f - f0);
+		}
+	}
+	r0 = r1 = 0;
 	frame3(e.n, e1, e2);
 	for (int i = 0; i < 3; ++i) {
 		r0 += (e.x[i] - p[i]) * e1[i];

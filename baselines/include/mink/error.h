@@ -45,15 +45,17 @@
  *   gap_out, off_boundary (3D): Newton on the sphere from the point's own
  *            normal cone in P; where it stops with the tangential residual
  *            of x_K(n) - p above 1e-7 R (near the axis normals of a boxy
- *            body, where the support map is not differentiable), a branch
+ *            body, where the support map is not differentiable), Newton
+ *            again in body 1's ray parameter (smooth there), then a branch
  *            and bound over spherical triangles with tangent-plane lower
  *            bounds (certified within its hexagon, budget 1500
  *            evaluations). The bound is that branch and bound's gap, or
  *            Newton's last step (an estimate). Every value found is
  *            attained, so gap_out never exceeds the truth and the depth of
  *            a point inside K is never understated; on boxy superquadrics
- *            boundary points were measured up to 3e-7 of the scale deep
- *            (bound reported: 3e-5). Known weakness (docs/error-measure.md).
+ *            boundary points were measured up to 3.4e-11 of the scale deep,
+ *            with a loose bound (up to 3e-5). Known weakness
+ *            (docs/error-measure.md).
  *   area (2D): certified: |K| lies between the inscribed polygon of exact
  *            support points and the circumscribed polygon of their tangent
  *            lines, refined until the two agree to 1e-11 (or a cap).
