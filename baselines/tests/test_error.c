@@ -336,8 +336,9 @@ static void test_3d(void)
 	/* The closed form's points on a boxy superquadric (plus an ellipsoid),
 	 * even grid and spaced grid: the referee places every such point on the
 	 * boundary to 1e-13 of the scale (test_referee3), so the true distance
-	 * is ~0 and must lie within the reported bound of the measured one; the
-	 * level itself is the known weakness of the 3D distance (error.h). */
+	 * is ~0 and must lie within the reported bound of the measured one. The
+	 * level, 1e-9 of the scale, is the 3D distance's known weakness
+	 * (error.h): Newton in n alone measured 1.4e-4 here. */
 	mkBody3 q1 = mkBody3_Make((mkShape3){2, 1.2, 0.9, 0.3, 0.6}, mkMat3_FromQuat(0.9, 0.2, -0.3, 0.1), (mkVec3){1, 2, 3});
 	mkBody3 q2 = mkBody3_Make((mkShape3){0.6, 0.5, 0.4, 1, 1}, mkMat3_Identity(), (mkVec3){0, 0, 0});
 	enum { G = 30 };
@@ -354,7 +355,7 @@ static void test_3d(void)
 		if (!k) opt.truth = e.area_k, opt.truth_bound = e.area_bound * e.area_k;
 		ENSURE_LE(e.gap_out, 1e-14 * e.scale);
 		ENSURE_LE(e.off_boundary_max, e.off_boundary_bound + 1e-14 * e.scale);
-		ENSURE_LE(e.off_boundary_rel, 1e-6);
+		ENSURE_LE(e.off_boundary_rel, 1e-9); /* measured <= 3.4e-11 up to n = 100 */
 		printf("boxy superquadric, %s grid %d: %s\n", k ? "spaced" : "even", G, e.message);
 	}
 }
