@@ -116,7 +116,14 @@ typedef struct Prob3 {
 	mkBody3 b1, b2;
 	double o[3];
 	double S, R, round;
+	int lead; /* 2 when body 2 is the boxier (smaller exponent): the volume
+	             grid and the ray-parameter search follow that body */
 } Prob3;
+
+static const mkBody3 *lead_body(const Prob3 *P)
+{
+	return P->lead == 2 ? &P->b2 : &P->b1;
+}
 
 /* h_K and x_K (relative to o) at the unit direction (nx, ny). */
 static double hk2(const Prob2 *P, double nx, double ny, double *x)
@@ -193,6 +200,7 @@ static int prob3_init(Prob3 *P, mkBody3 b1, mkBody3 b2, mkSet set)
 	P->R = frob3(b1.M) * mkVec3_Length(mkVec3_Make(b1.shape.a, b1.shape.b, b1.shape.c))
 		+ frob3(b2.M) * mkVec3_Length(mkVec3_Make(b2.shape.a, b2.shape.b, b2.shape.c));
 	P->round = ROUND_ULPS * UNIT_ROUND * P->S;
+	P->lead = fmin(b2.shape.eps1, b2.shape.eps2) < fmin(b1.shape.eps1, b1.shape.eps2) ? 2 : 1;
 	return 1;
 }
 
@@ -740,10 +748,11 @@ static void frame3(const double *n, double *e1, double *e2)
  * Exact support points of K form a closed triangulated surface over a grid
  * of normals, G + 1 rows from pole to pole and 2G columns; its signed volume
  * (divergence theorem, sum of det(a, b, c) / 6) converges as G^-2. The
- * normals are body 1's (its textbook gradient mapped by the cofactor of M1)
- * at the surface parameters of the "almost equally spaced" grid (the
+ * normals are the boxier body's (the one with the smaller exponent; its
+ * textbook gradient mapped by M^-T) at the surface parameters of the
+ * "almost equally spaced" grid (the
  * reference code's map of the angles, exponent 1/eps; mink/sum.h), so that
- * the points spread evenly over a boxy body 1 instead of crowding its edges
+ * the points spread evenly over that body instead of crowding its edges
  * (normals taken evenly in angle leave its flat faces as single triangles
  * and its rounded edges underresolved). Grids G/2, G and 2G give two
  * Richardson extrapolations, V(G) + (V(G) - V(G/2)) / 3 and V(2G) + (V(2G)
@@ -767,11 +776,11 @@ static void spaced_angle(double t, double inv_eps, double *c, double *s)
 	*s = y / l;
 }
 
-/* Body 1's outward unit normal at surface parameter (eta, omega) angles
+/* A body's outward unit normal at surface parameter (eta, omega) angles
  * given by their cos/sin: the gradient of the canonical gauge,
  * (sp(ce, 2-e1) sp(cw, 2-e2) / a, sp(ce, 2-e1) sp(sw, 2-e2) / b, sp(se, 2-e1) / c),
  * mapped by M^-T (the cofactor matrix, up to a positive factor). */
-static void body1_normal(const mkBody3 *b, double ce, double se, double cw, double sw, double *n)
+static void body_normal(const mkBody3 *b, double ce, double se, double cw, double sw, double *n)
 {
 	const mkShape3 *sh = &b->shape;
 	double r = spow(ce, 2.0 - sh->eps1);
@@ -787,14 +796,15 @@ static mkResult grid_volume(const Prob3 *P, int G, double *vol)
 	int rows = G + 1, cols = 2 * G;
 	double *x = malloc(3 * (size_t)rows * (size_t)cols * sizeof *x);
 	if (!x) return MK_ERR_MEMORY;
-	double ie1 = 1.0 / P->b1.shape.eps1, ie2 = 1.0 / P->b1.shape.eps2;
+	const mkBody3 *lb = lead_body(P);
+	double ie1 = 1.0 / lb->shape.eps1, ie2 = 1.0 / lb->shape.eps2;
 	for (int i = 0; i < rows; ++i) {
 		double ce, se;
 		spaced_angle(-0.5 * MK_PI + MK_PI * i / G, ie1, &ce, &se);
 		for (int j = 0; j < cols; ++j) {
 			double cw, sw, n[3];
 			spaced_angle(-MK_PI + 2.0 * MK_PI * j / cols, ie2, &cw, &sw);
-			body1_normal(&P->b1, ce, se, cw, sw, n);
+			body_normal(lb, ce, se, cw, sw, n);
 			hk3(P, n, x + 3 * ((size_t)i * cols + j));
 		}
 	}
@@ -975,14 +985,14 @@ static double sd_branch(const Prob3 *P, const double *n0, double rho, const doub
 	return fmin(low, *best);
 }
 
-/* Body 1's outward unit normal (world) where the ray of canonical direction
+/* The lead body's outward unit normal (world) where the ray of canonical direction
  * v meets its surface: the gradient of the implicit function Psi there,
- * which depends only on v's direction (Psi is homogeneous), mapped by M1^-T.
+ * which depends only on v's direction (Psi is homogeneous), mapped by M^-T.
  * In this parameter the normal is smooth across the flat faces of a boxy
  * body (exponents 2/eps - 1 > 1), where the support map in n is not. */
 static void ray_normal(const Prob3 *P, const mkMat3 *MinvT, const double *v, double *n)
 {
-	const mkShape3 *sh = &P->b1.shape;
+	const mkShape3 *sh = &lead_body(P)->shape;
 	double s0 = v[0] / sh->a, s1 = v[1] / sh->b, s2 = v[2] / sh->c;
 	double big = fmax(fabs(s0), fmax(fabs(s1), fabs(s2)));
 	s0 /= big, s1 /= big, s2 /= big;
@@ -994,7 +1004,7 @@ static void ray_normal(const Prob3 *P, const mkMat3 *MinvT, const double *v, dou
 	unit3(n);
 }
 
-/* f as a function of body 1's canonical ray direction v. */
+/* f as a function of the lead body's canonical ray direction v. */
 static double ray_f(const Prob3 *P, const mkMat3 *MinvT, const double *v, const double *p, Eval3 *e)
 {
 	double n[3];
@@ -1008,11 +1018,12 @@ static double ray_f(const Prob3 *P, const mkMat3 *MinvT, const double *v, const 
  * not raise f are halved. Raises *e when it finds a larger f. */
 static void ray_newton(const Prob3 *P, const double *p, Eval3 *e)
 {
-	mkMat3 MinvT = mkMat3_Transpose(mkMat3_Inverse(P->b1.M));
+	const mkBody3 *lb = lead_body(P);
+	mkMat3 MinvT = mkMat3_Transpose(mkMat3_Inverse(lb->M));
 	double xc[3], m[3], v[3];
-	const double(*M)[3] = P->b1.M.m;
+	const double(*M)[3] = lb->M.m;
 	for (int j = 0; j < 3; ++j) m[j] = M[0][j] * e->n[0] + M[1][j] * e->n[1] + M[2][j] * e->n[2];
-	canon3(P->b1.shape, m[0], m[1], m[2], xc);
+	canon3(lb->shape, m[0], m[1], m[2], xc);
 	memcpy(v, xc, sizeof v);
 	if (!unit3(v)) return;
 	Eval3 cur;
@@ -1137,8 +1148,8 @@ static void signed_distance3(const Prob3 *P, const double *start, const double *
 	*left = last == HUGE_VAL ? 0.0 : last;
 	/* Newton stalls where the support map is not differentiable (the axis
 	 * normals of a boxy body). At the maximiser the tangential part of
-	 * x_K(n) - p vanishes; where it does not, Newton is run again in body
-	 * 1's ray parameter (smooth there), and if that does not settle it
+	 * x_K(n) - p vanishes; where it does not, Newton is run again in the
+	 * lead body's ray parameter (smooth there), and if that does not settle it
 	 * either, branch and bound on spherical triangles (sph_lower) takes over
 	 * around the best direction, recentred while the best direction lies
 	 * near the hexagon's rim. */

@@ -46,7 +46,7 @@
  *            normal cone in P; where it stops with the tangential residual
  *            of x_K(n) - p above 1e-7 R (near the axis normals of a boxy
  *            body, where the support map is not differentiable), Newton
- *            again in body 1's ray parameter (smooth there), then a branch
+ *            again in the boxier body's ray parameter (smooth there), then a branch
  *            and bound over spherical triangles with tangent-plane lower
  *            bounds (certified within its hexagon, budget 1500
  *            evaluations). The bound is that branch and bound's gap, or
@@ -60,7 +60,7 @@
  *            support points and the circumscribed polygon of their tangent
  *            lines, refined until the two agree to 1e-11 (or a cap).
  *   volume (3D): the triangulated surface of exact support points over
- *            body 1's normals on three spaced grids, Richardson-extrapolated;
+ *            the boxier body's normals on three spaced grids, Richardson-extrapolated;
  *            the bound is the change between two extrapolations (an
  *            estimate; 1e-8 to 3e-6 relative in the tests).
  *   Each bound also carries a rounding allowance, 64 u S (u = 2^-53).
