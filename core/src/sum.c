@@ -275,6 +275,57 @@ mkResult mkSample3_Grid(int n, double *ux, double *uy, double *uz)
 	return MK_OK;
 }
 
+/* The reference code's map of a grid angle (c, s) = (cos t0, sin t0): the
+ * angle t with tan t = sign(tan t0) |tan t0|^(1/eps) in t0's quadrant, as the
+ * unit vector proportional to (sp(c, 1/eps), sp(s, 1/eps)). Both components
+ * are divided by the larger first, so that the power of the larger is 1 and
+ * the vector never underflows to zero (1/eps reaches 1e6). */
+static void spaced_map(double c, double s, double inv_eps, double *cu, double *su)
+{
+	double big = fmax(fabs(c), fabs(s));
+	double x = copysign(pow(fabs(c) / big, inv_eps), c), y = copysign(pow(fabs(s) / big, inv_eps), s);
+	double len = hypot(x, y);
+	*cu = x / len;
+	*su = y / len;
+}
+
+static int eps_ok(double eps)
+{
+	return isfinite(eps) && eps >= MK_EPS_MIN && eps <= MK_EPS_MAX;
+}
+
+mkResult mkSample2_Spaced(int n, double eps, double *ux, double *uy)
+{
+	if (n < 1 || !ux || !uy) return MK_ERR_ARGUMENT;
+	if (!eps_ok(eps)) return MK_ERR_RANGE;
+	for (int k = 0; k < n; ++k) {
+		double c, s;
+		grid_sincos(-MK_PI + 2.0 * MK_PI * k / n, &c, &s);
+		spaced_map(c, s, 1.0 / eps, &ux[k], &uy[k]);
+	}
+	return MK_OK;
+}
+
+mkResult mkSample3_Spaced(int n, double eps1, double eps2, double *ux, double *uy, double *uz)
+{
+	if (n < 2 || n > 46340 || !ux || !uy || !uz) return MK_ERR_ARGUMENT;
+	if (!eps_ok(eps1) || !eps_ok(eps2)) return MK_ERR_RANGE;
+	for (int i = 0; i < n; ++i) {
+		double ce, se;
+		grid_sincos(-0.5 * MK_PI + MK_PI * i / (n - 1), &ce, &se);
+		spaced_map(ce, se, 1.0 / eps1, &ce, &se);
+		for (int j = 0; j < n; ++j) {
+			double cw, sw;
+			grid_sincos(-MK_PI + 2.0 * MK_PI * j / n, &cw, &sw);
+			spaced_map(cw, sw, 1.0 / eps2, &cw, &sw);
+			ux[i * n + j] = ce * cw;
+			uy[i * n + j] = ce * sw;
+			uz[i * n + j] = se;
+		}
+	}
+	return MK_OK;
+}
+
 /* ---- the ellipsoid special forms -------------------------------------------------- */
 
 static double norm2(mkVec2 v) { return hypot(v.x, v.y); }

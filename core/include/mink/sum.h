@@ -99,6 +99,22 @@ MK_API mkVec3 mkSum3_Point(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkPar
 MK_API mkResult mkSample2_Angles(int n, double *ux, double *uy);
 MK_API mkResult mkSample3_Grid(int n, double *ux, double *uy, double *uz);
 
+/* The reference code's "almost equally spaced" sampling of a superellipse
+ * (its SuperEllipse class): each grid angle t0 of mkSample2_Angles(n) is
+ * mapped to t = atan(sign(tan t0) |tan t0|^(1/eps)) in t0's quadrant, and
+ * u_k = (cos t, sin t) is used as B1's surface parameter (MK_PARAM_SURFACE).
+ * Then f(u_k) is the point (a cos t0, b sin t0) pushed radially onto the
+ * superellipse, so the samples follow the ellipse's even spacing instead of
+ * bunching at the axes as eps -> 0. eps is body 1's exponent; the axes stay
+ * exact. 3D: the grid of mkSample3_Grid(n) with the same map applied to eta
+ * (exponent 1/eps1) and to omega (exponent 1/eps2). The reference code's
+ * SuperQuadrics class does not do this (it samples eta and omega evenly);
+ * the 3D map is this library's extension of the 2D one. Return
+ * MK_ERR_ARGUMENT on a bad n or NULL pointer, MK_ERR_RANGE when an exponent
+ * is not a finite number in [MK_EPS_MIN, MK_EPS_MAX]. */
+MK_API mkResult mkSample2_Spaced(int n, double eps, double *ux, double *uy);
+MK_API mkResult mkSample3_Spaced(int n, double eps1, double eps2, double *ux, double *uy, double *uz);
+
 /* ---- the ellipsoid special forms, for any symmetric positive-definite
  * A1, A2 (bodies A_i u, |u| = 1) --------------------------------------------
  * Theorem 1 (eq. ellipsoid_mink_sum_thm_1): x(n) = A1^2 n/|A1 n| + A2^2 n/|A2 n|
