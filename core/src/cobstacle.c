@@ -70,6 +70,9 @@ static int grow_i(int **p, int *cap, int need)
 	return 1;
 }
 
+/* Open-addressing hash from 64-bit keys to non-negative ints. */
+typedef struct Hash { uint64_t *key; int *val; int cap, count; } Hash;
+
 /* The scratch space of one thread, reused from boundary to boundary. */
 typedef struct Work {
 	/* vertices: normal n and point p */
@@ -80,15 +83,20 @@ typedef struct Work {
 	double *m[3], *q[3];       /* batch normals and their points */
 	int mcap[6];
 	int *tri, tcap, *tri2, t2cap, *leaf, lcap; /* 3D triangles, 3 ints each */
-	uint64_t *hkey; int *hval; int hcap, hcount; /* 3D edge -> midpoint */
+	Hash edges;                /* 3D: undirected edge -> midpoint vertex */
+	Hash dedges;               /* 3D: directed edge a -> b -> its triangle */
 	int *poly, pcap;
+	double *o[3]; int ocap[3]; /* 3D outer vertices */
+	int *fin, fcap;            /* 3D final (conforming) triangles */
 } Work;
 
 static void work_free(Work *w)
 {
 	for (int i = 0; i < 3; ++i) { free(w->n[i]); free(w->p[i]); free(w->m[i]); free(w->q[i]); }
 	free(w->next); free(w->act); free(w->act2); free(w->tri); free(w->tri2); free(w->leaf);
-	free(w->hkey); free(w->hval); free(w->poly);
+	free(w->edges.key); free(w->edges.val); free(w->dedges.key); free(w->dedges.val); free(w->poly);
+	for (int i = 0; i < 3; ++i) free(w->o[i]);
+	free(w->fin);
 	memset(w, 0, sizeof *w);
 }
 
@@ -321,6 +329,8 @@ static uint64_t edge_key(int a, int b)
 	return (uint64_t)lo << 32 | hi;
 }
 
+static uint64_t dedge_key(int a, int b) { return (uint64_t)(uint32_t)a << 32 | (uint32_t)b; }
+
 static uint64_t hash64(uint64_t z)
 {
 	z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
@@ -328,39 +338,51 @@ static uint64_t hash64(uint64_t z)
 	return z ^ (z >> 31);
 }
 
-static int edge_find(const Work *w, int a, int b)
+static void hash_clear(Hash *h)
 {
-	if (!w->hcap) return -1;
-	uint64_t k = edge_key(a, b);
-	for (uint64_t h = hash64(k) & (uint64_t)(w->hcap - 1);; h = (h + 1) & (uint64_t)(w->hcap - 1)) {
-		if (w->hval[h] < 0) return -1;
-		if (w->hkey[h] == k) return w->hval[h];
+	h->count = 0;
+	for (int i = 0; i < h->cap; ++i) h->val[i] = -1;
+}
+
+/* Values: -1 marks an empty slot, -2 a removed entry (probing goes on). */
+static int hash_slot(const Hash *h, uint64_t k)
+{
+	if (!h->cap) return -1;
+	for (uint64_t i = hash64(k) & (uint64_t)(h->cap - 1);; i = (i + 1) & (uint64_t)(h->cap - 1)) {
+		if (h->val[i] == -1) return -1;
+		if (h->val[i] >= 0 && h->key[i] == k) return (int)i;
 	}
 }
 
-static int edge_put(Work *w, uint64_t k, int v)
+static int hash_find(const Hash *h, uint64_t k)
 {
-	if (2 * (w->hcount + 1) > w->hcap) {
-		int nc = w->hcap ? 2 * w->hcap : 1024;
+	int i = hash_slot(h, k);
+	return i < 0 ? -1 : h->val[i];
+}
+
+static int hash_put(Hash *h, uint64_t k, int v)
+{
+	if (2 * (h->count + 1) > h->cap) {
+		int nc = h->cap ? 2 * h->cap : 1024;
 		uint64_t *nk = malloc((size_t)nc * sizeof *nk);
 		int *nv = malloc((size_t)nc * sizeof *nv);
 		if (!nk || !nv) { free(nk); free(nv); return 0; }
 		for (int i = 0; i < nc; ++i) nv[i] = -1;
-		for (int i = 0; i < w->hcap; ++i) {
-			if (w->hval[i] < 0) continue;
-			uint64_t h = hash64(w->hkey[i]) & (uint64_t)(nc - 1);
-			while (nv[h] >= 0) h = (h + 1) & (uint64_t)(nc - 1);
-			nk[h] = w->hkey[i];
-			nv[h] = w->hval[i];
+		for (int i = 0; i < h->cap; ++i) {
+			if (h->val[i] < 0) continue; /* removed entries are dropped */
+			uint64_t j = hash64(h->key[i]) & (uint64_t)(nc - 1);
+			while (nv[j] >= 0) j = (j + 1) & (uint64_t)(nc - 1);
+			nk[j] = h->key[i];
+			nv[j] = h->val[i];
 		}
-		free(w->hkey); free(w->hval);
-		w->hkey = nk; w->hval = nv; w->hcap = nc;
+		free(h->key); free(h->val);
+		h->key = nk; h->val = nv; h->cap = nc;
 	}
-	uint64_t h = hash64(k) & (uint64_t)(w->hcap - 1);
-	while (w->hval[h] >= 0) h = (h + 1) & (uint64_t)(w->hcap - 1);
-	w->hkey[h] = k;
-	w->hval[h] = v;
-	++w->hcount;
+	uint64_t j = hash64(k) & (uint64_t)(h->cap - 1);
+	while (h->val[j] != -1) j = (j + 1) & (uint64_t)(h->cap - 1);
+	h->key[j] = k;
+	h->val[j] = v;
+	++h->count;
 	return 1;
 }
 
@@ -368,16 +390,21 @@ static mkVec3 vn(const Work *w, int i) { return mkVec3_Make(w->n[0][i], w->n[1][
 static mkVec3 vp(const Work *w, int i) { return mkVec3_Make(w->p[0][i], w->p[1][i], w->p[2][i]); }
 static double size3(mkVec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
 
+static int new_normal(Work *w, mkVec3 u, int *nv)
+{
+	if (!work_verts(w, *nv + 1, 3)) return -1;
+	int m = (*nv)++;
+	w->n[0][m] = u.x; w->n[1][m] = u.y; w->n[2][m] = u.z;
+	return m;
+}
+
 /* The midpoint normal of edge (a, b), created on first use; -1 on memory. */
 static int midpoint(Work *w, int a, int b, int *nv)
 {
-	int m = edge_find(w, a, b);
+	int m = hash_find(&w->edges, edge_key(a, b));
 	if (m >= 0) return m;
-	if (!work_verts(w, *nv + 1, 3)) return -1;
-	m = (*nv)++;
-	mkVec3 u = mkVec3_Normalize(mkVec3_Add(vn(w, a), vn(w, b)));
-	w->n[0][m] = u.x; w->n[1][m] = u.y; w->n[2][m] = u.z;
-	if (!edge_put(w, edge_key(a, b), m)) return -1;
+	m = new_normal(w, mkVec3_Normalize(mkVec3_Add(vn(w, a), vn(w, b))), nv);
+	if (m < 0 || !hash_put(&w->edges, edge_key(a, b), m)) return -1;
 	return m;
 }
 
@@ -385,6 +412,13 @@ static int midpoint(Work *w, int a, int b, int *nv)
  * both h_K(u) - h_P(u) and h_Q(u) - h_K(u) are at most
  *   max over pairs of <n_k - n_j, p_k - p_j> / (3 d0),
  * d0 the distance from the origin to the plane through the three normals. */
+static double tri_d0(const Work *w, int a, int b, int c)
+{
+	mkVec3 na = vn(w, a);
+	mkVec3 nu = mkVec3_Normalize(mkVec3_Cross(mkVec3_Sub(vn(w, b), na), mkVec3_Sub(vn(w, c), na)));
+	return fabs(mkVec3_Dot(na, nu));
+}
+
 static double tri_bound(const Work *w, int a, int b, int c)
 {
 	int v[3] = {a, b, c};
@@ -395,22 +429,44 @@ static double tri_bound(const Work *w, int a, int b, int c)
 		if (t > C) C = t;
 		sz += size3(vp(w, k));
 	}
-	mkVec3 na = vn(w, a);
-	mkVec3 nu = mkVec3_Normalize(mkVec3_Cross(mkVec3_Sub(vn(w, b), na), mkVec3_Sub(vn(w, c), na)));
-	double d0 = fabs(mkVec3_Dot(na, nu));
-	return C / (3.0 * d0) + ROUND_REL * sz;
+	return C / (3.0 * tri_d0(w, a, b, c)) + ROUND_REL * sz;
 }
 
 static double vangle(mkVec3 a, mkVec3 b) { return atan2(mkVec3_Length(mkVec3_Cross(a, b)), mkVec3_Dot(a, b)); }
 
-/* Adaptive (splits < 0) or uniform boundary; vertices 0..*count-1 in w->p,
- * leaf triangles in w->leaf (*nleaf of them). */
+static mkResult eval_pending(Work *w, mkBody3 b1, mkBody3 b2, mkImpl impl, int *neval, int nv)
+{
+	if (nv <= *neval) return MK_OK;
+	mkResult r = eval3(b1, b2, impl, w->n[0] + *neval, w->n[1] + *neval, w->n[2] + *neval, nv - *neval,
+		w->p[0] + *neval, w->p[1] + *neval, w->p[2] + *neval);
+	*neval = nv;
+	return r;
+}
+
+/* The vertices on edge a -> b strictly between them (midpoints made by
+ * finer neighbours), in order, appended to w->poly. */
+static int chain(Work *w, int a, int b, int *len)
+{
+	int m = hash_find(&w->edges, edge_key(a, b));
+	if (m < 0) return 1;
+	if (!chain(w, a, m, len)) return 0;
+	if (!grow_i(&w->poly, &w->pcap, *len + 1)) return 0;
+	w->poly[(*len)++] = m;
+	return chain(w, m, b, len);
+}
+
+/* Adaptive (splits < 0) or uniform refinement of the octahedron of normals,
+ * then (conform = 1) the conforming closed triangulation: a leaf whose
+ * edges carry vertices of finer neighbours gets a new normal at its
+ * centroid and is fanned from it. Vertices 0..*count-1 (w->n, w->p), final triangles in
+ * w->fin (*nfin, counter-clockwise from outside). *error: the largest leaf
+ * bound (which holds on the final triangulation too: Proof 4 needs only the
+ * leaf's corners). *d0min: the smallest d0 of the leaves. */
 static mkResult run3(Work *w, mkBody3 b1, mkBody3 b2, mkImpl impl, double tol, int max_points, int splits,
-	int *count, int *nleaf, double *error)
+	int conform, int *count, int *nfin, double *error, double *d0min)
 {
 	static const double oct[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-	w->hcount = 0;
-	for (int i = 0; i < w->hcap; ++i) w->hval[i] = -1;
+	hash_clear(&w->edges);
 	if (!work_verts(w, 6, 3) || !grow_i(&w->tri, &w->tcap, 24)) return MK_ERR_MEMORY;
 	for (int i = 0; i < 6; ++i)
 		for (int d = 0; d < 3; ++d) w->n[d][i] = oct[i][d];
@@ -424,15 +480,11 @@ static mkResult run3(Work *w, mkBody3 b1, mkBody3 b2, mkImpl impl, double tol, i
 		++na;
 	}
 	int nv = 6, neval = 0, nl = 0, level = 0;
-	double maxerr = 0.0;
+	double maxerr = 0.0, dmin = 1.0;
+	mkResult r;
 	while (na > 0) {
-		if (nv > neval) {
-			if (!work_verts(w, nv, 3)) return MK_ERR_MEMORY;
-			mkResult r = eval3(b1, b2, impl, w->n[0] + neval, w->n[1] + neval, w->n[2] + neval, nv - neval,
-				w->p[0] + neval, w->p[1] + neval, w->p[2] + neval);
-			if (r != MK_OK) return r;
-			neval = nv;
-		}
+		if (!work_verts(w, nv, 3)) return MK_ERR_MEMORY;
+		if ((r = eval_pending(w, b1, b2, impl, &neval, nv)) != MK_OK) return r;
 		int nn = 0;
 		for (int t = 0; t < na; ++t) {
 			int a = w->tri[3 * t], b = w->tri[3 * t + 1], c = w->tri[3 * t + 2];
@@ -448,6 +500,8 @@ static mkResult run3(Work *w, mkBody3 b1, mkBody3 b2, mkImpl impl, double tol, i
 			}
 			if (!split) {
 				if (err > maxerr || err != err) maxerr = err;
+				double d0 = tri_d0(w, a, b, c);
+				if (d0 < dmin) dmin = d0;
 				if (!grow_i(&w->leaf, &w->lcap, 3 * (nl + 1))) return MK_ERR_MEMORY;
 				w->leaf[3 * nl] = a; w->leaf[3 * nl + 1] = b; w->leaf[3 * nl + 2] = c;
 				++nl;
@@ -466,78 +520,365 @@ static mkResult run3(Work *w, mkBody3 b1, mkBody3 b2, mkImpl impl, double tol, i
 		na = nn;
 		++level;
 	}
-	*count = nv;
-	*nleaf = nl;
-	*error = maxerr;
-	return MK_OK;
-}
-
-/* The vertices on edge a -> b strictly between them (midpoints made by
- * finer neighbours), in order. */
-static int chain(Work *w, int a, int b, int *len)
-{
-	int m = edge_find(w, a, b);
-	if (m < 0) return 1;
-	if (!chain(w, a, m, len)) return 0;
-	if (!grow_i(&w->poly, &w->pcap, *len + 1)) return 0;
-	w->poly[(*len)++] = m;
-	return chain(w, m, b, len);
-}
-
-/* Triangles of the closed surface: each leaf with the vertices its finer
- * neighbours put on its edges, fanned from the corner whose two edges carry
- * the fewest of them. faces: 3 ints per triangle; returns the count or -1. */
-static int faces3(Work *w, int nleaf, int **faces, int *fcap)
-{
+	/* the conforming triangulation (outer bounds only) */
 	int nf = 0;
-	for (int t = 0; t < nleaf; ++t) {
+	for (int t = 0; t < nl && conform; ++t) {
 		int v[3] = {w->leaf[3 * t], w->leaf[3 * t + 1], w->leaf[3 * t + 2]};
-		int start[4], len = 0;
+		int len = 0;
 		for (int e = 0; e < 3; ++e) {
-			if (!grow_i(&w->poly, &w->pcap, len + 1)) return -1;
-			start[e] = len;
+			if (!grow_i(&w->poly, &w->pcap, len + 1)) return MK_ERR_MEMORY;
 			w->poly[len++] = v[e];
-			if (!chain(w, v[e], v[(e + 1) % 3], &len)) return -1;
+			if (!chain(w, v[e], v[(e + 1) % 3], &len)) return MK_ERR_MEMORY;
 		}
-		start[3] = len;
-		/* hanging vertices on edge e: start[e+1] - start[e] - 1; corner e
-		 * touches edges e and e-1 */
-		int best = 0, bestc = 1 << 30;
-		for (int e = 0; e < 3; ++e) {
-			int c = (start[e + 1] - start[e] - 1) + (start[(e + 2) % 3 + 1] - start[(e + 2) % 3] - 1);
-			if (c < bestc) { bestc = c; best = e; }
+		if (!grow_i(&w->fin, &w->fcap, 3 * (nf + len))) return MK_ERR_MEMORY;
+		if (len == 3) {
+			for (int d = 0; d < 3; ++d) w->fin[3 * nf + d] = v[d];
+			++nf;
+			continue;
 		}
-		int s = start[best];
-		if (!grow_i(faces, fcap, 3 * (nf + len))) return -1;
-		for (int k = 1; k + 1 < len; ++k) {
-			(*faces)[3 * nf] = w->poly[s];
-			(*faces)[3 * nf + 1] = w->poly[(s + k) % len];
-			(*faces)[3 * nf + 2] = w->poly[(s + k + 1) % len];
+		mkVec3 cen = mkVec3_Normalize(mkVec3_Add(mkVec3_Add(vn(w, v[0]), vn(w, v[1])), vn(w, v[2])));
+		int c = new_normal(w, cen, &nv);
+		if (c < 0) return MK_ERR_MEMORY;
+		for (int k = 0; k < len; ++k) {
+			w->fin[3 * nf] = c;
+			w->fin[3 * nf + 1] = w->poly[k];
+			w->fin[3 * nf + 2] = w->poly[(k + 1) % len];
 			++nf;
 		}
 	}
+	if ((r = eval_pending(w, b1, b2, impl, &neval, nv)) != MK_OK) return r;
+	*count = nv;
+	*nfin = nf;
+	*error = maxerr;
+	*d0min = dmin;
+	return MK_OK;
+}
+
+/* The vertex where the tangent planes of triangle t's normals meet, solved
+ * relative to its first corner's point. */
+static mkVec3 tangent_point(const Work *w, int a, int b, int c)
+{
+	mkVec3 na = vn(w, a), nb = vn(w, b), nc = vn(w, c), pa = vp(w, a);
+	double rb = mkVec3_Dot(nb, mkVec3_Sub(vp(w, b), pa)), rc = mkVec3_Dot(nc, mkVec3_Sub(vp(w, c), pa));
+	double det = mkVec3_Dot(na, mkVec3_Cross(nb, nc));
+	mkVec3 y = mkVec3_Scale(mkVec3_Add(mkVec3_Scale(mkVec3_Cross(nc, na), rb), mkVec3_Scale(mkVec3_Cross(na, nb), rc)),
+		1.0 / det);
+	return mkVec3_Add(pa, y);
+}
+
+/* 1 when the edge a -> b of triangle (a, b, c), whose other side is
+ * (b, a, d), should be flipped: inner, when p_d lies outside the plane of
+ * p_a, p_b, p_c (the surface is not convex there); outer, when the tangent
+ * vertex of (a, b, c) lies outside the tangent plane of d (the planes'
+ * polytope has another face structure there). */
+static int wants_flip(const Work *w, mkBound bound, int a, int b, int c, int d)
+{
+	if (bound == MK_BOUND_INNER) {
+		mkVec3 pa = vp(w, a);
+		mkVec3 nrm = mkVec3_Cross(mkVec3_Sub(vp(w, b), pa), mkVec3_Sub(vp(w, c), pa));
+		mkVec3 e = mkVec3_Sub(vp(w, d), pa);
+		double sc = mkVec3_Length(nrm) * mkVec3_Length(e);
+		return mkVec3_Dot(nrm, e) > 1e-12 * sc;
+	}
+	mkVec3 v = tangent_point(w, a, b, c), pd = vp(w, d);
+	double ex = mkVec3_Dot(vn(w, d), mkVec3_Sub(v, pd));
+	return ex > 1e-12 * (size3(v) + size3(pd));
+}
+
+static double det3(mkVec3 a, mkVec3 b, mkVec3 c) { return mkVec3_Dot(a, mkVec3_Cross(b, c)); }
+
+/* Lawson flips of the final triangulation (w->fin) until every edge is
+ * locally convex for `bound` or can no longer be flipped (the quadrilateral
+ * of normals is not convex, or a pass limit). Every flip keeps a partition
+ * of the sphere of normals into proper spherical triangles. Where a flip is
+ * blocked the outer polytope's excess enters its certificate. Used for the
+ * outer polytope; the inner one takes its faces from hull3. The certificates do not
+ * depend on the faces (Proofs 4 and 5 use the normals' leaf triangles and,
+ * for the outer polytope, the measured excess), only the output's face
+ * structure does. */
+static int flip_all(Work *w, int nfin, mkBound bound)
+{
+	hash_clear(&w->dedges);
+	for (int t = 0; t < nfin; ++t)
+		for (int e = 0; e < 3; ++e)
+			if (!hash_put(&w->dedges, dedge_key(w->fin[3 * t + e], w->fin[3 * t + (e + 1) % 3]), t)) return 0;
+	for (int pass = 0; pass < 64; ++pass) {
+		int flips = 0;
+		for (int t = 0; t < nfin; ++t)
+			for (int e = 0; e < 3; ++e) {
+				int *T = w->fin + 3 * t;
+				int a = T[e], b = T[(e + 1) % 3], c = T[(e + 2) % 3];
+				int u = hash_find(&w->dedges, dedge_key(b, a));
+				if (u < 0) continue;
+				int *U = w->fin + 3 * u, f = 0;
+				while (U[f] != b) ++f;
+				int d = U[(f + 2) % 3];
+				if (d == c || !wants_flip(w, bound, a, b, c, d)) continue;
+				/* new triangles (a, d, c) and (d, b, c): both must be proper
+				 * spherical triangles of normals, so that the triangulation
+				 * stays a partition of the sphere of normals */
+				mkVec3 na = vn(w, a), nb = vn(w, b), nc = vn(w, c), nd = vn(w, d);
+				if (!(det3(na, nd, nc) > 0.0 && det3(nd, nb, nc) > 0.0)) continue;
+				if (hash_find(&w->dedges, dedge_key(d, c)) >= 0) continue; /* edge exists already */
+				int ks[6][2] = {{a, b}, {b, c}, {c, a}, {b, a}, {a, d}, {d, b}};
+				for (int k = 0; k < 6; ++k) w->dedges.val[hash_slot(&w->dedges, dedge_key(ks[k][0], ks[k][1]))] = -2;
+				T[0] = a; T[1] = d; T[2] = c;
+				U[0] = d; U[1] = b; U[2] = c;
+				int ok = hash_put(&w->dedges, dedge_key(a, d), t) && hash_put(&w->dedges, dedge_key(d, c), t)
+					&& hash_put(&w->dedges, dedge_key(c, a), t) && hash_put(&w->dedges, dedge_key(d, b), u)
+					&& hash_put(&w->dedges, dedge_key(b, c), u) && hash_put(&w->dedges, dedge_key(c, d), u);
+				if (!ok) return 0;
+				++flips;
+				break; /* triangle t changed: its edges are looked at on the next pass */
+			}
+		if (!flips) break;
+	}
+	return 1;
+}
+
+/* The outer polytope (Proof 5 of docs/scene.md): one vertex per final
+ * triangle, where the tangent planes of its three normals meet (solved
+ * relative to the first corner's point), and for each normal the face of
+ * the vertices of its triangles in turn around it. Returns the faces
+ * count (triangles in *faces) or -1; *excess: the largest amount by which a
+ * vertex lies outside some tangent plane (0 for a regular triangulation,
+ * up to rounding). */
+static int outer3(Work *w, int nv, int nfin, int **faces, int *fcap, double *excess)
+{
+	for (int d = 0; d < 3; ++d)
+		if (!grow_d(&w->o[d], &w->ocap[d], nfin)) return -1;
+	if (!flip_all(w, nfin, MK_BOUND_OUTER)) return -1;
+	for (int t = 0; t < nfin; ++t) {
+		mkVec3 v = tangent_point(w, w->fin[3 * t], w->fin[3 * t + 1], w->fin[3 * t + 2]);
+		w->o[0][t] = v.x; w->o[1][t] = v.y; w->o[2][t] = v.z;
+	}
+	double ex = 0.0;
+	for (int k = 0; k < nv; ++k) {
+		mkVec3 n = vn(w, k);
+		double h = mkVec3_Dot(n, vp(w, k));
+		for (int t = 0; t < nfin; ++t) {
+			double e = n.x * w->o[0][t] + n.y * w->o[1][t] + n.z * w->o[2][t] - h;
+			if (e > ex || e != e) ex = e;
+		}
+	}
+	*excess = ex;
+	hash_clear(&w->dedges);
+	for (int t = 0; t < nfin; ++t)
+		for (int e = 0; e < 3; ++e)
+			if (!hash_put(&w->dedges, dedge_key(w->fin[3 * t + e], w->fin[3 * t + (e + 1) % 3]), t)) return -1;
+	/* each normal's face: from a triangle (k, a, b) on to the one holding k -> b */
+	int *start = malloc((size_t)nv * sizeof *start);
+	if (!start) return -1;
+	for (int k = 0; k < nv; ++k) start[k] = -1;
+	for (int t = 0; t < nfin; ++t)
+		for (int e = 0; e < 3; ++e)
+			if (start[w->fin[3 * t + e]] < 0) start[w->fin[3 * t + e]] = t;
+	int nf = 0;
+	for (int k = 0; k < nv; ++k) {
+		if (start[k] < 0) continue;
+		int len = 0, t = start[k];
+		do {
+			if (!grow_i(&w->poly, &w->pcap, len + 1)) { free(start); return -1; }
+			w->poly[len++] = t;
+			int e = 0;
+			while (w->fin[3 * t + e] != k) ++e;
+			int b = w->fin[3 * t + (e + 2) % 3];
+			t = hash_find(&w->dedges, dedge_key(k, b));
+		} while (t >= 0 && t != start[k] && len <= nfin);
+		if (t < 0 || len > nfin) { free(start); return -1; } /* not a closed surface: cannot happen */
+		if (!grow_i(faces, fcap, 3 * (nf + len))) { free(start); return -1; }
+		for (int j = 1; j + 1 < len; ++j) {
+			(*faces)[3 * nf] = w->poly[0];
+			(*faces)[3 * nf + 1] = w->poly[j];
+			(*faces)[3 * nf + 2] = w->poly[j + 1];
+			++nf;
+		}
+	}
+	free(start);
 	return nf;
 }
 
-static mkResult single3(mkBody3 b1, mkBody3 b2, double tol, int max_points, int splits, mkImpl impl,
+/* The convex hull of the points w->p[0..n) (incremental, in index order, so
+ * deterministic): triangles counter-clockwise from outside into *faces;
+ * returns their count, or -1 on memory or a degenerate point set. A point
+ * within 1e-11 of the points' size of a face's plane counts as on the
+ * hull's side of it and is left out of the faces (it lies in the hull). */
+static int hull3(Work *w, int n, int **faces, int *fcap)
+{
+	if (n < 4) return -1;
+	double scale = 0.0;
+	for (int k = 0; k < n; ++k) scale = fmax(scale, size3(vp(w, k)));
+	const double eps = 1e-11 * (scale > 0.0 ? scale : 1.0);
+	/* a first tetrahedron of far-apart points */
+	int i0 = 0;
+	for (int k = 1; k < n; ++k) if (w->p[0][k] < w->p[0][i0]) i0 = k;
+	int i1 = -1, i2 = -1, i3 = -1;
+	double best = 0.0;
+	for (int k = 0; k < n; ++k) {
+		double d = mkVec3_Length(mkVec3_Sub(vp(w, k), vp(w, i0)));
+		if (d > best) { best = d; i1 = k; }
+	}
+	if (i1 < 0) return -1;
+	best = 0.0;
+	mkVec3 e01 = mkVec3_Sub(vp(w, i1), vp(w, i0));
+	for (int k = 0; k < n; ++k) {
+		double d = mkVec3_Length(mkVec3_Cross(e01, mkVec3_Sub(vp(w, k), vp(w, i0))));
+		if (d > best) { best = d; i2 = k; }
+	}
+	if (i2 < 0) return -1;
+	mkVec3 nrm = mkVec3_Cross(e01, mkVec3_Sub(vp(w, i2), vp(w, i0)));
+	best = 0.0;
+	for (int k = 0; k < n; ++k) {
+		double d = fabs(mkVec3_Dot(nrm, mkVec3_Sub(vp(w, k), vp(w, i0))));
+		if (d > best) { best = d; i3 = k; }
+	}
+	if (i3 < 0 || best <= eps * mkVec3_Length(nrm)) return -1;
+	int cap = 64, nf = 0;
+	int *F = malloc((size_t)cap * 3 * sizeof *F);
+	double *P = malloc((size_t)cap * 4 * sizeof *P);
+	char *alive = malloc((size_t)cap);
+	int *stack = NULL, scap = 0, *vis = NULL, vcap = 0, *hor = NULL, hcap = 0;
+	if (!F || !P || !alive) goto fail;
+	hash_clear(&w->dedges);
+	mkVec3 inside = mkVec3_Scale(mkVec3_Add(mkVec3_Add(vp(w, i0), vp(w, i1)), mkVec3_Add(vp(w, i2), vp(w, i3))), 0.25);
+#define ADD_FACE(A, B, C) do { \
+		int a_ = (A), b_ = (B), c_ = (C); \
+		if (nf == cap) { \
+			cap *= 2; \
+			int *nF = realloc(F, (size_t)cap * 3 * sizeof *F); if (!nF) goto fail; F = nF; \
+			double *nP = realloc(P, (size_t)cap * 4 * sizeof *P); if (!nP) goto fail; P = nP; \
+			char *nA = realloc(alive, (size_t)cap); if (!nA) goto fail; alive = nA; \
+		} \
+		mkVec3 pa_ = vp(w, a_); \
+		mkVec3 nn_ = mkVec3_Normalize(mkVec3_Cross(mkVec3_Sub(vp(w, b_), pa_), mkVec3_Sub(vp(w, c_), pa_))); \
+		if (mkVec3_Dot(nn_, mkVec3_Sub(inside, pa_)) > 0.0) { int t_ = b_; b_ = c_; c_ = t_; nn_ = mkVec3_Neg(nn_); } \
+		F[3 * nf] = a_; F[3 * nf + 1] = b_; F[3 * nf + 2] = c_; \
+		P[4 * nf] = nn_.x; P[4 * nf + 1] = nn_.y; P[4 * nf + 2] = nn_.z; P[4 * nf + 3] = mkVec3_Dot(nn_, pa_); \
+		alive[nf] = 1; \
+		if (!hash_put(&w->dedges, dedge_key(a_, b_), nf) || !hash_put(&w->dedges, dedge_key(b_, c_), nf) \
+			|| !hash_put(&w->dedges, dedge_key(c_, a_), nf)) goto fail; \
+		++nf; \
+	} while (0)
+	ADD_FACE(i0, i1, i2); ADD_FACE(i0, i1, i3); ADD_FACE(i0, i2, i3); ADD_FACE(i1, i2, i3);
+	for (int k = 0; k < n; ++k) {
+		if (k == i0 || k == i1 || k == i2 || k == i3) continue;
+		mkVec3 p = vp(w, k);
+		int f0 = -1;
+		double dmax = eps;
+		for (int f = 0; f < nf; ++f) {
+			if (!alive[f]) continue;
+			double d = P[4 * f] * p.x + P[4 * f + 1] * p.y + P[4 * f + 2] * p.z - P[4 * f + 3];
+			if (d > dmax) { dmax = d; f0 = f; }
+		}
+		if (f0 < 0) continue; /* inside or on the hull */
+		/* the connected set of faces that see p, from the one that sees it most */
+		int nvis = 0, ns = 0;
+		if (!grow_i(&stack, &scap, 1)) goto fail;
+		stack[ns++] = f0;
+		alive[f0] = 2; /* 2: visible, being removed */
+		while (ns) {
+			int f = stack[--ns];
+			if (!grow_i(&vis, &vcap, nvis + 1)) goto fail;
+			vis[nvis++] = f;
+			for (int e = 0; e < 3; ++e) {
+				int g = hash_find(&w->dedges, dedge_key(F[3 * f + (e + 1) % 3], F[3 * f + e]));
+				if (g < 0 || alive[g] != 1) continue;
+				double d = P[4 * g] * p.x + P[4 * g + 1] * p.y + P[4 * g + 2] * p.z - P[4 * g + 3];
+				if (d > eps) {
+					alive[g] = 2;
+					if (!grow_i(&stack, &scap, ns + 1)) goto fail;
+					stack[ns++] = g;
+				}
+			}
+		}
+		/* horizon: edges of visible faces whose other side stays */
+		int nh = 0;
+		for (int v = 0; v < nvis; ++v) {
+			int f = vis[v];
+			for (int e = 0; e < 3; ++e) {
+				int a = F[3 * f + e], b = F[3 * f + (e + 1) % 3];
+				int g = hash_find(&w->dedges, dedge_key(b, a));
+				if (g >= 0 && alive[g] == 1) {
+					if (!grow_i(&hor, &hcap, 2 * (nh + 1))) goto fail;
+					hor[2 * nh] = a; hor[2 * nh + 1] = b;
+					++nh;
+				}
+			}
+		}
+		for (int v = 0; v < nvis; ++v) {
+			int f = vis[v];
+			alive[f] = 0;
+			for (int e = 0; e < 3; ++e)
+				w->dedges.val[hash_slot(&w->dedges, dedge_key(F[3 * f + e], F[3 * f + (e + 1) % 3]))] = -2;
+		}
+		for (int h = 0; h < nh; ++h) {
+			ADD_FACE(hor[2 * h], hor[2 * h + 1], k);
+		}
+	}
+#undef ADD_FACE
+	int out = 0;
+	for (int f = 0; f < nf; ++f) out += alive[f] == 1;
+	if (!grow_i(faces, fcap, 3 * out + 3)) goto fail;
+	out = 0;
+	for (int f = 0; f < nf; ++f) {
+		if (alive[f] != 1) continue;
+		for (int d = 0; d < 3; ++d) (*faces)[3 * out + d] = F[3 * f + d];
+		++out;
+	}
+	free(F); free(P); free(alive); free(stack); free(vis); free(hor);
+	return out;
+fail:
+	free(F); free(P); free(alive); free(stack); free(vis); free(hor);
+	return -1;
+}
+
+/* One 3D boundary into w: inner (points w->p, triangles w->fin) or outer
+ * (points w->o, triangles in *faces). */
+static mkResult boundary3(Work *w, mkBody3 b1, mkBody3 b2, mkImpl impl, mkBound bound, double tol, int max_points,
+	int splits, int want_faces, int *count, int *nfaces, int **faces, int *fcap, double *error)
+{
+	int nv = 0, nfin = 0;
+	double err = 0.0, d0 = 1.0;
+	mkResult r = run3(w, b1, b2, impl, tol, max_points, splits, bound == MK_BOUND_OUTER, &nv, &nfin, &err, &d0);
+	if (r != MK_OK) return r;
+	if (bound == MK_BOUND_INNER) {
+		int nf = want_faces ? hull3(w, nv, faces, fcap) : 0;
+		if (nf < 0) return MK_ERR_MEMORY;
+		*count = nv;
+		*nfaces = nf;
+		*error = err;
+		return MK_OK;
+	}
+	double ex = 0.0;
+	int nf = outer3(w, nv, nfin, faces, fcap, &ex);
+	if (nf < 0) return MK_ERR_MEMORY;
+	*count = nfin;
+	*nfaces = nf;
+	*error = err + ex / d0;
+	return MK_OK;
+}
+
+static mkResult single3(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int max_points, int splits, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error)
 {
-	if (!x || !y || !z || !cap || !faces || !face_cap || !count || !face_count || !error) return MK_ERR_ARGUMENT;
+	if (!x || !y || !z || !cap || !faces || !face_cap || !count || !face_count || !error
+		|| (bound != MK_BOUND_INNER && bound != MK_BOUND_OUTER))
+		return MK_ERR_ARGUMENT;
 	Work w;
 	memset(&w, 0, sizeof w);
-	int n = 0, nl = 0;
+	int n = 0, nf = 0;
 	double e = 0.0;
-	mkResult r = run3(&w, b1, b2, impl, tol, max_points, splits, &n, &nl, &e);
+	mkResult r = boundary3(&w, b1, b2, impl, bound, tol, max_points, splits, 1, &n, &nf, faces, face_cap, &e);
 	if (r == MK_OK) {
 		int c1 = *cap, c2 = *cap, c3 = *cap;
-		int nf = faces3(&w, nl, faces, face_cap);
-		if (nf < 0 || !grow_d(x, &c1, n) || !grow_d(y, &c2, n) || !grow_d(z, &c3, n)) r = MK_ERR_MEMORY;
+		if (!grow_d(x, &c1, n) || !grow_d(y, &c2, n) || !grow_d(z, &c3, n)) r = MK_ERR_MEMORY;
 		else {
 			*cap = c1 < c2 ? (c1 < c3 ? c1 : c3) : (c2 < c3 ? c2 : c3);
-			memcpy(*x, w.p[0], (size_t)n * sizeof(double));
-			memcpy(*y, w.p[1], (size_t)n * sizeof(double));
-			memcpy(*z, w.p[2], (size_t)n * sizeof(double));
+			double *const *src = bound == MK_BOUND_INNER ? w.p : w.o;
+			memcpy(*x, src[0], (size_t)n * sizeof(double));
+			memcpy(*y, src[1], (size_t)n * sizeof(double));
+			memcpy(*z, src[2], (size_t)n * sizeof(double));
 			*count = n;
 			*face_count = nf;
 			*error = e;
@@ -547,20 +888,20 @@ static mkResult single3(mkBody3 b1, mkBody3 b2, double tol, int max_points, int 
 	return r;
 }
 
-mkResult mkCObstacle3_Adaptive(mkBody3 b1, mkBody3 b2, double tol, int max_points, mkImpl impl,
+mkResult mkCObstacle3_Adaptive(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int max_points, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error)
 {
 	if (!(tol > 0.0) || !isfinite(tol) || max_points < 6) return MK_ERR_ARGUMENT;
-	return single3(b1, b2, tol, max_points, -1, impl, x, y, z, cap, faces, face_cap, count, face_count, error);
+	return single3(b1, b2, bound, tol, max_points, -1, impl, x, y, z, cap, faces, face_cap, count, face_count, error);
 }
 
-mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, int splits, mkImpl impl,
+mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, mkBound bound, int splits, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error)
 {
 	if (splits < 0 || splits > MAX_SPLITS) return MK_ERR_ARGUMENT;
-	return single3(b1, b2, 1.0, 1 << 30, splits, impl, x, y, z, cap, faces, face_cap, count, face_count, error);
+	return single3(b1, b2, bound, 1.0, 1 << 30, splits, impl, x, y, z, cap, faces, face_cap, count, face_count, error);
 }
 
 /* ---- scenes on threads ----------------------------------------------------------------- */
@@ -643,15 +984,15 @@ static mkResult do_task(Run *R, Work *w, long task)
 				px = w->q[0]; py = w->q[1]; pz = w->q[2];
 			} else {
 				double tol = o->tol - R->obs_err[2 * i + k] - R->robot_err[k];
-				int nl = 0;
-				r = run3(w, ob, rob, o->impl, tol, o->max_points,
-					o->mode == MK_CSPACE_UNIFORM ? o->uniform : -1, &count, &nl, &err);
+				r = boundary3(w, ob, rob, o->impl, (mkBound)k, tol, o->max_points,
+					o->mode == MK_CSPACE_UNIFORM ? o->uniform : -1, o->store, &count, &nf, &w->tri2, &w->t2cap, &err);
 				if (r != MK_OK) return r;
-				px = w->p[0]; py = w->p[1]; pz = w->p[2];
+				double *const *src = k == MK_BOUND_INNER ? w->p : w->o;
+				px = src[0]; py = src[1]; pz = src[2];
 				if (o->store) {
-					int fcap = 0, *faces = NULL;
-					nf = faces3(w, nl, &faces, &fcap);
-					if (nf < 0) { free(faces); return MK_ERR_MEMORY; }
+					int *faces = malloc((size_t)nf * 3 * sizeof(int) + 1);
+					if (!faces) return MK_ERR_MEMORY;
+					memcpy(faces, w->tri2, (size_t)nf * 3 * sizeof(int));
 					R->outs[b].faces = faces;
 					R->outs[b].nfaces = nf;
 				}
@@ -769,8 +1110,6 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 	} else if (opt->mode != MK_CSPACE_ADAPTIVE && opt->mode != MK_CSPACE_UNIFORM) {
 		return fail(MK_ERR_ARGUMENT, msg, msglen, "unknown mode %d", (int)opt->mode);
 	}
-	if (opt->outer && dim == 3)
-		return fail(MK_ERR_UNSUPPORTED, msg, msglen, "outer bounds are not implemented in 3D yet: use inner bounds");
 	if (!mkImpl_Available(opt->impl)) return fail(MK_ERR_UNSUPPORTED, msg, msglen, "kernel %s is not available", mkImpl_Name(opt->impl));
 
 	Run R;

@@ -83,6 +83,14 @@ static double ref_k3(const mkScene *s, int i, int o, mkVec3 u)
 		+ ref_h3(&s->robot, mkScene3_Orientation(s, o), 0, mkVec3_Neg(u));
 }
 
+static double worst_fold; /* largest fold of an inner 3D surface seen */
+
+static int cmp_u64(const void *a, const void *b)
+{
+	unsigned long long x = *(const unsigned long long *)a, y = *(const unsigned long long *)b;
+	return x < y ? -1 : x > y;
+}
+
 /* Check one 2D boundary; returns the largest support gap seen. */
 static double referee2(const mkScene *s, int i, int o, mkBound bound, const double *x, const double *y, int n,
 	double tol, double certified)
@@ -130,8 +138,8 @@ static double referee2(const mkScene *s, int i, int o, mkBound bound, const doub
 	return worst;
 }
 
-static double referee3(const mkScene *s, int i, int o, const double *x, const double *y, const double *z, int n,
-	const int *faces, int nf, double tol, double certified)
+static double referee3(const mkScene *s, int i, int o, mkBound bound, const double *x, const double *y,
+	const double *z, int n, const int *faces, int nf, double tol, double certified)
 {
 	double scale = 0.0;
 	for (int k = 0; k < n; ++k) scale = fmax(scale, fabs(x[k]) + fabs(y[k]) + fabs(z[k]));
@@ -145,28 +153,63 @@ static double referee3(const mkScene *s, int i, int o, const double *x, const do
 		for (int k = 0; k < n; ++k) {
 			double v = u.x * x[k] + u.y * y[k] + u.z * z[k];
 			if (v > hp) hp = v;
-			if (v > hk + rnd) ++bad_inside;
+			if (bound == MK_BOUND_INNER && v > hk + rnd) ++bad_inside;
 		}
-		double gap = hk - hp;
+		double gap = bound == MK_BOUND_INNER ? hk - hp : hp - hk;
 		if (gap > worst) worst = gap;
 		if (gap > tol + rnd || gap > certified + rnd) ++bad_gap;
 	}
-	/* a closed surface: every directed edge (a, b) has its reverse (b, a) */
+	/* a closed surface: every directed edge (a, b) appears once and has its
+	 * reverse (b, a) */
 	int bad_closed = 0;
-	for (int f = 0; f < nf && !bad_closed; ++f)
-		for (int e = 0; e < 3; ++e) {
-			int a = faces[3 * f + e], b = faces[3 * f + (e + 1) % 3], found = 0;
-			for (int g = 0; g < nf && !found; ++g)
-				for (int h = 0; h < 3; ++h)
-					if (faces[3 * g + h] == b && faces[3 * g + (h + 1) % 3] == a) found = 1;
-			if (!found) { ++bad_closed; break; }
+	unsigned long long *ek = malloc((size_t)(3 * nf + 1) * sizeof *ek);
+	for (int f = 0; f < nf; ++f)
+		for (int e = 0; e < 3; ++e)
+			ek[3 * f + e] = (unsigned long long)faces[3 * f + e] << 32 | (unsigned)faces[3 * f + (e + 1) % 3];
+	qsort(ek, (size_t)(3 * nf), sizeof *ek, cmp_u64);
+	for (int e = 0; e < 3 * nf; ++e) {
+		unsigned long long rev = (ek[e] & 0xffffffffULL) << 32 | ek[e] >> 32;
+		if ((e > 0 && ek[e] == ek[e - 1]) || !bsearch(&rev, ek, (size_t)(3 * nf), sizeof *ek, cmp_u64)) ++bad_closed;
+	}
+	free(ek);
+	/* inner: the faces are the convex hull's: no point lies above a face's
+	 * plane (beyond rounding) */
+	double fold = 0.0;
+	if (bound == MK_BOUND_INNER)
+		for (int f = 0; f < nf; ++f) {
+			int a = faces[3 * f], b = faces[3 * f + 1], c = faces[3 * f + 2];
+			mkVec3 pa = {x[a], y[a], z[a]}, pb = {x[b], y[b], z[b]}, pc = {x[c], y[c], z[c]};
+			mkVec3 cr = mkVec3_Cross(mkVec3_Sub(pb, pa), mkVec3_Sub(pc, pa));
+			/* slivers (area below 1e-6 of the square of the longest edge)
+			 * carry no reliable plane */
+			double l2 = fmax(fmax(mkVec3_Dot(mkVec3_Sub(pb, pa), mkVec3_Sub(pb, pa)),
+				mkVec3_Dot(mkVec3_Sub(pc, pa), mkVec3_Sub(pc, pa))), mkVec3_Dot(mkVec3_Sub(pc, pb), mkVec3_Sub(pc, pb)));
+			if (!(mkVec3_Length(cr) > 1e-6 * l2)) continue;
+			mkVec3 nu = mkVec3_Normalize(cr);
+			for (int k = 0; k < n; ++k)
+				fold = fmax(fold, nu.x * (x[k] - pa.x) + nu.y * (y[k] - pa.y) + nu.z * (z[k] - pa.z));
+		}
+	ENSURE_LE(fold, rnd);
+	if (fold > worst_fold) worst_fold = fold;
+	/* outer: K lies behind the plane of every face (faces counter-clockwise
+	 * from outside; slivers below 1e-12 of area carry no direction) */
+	int bad_face = 0;
+	if (bound == MK_BOUND_OUTER)
+		for (int f = 0; f < nf; ++f) {
+			int a = faces[3 * f], b = faces[3 * f + 1], c = faces[3 * f + 2];
+			mkVec3 pa = {x[a], y[a], z[a]}, pb = {x[b], y[b], z[b]}, pc = {x[c], y[c], z[c]};
+			mkVec3 cr = mkVec3_Cross(mkVec3_Sub(pb, pa), mkVec3_Sub(pc, pa));
+			if (mkVec3_Length(cr) < 1e-12) continue;
+			mkVec3 nu = mkVec3_Normalize(cr);
+			if (ref_k3(s, i, o, nu) > mkVec3_Dot(nu, pa) + rnd) ++bad_face;
 		}
 	ENSURE(bad_inside == 0);
 	ENSURE(bad_gap == 0);
 	ENSURE(bad_closed == 0);
-	if (bad_inside || bad_gap || bad_closed)
-		fprintf(stderr, "  3D obstacle %d orientation %d: inside %d gap %d (worst %g tol %g certified %g) closed %d\n",
-			i, o, bad_inside, bad_gap, worst, tol, certified, bad_closed);
+	ENSURE(bad_face == 0);
+	if (bad_inside || bad_gap || bad_closed || bad_face)
+		fprintf(stderr, "  3D obstacle %d orientation %d %s: inside %d gap %d (worst %g tol %g certified %g) closed %d face %d\n",
+			i, o, bound == MK_BOUND_INNER ? "inner" : "outer", bad_inside, bad_gap, worst, tol, certified, bad_closed, bad_face);
 	return worst;
 }
 
@@ -480,26 +523,28 @@ static void test_scene3(void)
 	ENSURE(mkScene_Parse(scene3_text, &s, msg, sizeof msg) == MK_OK);
 	mkCSpaceOptions o = mkCSpaceOptions_Default();
 	o.tol = 0.05;
+	o.outer = 1;
 	mkCSpaceResult r1, r2;
 	ENSURE(mkCSpace_Run(&s, &o, 0, s.orientation_count, &r1, msg, sizeof msg) == MK_OK);
 	o.threads = 2;
 	ENSURE(mkCSpace_Run(&s, &o, 0, s.orientation_count, &r2, msg, sizeof msg) == MK_OK);
 	ENSURE(results_equal(&r1, &r2));
 	ENSURE(mkCSpaceResult_MaxError(&r1) <= o.tol);
-	double worst = 0.0;
-	long points = 0;
+	double worst[2] = {0.0, 0.0};
+	long points[2] = {0, 0};
 	for (int orel = 0; orel < r1.orientations; ++orel)
-		for (int i = 0; i < r1.obstacles; ++i) {
-			long b = (long)orel * r1.obstacles + i;
-			long f = r1.first[b], ff = r1.face_first[b];
-			points += r1.count[b];
-			worst = fmax(worst, referee3(&s, i, orel, r1.x + f, r1.y + f, r1.z + f, r1.count[b], r1.faces + 3 * ff,
-				(int)(r1.face_first[b + 1] - ff), o.tol, r1.error[b]));
-		}
-	printf("3D scene, T = %g: %ld points in %d boundaries, certified max %.3g, referee's worst gap %.3g\n",
-		o.tol, points, r1.obstacles * r1.orientations, mkCSpaceResult_MaxError(&r1), worst);
-	o.outer = 1;
-	ENSURE(mkCSpace_Run(&s, &o, 0, 1, &r2, msg, sizeof msg) == MK_ERR_UNSUPPORTED);
+		for (int i = 0; i < r1.obstacles; ++i)
+			for (int k = 0; k < 2; ++k) {
+				long b = ((long)orel * r1.obstacles + i) * 2 + k;
+				long f = r1.first[b], ff = r1.face_first[b];
+				points[k] += r1.count[b];
+				worst[k] = fmax(worst[k], referee3(&s, i, orel, (mkBound)k, r1.x + f, r1.y + f, r1.z + f, r1.count[b],
+					r1.faces + 3 * ff, (int)(r1.face_first[b + 1] - ff), o.tol, r1.error[b]));
+			}
+	printf("3D scene, T = %g: inner %ld points, outer %ld vertices in %d boundaries each, certified max %.3g, "
+		"referee's worst gap inner %.3g, outer %.3g; largest fold of an inner surface %.3g\n", o.tol, points[0], points[1],
+		r1.obstacles * r1.orientations, mkCSpaceResult_MaxError(&r1), worst[0], worst[1], worst_fold);
+	mkCSpaceResult_Free(&r2);
 	mkCSpaceResult_Free(&r1);
 	mkScene_Free(&s);
 }
@@ -537,7 +582,7 @@ static void test_circles(void)
 	int *faces = NULL, fcap = 0, nf = 0;
 	x = y = NULL;
 	cap = 0;
-	ENSURE(mkCObstacle3_Uniform(s3, s1, 2, MK_IMPL_AUTO, &x, &y, &z, &cap, &faces, &fcap, &n, &nf, &err) == MK_OK);
+	ENSURE(mkCObstacle3_Uniform(s3, s1, MK_BOUND_INNER, 2, MK_IMPL_AUTO, &x, &y, &z, &cap, &faces, &fcap, &n, &nf, &err) == MK_OK);
 	ENSURE(n == 66 && nf == 128); /* 4^2 * 8 triangles, 4 * 16 + 2 vertices */
 	for (int k = 0; k < n; ++k) ENSURE_NEAR(sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]), 4.0, 1e-13);
 	free(x); free(y); free(z); free(faces);

@@ -24,7 +24,7 @@ static void help(void)
 		"\n"
 		"Configuration-space obstacles of the scene in FILE: for every robot orientation\n"
 		"and obstacle, an inner boundary (inside the C-obstacle) and with --outer an outer\n"
-		"one (enclosing it, 2D), each within Hausdorff distance T of the C-obstacle of the\n"
+		"one (enclosing it), each within Hausdorff distance T of the C-obstacle of the\n"
 		"declared shapes (model error of boxes and cylinders included), with normals\n"
 		"placed adaptively where the curvature needs them. See docs/scene.md.\n"
 		"\n"
@@ -35,7 +35,7 @@ static void help(void)
 		"                   atomically: nothing on any error\n"
 		"  --report PATH    CSV per obstacle: model, model error, points, certified error,\n"
 		"                   seconds (and a robot row)\n"
-		"  --outer          also the outer boundaries (2D only)\n"
+		"  --outer          also the outer boundaries\n"
 		"  --threads K      worker threads, 1..%d (default 1); the output does not depend on K\n"
 		"  --shard I/N      only block I (0-based) of N of the orientations; the shards'\n"
 		"                   rows concatenated in order (one header) equal the whole run's\n"
@@ -161,10 +161,6 @@ int mkCmd_Scene(int argc, char **argv)
 		r = mkScene_SetRotations(&scene, rt, path, msg, sizeof msg);
 		free(rt);
 		if (r != MK_OK) { fprintf(stderr, "mink scene: %s: line %d: rotations: %s\n", file, scene.rotations_line, msg); goto done; }
-	}
-	if (outer && scene.dim == 3) {
-		fprintf(stderr, "mink scene: --outer is not implemented for 3D scenes yet (inner boundaries only)\n");
-		goto done;
 	}
 	mkCSpaceOptions o = mkCSpaceOptions_Default();
 	o.tol = tol;

@@ -11,8 +11,8 @@
  *  - an inner boundary: a polygon (2D, counter-clockwise) or a closed
  *    triangulated surface (3D) whose vertices lie on the boundary of K, so
  *    their convex hull P is inside K;
- *  - on request an outer boundary (2D only for now): the polygon cut out by
- *    the tangent lines at the same kind of normals, which contains K;
+ *  - on request an outer boundary: the polygon (polytope) cut out by the
+ *    tangent lines (planes) at the same kind of normals, which contains K;
  * and a certified bound on the Hausdorff distance of each to K. In the
  * adaptive mode normals are inserted until the certified bound is at most
  * the sampling tolerance, so points go where the curvature needs them. The
@@ -56,7 +56,7 @@ typedef enum mkCSpaceMode {
 
 typedef struct mkCSpaceOptions {
 	double tol;         /* T > 0, in the scene's length unit */
-	int outer;          /* 1: also the outer boundary (2D) */
+	int outer;          /* 1: also the outer boundary */
 	mkCSpaceMode mode;
 	int uniform;        /* UNIFORM: 2D >= 4 normals, 3D 0..10 splits; PAPER: points / grid side */
 	int threads;        /* >= 1 */
@@ -96,7 +96,7 @@ typedef struct mkCSpaceResult {
 /* Compute the orientations [begin, end) of the scene for every obstacle.
  * Fails with MK_ERR_ARGUMENT on bad options or range (message says which),
  * MK_ERR_RANGE when a model cannot meet the tolerance (e.g. T too small for
- * a box), MK_ERR_UNSUPPORTED for outer bounds in 3D, MK_ERR_MEMORY. On
+ * a box), MK_ERR_UNSUPPORTED (outer bounds in paper mode), MK_ERR_MEMORY. On
  * failure *out is empty. A boundary whose error exceeds T (max_points
  * reached, or normals closer than 1e-12 rad) is not a failure: check
  * mkCSpaceResult_MaxError. */
@@ -116,8 +116,10 @@ MK_API void mkCSpaceResult_Free(mkCSpaceResult *r);
  * MK_ERR_ARGUMENT (tol <= 0). */
 MK_API mkResult mkCObstacle2_Adaptive(mkBody2 b1, mkBody2 b2, mkBound bound, double tol, int max_points,
 	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
-/* 3D inner surface: points and triangles (3 ints each, *faces grown likewise). */
-MK_API mkResult mkCObstacle3_Adaptive(mkBody3 b1, mkBody3 b2, double tol, int max_points, mkImpl impl,
+/* 3D: points and triangles (3 ints each, *faces grown likewise), inner
+ * (a closed surface through boundary points of K) or outer (the polytope of
+ * the tangent planes, see Proof 5 of docs/scene.md). */
+MK_API mkResult mkCObstacle3_Adaptive(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int max_points, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error);
 /* The same with a fixed set of normals (mode UNIFORM): n normals (2D, n >= 4)
@@ -133,7 +135,7 @@ MK_API mkResult mkCObstacle2_Uniform(mkBody2 b1, mkBody2 b2, mkBound bound, int 
  * normals of an obstacle's surface samples). */
 MK_API mkResult mkCObstacle2_Certify(mkBody2 b1, mkBody2 b2, mkBound bound, const double *nx, const double *ny, int n,
 	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
-MK_API mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, int splits, mkImpl impl,
+MK_API mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, mkBound bound, int splits, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error);
 
