@@ -760,15 +760,35 @@ static int hull3(Work *w, int n, int **faces, int *fcap)
 		++nf; \
 	} while (0)
 	ADD_FACE(i0, i1, i2); ADD_FACE(i0, i1, i3); ADD_FACE(i0, i2, i3); ADD_FACE(i1, i2, i3);
+	int last = 3;
 	for (int k = 0; k < n; ++k) {
 		if (k == i0 || k == i1 || k == i2 || k == i3) continue;
 		mkVec3 p = vp(w, k);
-		int f0 = -1;
-		double dmax = eps;
-		for (int f = 0; f < nf; ++f) {
-			if (!alive[f]) continue;
-			double d = P[4 * f] * p.x + P[4 * f + 1] * p.y + P[4 * f + 2] * p.z - P[4 * f + 3];
-			if (d > dmax) { dmax = d; f0 = f; }
+		/* a face that sees p: first by walking from the newest face to
+		 * neighbours that see p better, else by looking at every face */
+		int f0 = -1, cur = last;
+		double dcur = P[4 * cur] * p.x + P[4 * cur + 1] * p.y + P[4 * cur + 2] * p.z - P[4 * cur + 3];
+		for (int steps = 0; steps < nf && dcur <= eps; ++steps) {
+			int next = -1;
+			double dn = dcur;
+			for (int e = 0; e < 3; ++e) {
+				int g = hash_find(&w->dedges, dedge_key(F[3 * cur + (e + 1) % 3], F[3 * cur + e]));
+				if (g < 0 || alive[g] != 1) continue;
+				double d = P[4 * g] * p.x + P[4 * g + 1] * p.y + P[4 * g + 2] * p.z - P[4 * g + 3];
+				if (d > dn) { dn = d; next = g; }
+			}
+			if (next < 0) break;
+			cur = next;
+			dcur = dn;
+		}
+		if (dcur > eps) f0 = cur;
+		else {
+			double dmax = eps;
+			for (int f = 0; f < nf; ++f) {
+				if (alive[f] != 1) continue;
+				double d = P[4 * f] * p.x + P[4 * f + 1] * p.y + P[4 * f + 2] * p.z - P[4 * f + 3];
+				if (d > dmax) { dmax = d; f0 = f; }
+			}
 		}
 		if (f0 < 0) continue; /* inside or on the hull */
 		/* the connected set of faces that see p, from the one that sees it most */
@@ -811,9 +831,8 @@ static int hull3(Work *w, int n, int **faces, int *fcap)
 			for (int e = 0; e < 3; ++e)
 				w->dedges.val[hash_slot(&w->dedges, dedge_key(F[3 * f + e], F[3 * f + (e + 1) % 3]))] = -2;
 		}
-		for (int h = 0; h < nh; ++h) {
-			ADD_FACE(hor[2 * h], hor[2 * h + 1], k);
-		}
+		for (int h = 0; h < nh; ++h) ADD_FACE(hor[2 * h], hor[2 * h + 1], k);
+		last = nf - 1;
 	}
 #undef ADD_FACE
 	int out = 0;
@@ -862,14 +881,16 @@ static mkResult single3(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int m
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error)
 {
-	if (!x || !y || !z || !cap || !faces || !face_cap || !count || !face_count || !error
-		|| (bound != MK_BOUND_INNER && bound != MK_BOUND_OUTER))
+	if (!x || !y || !z || !cap || !count || !error || (bound != MK_BOUND_INNER && bound != MK_BOUND_OUTER)
+		|| (faces && (!face_cap || !face_count)))
 		return MK_ERR_ARGUMENT;
 	Work w;
 	memset(&w, 0, sizeof w);
-	int n = 0, nf = 0;
+	int n = 0, nf = 0, *tmp = NULL, tcap = 0;
 	double e = 0.0;
-	mkResult r = boundary3(&w, b1, b2, impl, bound, tol, max_points, splits, 1, &n, &nf, faces, face_cap, &e);
+	mkResult r = boundary3(&w, b1, b2, impl, bound, tol, max_points, splits, faces != NULL, &n, &nf,
+		faces ? faces : &tmp, faces ? face_cap : &tcap, &e);
+	free(tmp);
 	if (r == MK_OK) {
 		int c1 = *cap, c2 = *cap, c3 = *cap;
 		if (!grow_d(x, &c1, n) || !grow_d(y, &c2, n) || !grow_d(z, &c3, n)) r = MK_ERR_MEMORY;
@@ -880,7 +901,7 @@ static mkResult single3(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int m
 			memcpy(*y, src[1], (size_t)n * sizeof(double));
 			memcpy(*z, src[2], (size_t)n * sizeof(double));
 			*count = n;
-			*face_count = nf;
+			if (face_count) *face_count = faces ? nf : 0;
 			*error = e;
 		}
 	}

@@ -545,6 +545,32 @@ static void test_scene3(void)
 		"referee's worst gap inner %.3g, outer %.3g; largest fold of an inner surface %.3g\n", o.tol, points[0], points[1],
 		r1.obstacles * r1.orientations, mkCSpaceResult_MaxError(&r1), worst[0], worst[1], worst_fold);
 	mkCSpaceResult_Free(&r2);
+	/* adaptive against uniform at equal certified error (inner, orientation
+	 * 0): the fewest uniform splits of the octahedron whose certified error
+	 * is at most the adaptive boundary's (the uniform counts grow 4x per
+	 * split, so the factor is coarse) */
+	long pa = 0, pu = 0;
+	for (int i = 0; i < r1.obstacles; ++i) {
+		long bi = (long)i * 2;
+		pa += r1.count[bi];
+		mkBody3 ob, rob;
+		double e1, e2;
+		mkSceneBody3_Model(&s.obstacles[i], 0.25 * o.tol, MK_BOUND_INNER, &ob, &e1, msg, sizeof msg);
+		mkSceneBody3_Model(&s.robot, 0.25 * o.tol, MK_BOUND_INNER, &rob, &e2, msg, sizeof msg);
+		rob.M = mkMat3_Mul(mkScene3_Orientation(&s, 0), rob.M);
+		double target = r1.error[bi] - r1.model_error[bi];
+		double *x = NULL, *y = NULL, *z = NULL, err = INFINITY;
+		int cap = 0, n = 0;
+		for (int sp = 0; sp <= 8; ++sp) {
+			mkCObstacle3_Uniform(ob, rob, MK_BOUND_INNER, sp, MK_IMPL_AUTO, &x, &y, &z, &cap, NULL, NULL, &n, NULL, &err);
+			if (err <= target) break;
+		}
+		pu += n;
+		free(x); free(y); free(z);
+	}
+	printf("3D scene, T = %g, orientation 0: adaptive %ld points; uniform octahedron splits at equal certified error %ld "
+		"(factor %.2f)\n", o.tol, pa, pu, (double)pu / (double)pa);
+	ENSURE(pu >= pa);
 	mkCSpaceResult_Free(&r1);
 	mkScene_Free(&s);
 }

@@ -116,7 +116,8 @@ MK_API void mkCSpaceResult_Free(mkCSpaceResult *r);
  * MK_ERR_ARGUMENT (tol <= 0). */
 MK_API mkResult mkCObstacle2_Adaptive(mkBody2 b1, mkBody2 b2, mkBound bound, double tol, int max_points,
 	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
-/* 3D: points and triangles (3 ints each, *faces grown likewise), inner
+/* 3D: points and triangles (3 ints each, *faces grown likewise; faces may
+ * be NULL when only the points are wanted), inner
  * (a closed surface through boundary points of K) or outer (the polytope of
  * the tangent planes, see Proof 5 of docs/scene.md). */
 MK_API mkResult mkCObstacle3_Adaptive(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int max_points, mkImpl impl,
