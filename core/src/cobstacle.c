@@ -1166,6 +1166,7 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 			if (R.bounds == 2) describe2(b, sizeof b, &scene->obstacles[i], R.obs2[2 * i + 1]);
 		} else {
 			describe3(a, sizeof a, &scene->obstacles[i], R.obs3[2 * i]);
+			if (R.bounds == 2) describe3(b, sizeof b, &scene->obstacles[i], R.obs3[2 * i + 1]);
 		}
 		if (R.bounds == 2 && scene->obstacles[i].kind != MK_SCENE_SMOOTH)
 			snprintf(out->model_name[i], sizeof out->model_name[i], "inner %s; outer %s", a, b);
