@@ -197,9 +197,9 @@ int mkCmd_Scene(int argc, char **argv)
 	static const char *const kinds[] = {"inner", "outer"};
 	/* orientations in chunks, so that memory stays bounded; every boundary is
 	 * computed alone, so the chunking changes nothing in the output */
-	long chunk = nob > 0 ? (long)(200000 / nob) : (long)scene.orientation_count;
+	long budget = scene.dim == 2 ? 20000 : 2000; /* (orientation, obstacle) tasks per chunk */
+	long chunk = nob > 0 ? budget / nob : (long)scene.orientation_count + 1;
 	if (chunk < 1) chunk = 1;
-	if (chunk < 4L * threads) chunk = 4L * threads;
 	int short_of_tol = 0;
 	for (long c0 = begin; c0 < end; c0 += chunk) {
 		long c1 = c0 + chunk < end ? c0 + chunk : end;
