@@ -925,6 +925,41 @@ mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, mkBound bound, int splits,
 	return single3(b1, b2, bound, 1.0, 1 << 30, splits, impl, x, y, z, cap, faces, face_cap, count, face_count, error);
 }
 
+mkResult mkCObstacle3_Certify(mkBody3 b1, mkBody3 b2, const double *nx, const double *ny, const double *nz, int n,
+	const int *tris, int ntri, mkImpl impl, double *error)
+{
+	if (n < 4 || ntri < 4 || !nx || !ny || !nz || !tris || !error) return MK_ERR_ARGUMENT;
+	for (int t = 0; t < 3 * ntri; ++t)
+		if (tris[t] < 0 || tris[t] >= n) return MK_ERR_ARGUMENT;
+	Work w;
+	memset(&w, 0, sizeof w);
+	mkResult r = MK_OK;
+	if (!work_verts(&w, n, 3)) { r = MK_ERR_MEMORY; goto done; }
+	for (int k = 0; k < n; ++k) {
+		mkVec3 u = mkVec3_Normalize(mkVec3_Make(nx[k], ny[k], nz[k]));
+		if (!(u.x == u.x && u.y == u.y && u.z == u.z)) { r = MK_ERR_ARGUMENT; goto done; }
+		w.n[0][k] = u.x; w.n[1][k] = u.y; w.n[2][k] = u.z;
+	}
+	if ((r = eval3(b1, b2, impl, w.n[0], w.n[1], w.n[2], n, w.p[0], w.p[1], w.p[2])) != MK_OK) goto done;
+	/* Proof 3 needs the triangles to partition the sphere: every one
+	 * positively oriented and their areas summing to 4 pi */
+	double area = 0.0, err = 0.0;
+	for (int t = 0; t < ntri; ++t) {
+		int a = tris[3 * t], b = tris[3 * t + 1], c = tris[3 * t + 2];
+		mkVec3 na = vn(&w, a), nb = vn(&w, b), nc = vn(&w, c);
+		double det = det3(na, nb, nc);
+		if (!(det > 0.0)) { err = INFINITY; break; }
+		area += 2.0 * atan2(det, 1.0 + mkVec3_Dot(na, nb) + mkVec3_Dot(nb, nc) + mkVec3_Dot(nc, na));
+		double e = tri_bound(&w, a, b, c);
+		if (e > err || e != e) err = e;
+	}
+	if (!(fabs(area - 4.0 * MK_PI) <= 1e-9)) err = INFINITY;
+	*error = err;
+done:
+	work_free(&w);
+	return r;
+}
+
 /* ---- scenes on threads ----------------------------------------------------------------- */
 
 typedef struct TaskOut {     /* one boundary's stored output */

@@ -516,6 +516,47 @@ static void test_points_factor2(void)
 	mkScene_Free(&s);
 }
 
+typedef struct Pair3 { mkBody3 ob, rob; } Pair3;
+
+/* The paper's 3D sampling certified: the n x n grid of the obstacle's
+ * surface angles (mkSample3_Grid; the pole rows are one point each), the
+ * obstacle's normals M^-T g(u) there, the grid's quadrilaterals split into
+ * triangles; returns the certified error, *points the distinct points. */
+static double cert_paper3(const Pair3 *p, int n, int *points)
+{
+	int nu = n * n, nv = (n - 2) * n + 2;
+	double *ux = malloc((size_t)nu * sizeof *ux), *uy = malloc((size_t)nu * sizeof *uy), *uz = malloc((size_t)nu * sizeof *uz);
+	double *nx = malloc((size_t)nv * sizeof *nx), *ny = malloc((size_t)nv * sizeof *ny), *nz = malloc((size_t)nv * sizeof *nz);
+	int *tri = malloc((size_t)nu * 6 * sizeof *tri), nt = 0;
+	mkSample3_Grid(n, ux, uy, uz);
+	mkMat3 Mi = mkMat3_Inverse(p->ob.M);
+	int flip = mkMat3_Det(p->ob.M) < 0.0;
+#define VID(i, j) ((i) == 0 ? 0 : (i) == n - 1 ? nv - 1 : 1 + ((i) - 1) * n + ((j) % n))
+	for (int i = 0; i < n; ++i)
+		for (int j = 0; j < n; ++j) {
+			mkVec3 g = mkMat3_MulTVec(Mi, mkShape3_PointGradient(p->ob.shape, mkVec3_Make(ux[i * n + j], uy[i * n + j], uz[i * n + j])));
+			int v = VID(i, j);
+			nx[v] = g.x; ny[v] = g.y; nz[v] = g.z;
+		}
+	for (int i = 0; i + 1 < n; ++i)
+		for (int j = 0; j < n; ++j) {
+			int q[2][3] = {{VID(i, j), VID(i, j + 1), VID(i + 1, j + 1)}, {VID(i, j), VID(i + 1, j + 1), VID(i + 1, j)}};
+			for (int k = 0; k < 2; ++k) {
+				if (q[k][0] == q[k][1] || q[k][1] == q[k][2] || q[k][0] == q[k][2]) continue;
+				tri[3 * nt] = q[k][0];
+				tri[3 * nt + 1] = flip ? q[k][2] : q[k][1];
+				tri[3 * nt + 2] = flip ? q[k][1] : q[k][2];
+				++nt;
+			}
+		}
+#undef VID
+	double err = INFINITY;
+	mkCObstacle3_Certify(p->ob, p->rob, nx, ny, nz, nv, tri, nt, MK_IMPL_AUTO, &err);
+	free(ux); free(uy); free(uz); free(nx); free(ny); free(nz); free(tri);
+	*points = nv;
+	return err;
+}
+
 static void test_scene3(void)
 {
 	mkScene s;
@@ -549,7 +590,7 @@ static void test_scene3(void)
 	 * 0): the fewest uniform splits of the octahedron whose certified error
 	 * is at most the adaptive boundary's (the uniform counts grow 4x per
 	 * split, so the factor is coarse) */
-	long pa = 0, pu = 0;
+	long pa = 0, pu = 0, pp = 0;
 	for (int i = 0; i < r1.obstacles; ++i) {
 		long bi = (long)i * 2;
 		pa += r1.count[bi];
@@ -567,9 +608,21 @@ static void test_scene3(void)
 		}
 		pu += n;
 		free(x); free(y); free(z);
+		/* the paper's grid: the smallest side n (doubling, then bisection) */
+		Pair3 pr = {ob, rob};
+		int lo = 3, hi = 4, pts = 0;
+		while (cert_paper3(&pr, hi, &pts) > target && hi < 512) { lo = hi; hi *= 2; }
+		while (hi - lo > 1) {
+			int mid = (lo + hi) / 2;
+			if (cert_paper3(&pr, mid, &pts) <= target) hi = mid; else lo = mid;
+		}
+		cert_paper3(&pr, hi, &pts);
+		pp += pts;
 	}
-	printf("3D scene, T = %g, orientation 0: adaptive %ld points; uniform octahedron splits at equal certified error %ld "
-		"(factor %.2f)\n", o.tol, pa, pu, (double)pu / (double)pa);
+	printf("3D scene, T = %g, orientation 0: adaptive %ld points; at equal certified error uniform octahedron splits %ld "
+		"(factor %.2f), the paper's surface grid %ld (factor %.2f; grid side capped at 512)\n", o.tol, pa, pu,
+		(double)pu / (double)pa, pp, (double)pp / (double)pa);
+	ENSURE((double)pp >= 3.0 * (double)pa);
 	ENSURE(pu >= pa);
 	mkCSpaceResult_Free(&r1);
 	mkScene_Free(&s);
@@ -611,6 +664,25 @@ static void test_circles(void)
 	ENSURE(mkCObstacle3_Uniform(s3, s1, MK_BOUND_INNER, 2, MK_IMPL_AUTO, &x, &y, &z, &cap, &faces, &fcap, &n, &nf, &err) == MK_OK);
 	ENSURE(n == 66 && nf == 128); /* 4^2 * 8 triangles, 4 * 16 + 2 vertices */
 	for (int k = 0; k < n; ++k) ENSURE_NEAR(sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]), 4.0, 1e-13);
+	/* the same octahedron normals through mkCObstacle3_Certify: the same
+	 * bound; the triangles reversed are no partition: +inf */
+	double e2 = 0.0;
+	int tri[8 * 3], t = 0;
+	double ox[6] = {1, -1, 0, 0, 0, 0}, oy[6] = {0, 0, 1, -1, 0, 0}, oz[6] = {0, 0, 0, 0, 1, -1};
+	for (int sg = 0; sg < 8; ++sg) {
+		int a = (sg & 1) ? 1 : 0, b = (sg & 2) ? 3 : 2, c = (sg & 4) ? 5 : 4;
+		int neg = ((sg & 1) != 0) + ((sg & 2) != 0) + ((sg & 4) != 0);
+		tri[t++] = a; tri[t++] = neg % 2 ? c : b; tri[t++] = neg % 2 ? b : c;
+	}
+	ENSURE(mkCObstacle3_Uniform(s3, s1, MK_BOUND_INNER, 0, MK_IMPL_AUTO, &x, &y, &z, &cap, NULL, NULL, &n, NULL, &err) == MK_OK);
+	ENSURE(mkCObstacle3_Certify(s3, s1, ox, oy, oz, 6, tri, 8, MK_IMPL_AUTO, &e2) == MK_OK);
+	ENSURE_NEAR(e2, err, 1e-15);
+	/* Proof 3 on an octant of the radius-4 sphere: c = 4 |e_i - e_j|^2 = 8,
+	 * d0 = 1/sqrt(3): 8 sqrt(3) / 3, plus the rounding allowance */
+	ENSURE_NEAR(err, 8.0 * sqrt(3.0) / 3.0, 1e-10);
+	for (int k = 0; k < 8; ++k) { int tmp = tri[3 * k + 1]; tri[3 * k + 1] = tri[3 * k + 2]; tri[3 * k + 2] = tmp; }
+	ENSURE(mkCObstacle3_Certify(s3, s1, ox, oy, oz, 6, tri, 8, MK_IMPL_AUTO, &e2) == MK_OK);
+	ENSURE(isinf(e2));
 	free(x); free(y); free(z); free(faces);
 }
 

@@ -136,6 +136,15 @@ MK_API mkResult mkCObstacle2_Uniform(mkBody2 b1, mkBody2 b2, mkBound bound, int 
  * normals of an obstacle's surface samples). */
 MK_API mkResult mkCObstacle2_Certify(mkBody2 b1, mkBody2 b2, mkBound bound, const double *nx, const double *ny, int n,
 	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
+/* Certify given normals in 3D: n normals (any nonzero vectors) and ntri
+ * triangles of them (3 indices each, counter-clockwise from outside) that
+ * partition the sphere; *error is Proof 3's bound for the convex hull of
+ * their points (inner) and for the intersection of their tangent
+ * half-spaces (outer), or +inf when some triangle is not positively
+ * oriented or the triangles' areas do not sum to 4 pi (not a partition).
+ * Used to certify another sampling, e.g. the paper's grid. */
+MK_API mkResult mkCObstacle3_Certify(mkBody3 b1, mkBody3 b2, const double *nx, const double *ny, const double *nz, int n,
+	const int *tris, int ntri, mkImpl impl, double *error);
 MK_API mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, mkBound bound, int splits, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error);
