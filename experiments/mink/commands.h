@@ -6,6 +6,7 @@
 
 int mkCmd_Sum(int argc, char **argv);
 int mkCmd_Bench(int argc, char **argv);
+int mkCmd_Scene(int argc, char **argv);
 int mkCmd_Methods(int argc, char **argv);
 int mkCmd_Verify(int argc, char **argv);
 

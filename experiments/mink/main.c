@@ -15,6 +15,7 @@ typedef struct mkCommand {
 
 static const mkCommand commands[] = {
 	{"sum", mkCmd_Sum, "boundary points of B1 (+) B2 or of the contact space B1 (+) (-B2), as CSV"},
+	{"scene", mkCmd_Scene, "certified C-obstacles of a scene file, inner and outer, as CSV"},
 	{"bench", mkCmd_Bench, "ns per boundary point of the closed forms, as CSV"},
 #ifdef MINK_HAVE_REGISTRY
 	{"methods", mkCmd_Methods, "list the registered methods (closed forms and baselines)"},

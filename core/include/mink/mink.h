@@ -9,5 +9,7 @@
 #include "metrics.h"
 #include "spec.h"
 #include "method.h"
+#include "scene.h"
+#include "cobstacle.h"
 
 #endif

@@ -1,0 +1,154 @@
+/* mink/cobstacle.h - configuration-space obstacles of a scene, certified to a
+ * tolerance, on every core.
+ *
+ * For a robot R at orientation o (map R_o M) and an obstacle O, the
+ * C-obstacle is the contact space K = O (+) (-R_o): the places of the robot's
+ * centre where it touches or overlaps O. Theorem 1 gives K's boundary point
+ * with outward normal n in closed form, x(n) (mkSum2_Batch/mkSum3_Batch with
+ * MK_FORM_NORMAL and MK_PARAM_NORMAL), hence its support function
+ * h_K(n) = <n, x(n)>. From these alone this module builds, per obstacle and
+ * orientation,
+ *  - an inner boundary: a polygon (2D, counter-clockwise) or a closed
+ *    triangulated surface (3D) whose vertices lie on the boundary of K, so
+ *    their convex hull P is inside K;
+ *  - on request an outer boundary: the polygon (polytope) cut out by the
+ *    tangent lines (planes) at the same kind of normals, which contains K;
+ * and a certified bound on the Hausdorff distance of each to K. In the
+ * adaptive mode normals are inserted until the certified bound is at most
+ * the sampling tolerance, so points go where the curvature needs them. The
+ * certificates and their conditions are proved in docs/scene.md.
+ *
+ * Bodies that are boxes or cylinders are modelled first (mink/scene.h); the
+ * tolerance T then covers the model error too: each modelled body gets a
+ * model budget of T/4 and the sampling gets T minus the model errors, so the
+ * reported error (model + sampling) bounds the distance to the C-obstacle of
+ * the declared shapes.
+ *
+ * Threads: the (orientation, obstacle) pairs are independent tasks, shared
+ * out to `threads` POSIX threads; every task is computed the same way
+ * whichever thread runs it, so the result does not depend on the thread
+ * count.
+ *
+ * Memory: mkCSpace_Run allocates the result; mkCSpaceResult_Free releases
+ * it. Nothing else here allocates. */
+#ifndef MINK_COBSTACLE_H
+#define MINK_COBSTACLE_H
+
+#include "scene.h"
+#include "sum.h"
+
+MK_EXTERN_C_BEGIN
+
+typedef enum mkCSpaceMode {
+	/* normals inserted until the certified error is at most the tolerance */
+	MK_CSPACE_ADAPTIVE = 0,
+	/* a fixed set of normals, the same for every boundary, certified: 2D
+	 * `uniform` normals 2 pi k / uniform; 3D the octahedron's 8 faces split
+	 * uniformly `uniform` times (8 4^uniform triangles). The tolerance only
+	 * chooses the models of boxes and cylinders. */
+	MK_CSPACE_UNIFORM = 1,
+	/* the paper's sampling, not certified (error NaN), inner only: B1's
+	 * surface parameters (mkSample2_Angles(uniform) or mkSample3_Grid(uniform))
+	 * through mkSum*_Batch with the options' form and kernel; Table 2's
+	 * timing. No faces in 3D. */
+	MK_CSPACE_PAPER = 2
+} mkCSpaceMode;
+
+typedef struct mkCSpaceOptions {
+	double tol;         /* T > 0, in the scene's length unit */
+	int outer;          /* 1: also the outer boundary */
+	mkCSpaceMode mode;
+	int uniform;        /* UNIFORM: 2D >= 4 normals, 3D 0..10 splits; PAPER: points / grid side */
+	int threads;        /* >= 1 */
+	int store;          /* 1: keep points and faces; 0: counts, errors, checksums only */
+	int max_points;     /* cap per boundary (adaptive); reaching it leaves the error above T */
+	mkForm form;        /* PAPER only (MK_FORM_NORMAL or MK_FORM_GRADIENT) */
+	mkImpl impl;        /* the kernel of every batch call */
+} mkCSpaceOptions;
+
+/* tol 1e-3, inner only, adaptive, 1 thread, store, max_points 1000000,
+ * gradient form (paper mode), AUTO kernel. */
+MK_API mkCSpaceOptions mkCSpaceOptions_Default(void);
+
+/* Boundary index of (orientation o relative to the run's first, obstacle i,
+ * bound k): (o * obstacles + i) * bounds + k; bounds is 1 (inner) or 2
+ * (inner, outer). This is also the order of the command's output rows. */
+typedef struct mkCSpaceResult {
+	int dim, obstacles, orientations, bounds;
+	int orientation_begin;   /* the scene orientation of o = 0 */
+	int *count;              /* points of each boundary */
+	double *error;           /* certified Hausdorff bound incl. model error (NaN: paper mode) */
+	double *model_error;     /* the model part of it (robot's + obstacle's) */
+	double *seconds;         /* wall time of each (orientation, obstacle) task, on its bound 0 entry */
+	double *checksum;        /* sum of every coordinate of the boundary (also with store = 0) */
+	/* store = 1: the points of boundary b are first[b] .. first[b+1]-1 */
+	long *first;
+	double *x, *y, *z;       /* z: 3D */
+	/* store = 1, 3D: triangles of boundary b are face_first[b] .. face_first[b+1]-1,
+	 * three vertex numbers (0-based within the boundary) each, counter-clockwise
+	 * seen from outside */
+	long *face_first;
+	int *faces;
+	/* per obstacle: the models used (inner; outer when bounds = 2) */
+	char (*model_name)[128];
+} mkCSpaceResult;
+
+/* Compute the orientations [begin, end) of the scene for every obstacle.
+ * Fails with MK_ERR_ARGUMENT on bad options or range (message says which),
+ * MK_ERR_RANGE when a model cannot meet the tolerance (e.g. T too small for
+ * a box), MK_ERR_UNSUPPORTED (outer bounds in paper mode), MK_ERR_MEMORY. On
+ * failure *out is empty. A boundary whose error exceeds T (max_points
+ * reached, or normals closer than 1e-12 rad) is not a failure: check
+ * mkCSpaceResult_MaxError. */
+MK_API mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begin, int end,
+	mkCSpaceResult *out, char *msg, size_t msglen);
+
+/* Largest error of the result (NaN if any is NaN). */
+MK_API double mkCSpaceResult_MaxError(const mkCSpaceResult *r);
+MK_API void mkCSpaceResult_Free(mkCSpaceResult *r);
+
+/* ---- single boundaries, for callers with their own bodies ----------------
+ * K = b1 (+) (-b2) (the contact space of mink/sum.h). Adaptive inner (outer)
+ * boundary with sampling tolerance tol into a buffer the function grows with
+ * realloc (*x, *y, *cap: the caller owns and frees them; start with NULL, 0).
+ * Writes the count and the certified bound (plus a rounding allowance of
+ * 1e-13 times the coordinates' size). Returns MK_ERR_MEMORY or
+ * MK_ERR_ARGUMENT (tol <= 0). */
+MK_API mkResult mkCObstacle2_Adaptive(mkBody2 b1, mkBody2 b2, mkBound bound, double tol, int max_points,
+	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
+/* 3D: points and triangles (3 ints each, *faces grown likewise; faces may
+ * be NULL when only the points are wanted), inner
+ * (a closed surface through boundary points of K) or outer (the polytope of
+ * the tangent planes, see Proof 5 of docs/scene.md). */
+MK_API mkResult mkCObstacle3_Adaptive(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int max_points, mkImpl impl,
+	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
+	double *error);
+/* The same with a fixed set of normals (mode UNIFORM): n normals (2D, n >= 4)
+ * or `splits` uniform splits of the octahedron (3D, 0..10). 2D n >= 4 keeps
+ * every normal step at most 90 degrees, which the certificate needs. */
+MK_API mkResult mkCObstacle2_Uniform(mkBody2 b1, mkBody2 b2, mkBound bound, int n, mkImpl impl,
+	double **x, double **y, int *cap, int *count, double *error);
+/* Certify given normals (any nonzero vectors, n >= 3, in counter-clockwise
+ * order around the circle): the polygon of their points (inner) or tangent
+ * lines (outer) and its certified bound, as the uniform mode does. Steps over
+ * 90 degrees get the weaker bound of Proof 3, steps of 180 degrees or more
+ * an infinite one. Used to certify another sampling, e.g. the paper's (the
+ * normals of an obstacle's surface samples). */
+MK_API mkResult mkCObstacle2_Certify(mkBody2 b1, mkBody2 b2, mkBound bound, const double *nx, const double *ny, int n,
+	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
+/* Certify given normals in 3D: n normals (any nonzero vectors) and ntri
+ * triangles of them (3 indices each, counter-clockwise from outside) that
+ * partition the sphere; *error is Proof 3's bound for the convex hull of
+ * their points (inner) and for the intersection of their tangent
+ * half-spaces (outer), or +inf when some triangle is not positively
+ * oriented or the triangles' areas do not sum to 4 pi (not a partition).
+ * Used to certify another sampling, e.g. the paper's grid. */
+MK_API mkResult mkCObstacle3_Certify(mkBody3 b1, mkBody3 b2, const double *nx, const double *ny, const double *nz, int n,
+	const int *tris, int ntri, mkImpl impl, double *error);
+MK_API mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, mkBound bound, int splits, mkImpl impl,
+	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
+	double *error);
+
+MK_EXTERN_C_END
+
+#endif
