@@ -36,7 +36,7 @@ static void test_support(void)
 		double S = mkError2_Scale(b, b, MK_SET_PLUS);
 		for (int k = 0; k < 16; ++k) {
 			double th = 2 * MK_PI * mk_test_unit(&seed);
-			mkVec2 n, x = mkReferee_Point2(b, (mkVec2){cos(th), sin(th)}, &n), p;
+			mkVec2 n, x = mkReferee2_Point(b, (mkVec2){cos(th), sin(th)}, &n), p;
 			double h = mkError2_Support(b, b, MK_SET_PLUS, n, &p);
 			double want = 2 * (n.x * x.x + n.y * x.y);
 			worst_h = fmax(worst_h, fabs(h - want) / S);
@@ -49,7 +49,7 @@ static void test_support(void)
 		double S3 = mkError3_Scale(b3, b3, MK_SET_PLUS);
 		for (int k = 0; k < 16; ++k) {
 			double et = MK_PI * (mk_test_unit(&seed) - 0.5), om = 2 * MK_PI * mk_test_unit(&seed);
-			mkVec3 n, x = mkReferee_Point3(b3, (mkVec3){cos(et) * cos(om), cos(et) * sin(om), sin(et)}, &n), p;
+			mkVec3 n, x = mkReferee3_Point(b3, (mkVec3){cos(et) * cos(om), cos(et) * sin(om), sin(et)}, &n), p;
 			double h = mkError3_Support(b3, b3, MK_SET_PLUS, n, &p);
 			double want = 2 * (n.x * x.x + n.y * x.y + n.z * x.z);
 			worst_h = fmax(worst_h, fabs(h - want) / S3);

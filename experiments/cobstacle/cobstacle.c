@@ -578,12 +578,12 @@ void mkCObstacle_Describe(mkMeta *meta, const mkCObstacleOptions *o, long begin,
 
 /* ---- Fig. 9: one 2D scene, its obstacles and some C-slices ---------------- */
 
-typedef struct mkScene {
+typedef struct mkFig9Scene {
 	mkShape2 robot;
 	long nobs;
 	mkBody2 *obs;
 	double *angle;
-} mkScene;
+} mkFig9Scene;
 
 static int mkFigure_Commit(mkCsv *csv, mkMeta *meta, const char *content)
 {
@@ -625,7 +625,7 @@ static void mkWriteOutline(mkCsv *csv, mkBody2 b, const mkCObstacleWork *w, int 
 	mkEndBlock(csv);
 }
 
-static int mkFigure_Scene(mkRun *run, const mkScene *s)
+static int mkFigure_Scene(mkRun *run, const mkFig9Scene *s)
 {
 	static const char *const cols[] = { "body", "index", "a", "b", "eps", "cx", "cy", "angle" };
 	mkCsv csv;
@@ -646,7 +646,7 @@ static int mkFigure_Scene(mkRun *run, const mkScene *s)
 	return mkFigure_Commit(&csv, &run->meta, "fig. 9 scene: the robot (unturned, at the origin) and the obstacles");
 }
 
-static int mkFigure_Obstacles(mkRun *run, const mkScene *s, const mkCObstacleWork *w)
+static int mkFigure_Obstacles(mkRun *run, const mkFig9Scene *s, const mkCObstacleWork *w)
 {
 	static const char *const cols[] = { "obstacle", "k", "x", "y" };
 	mkCsv csv;
@@ -665,7 +665,7 @@ static long mkSliceHeading(const mkCObstacleOptions *o, long i, double *heading)
 	return h;
 }
 
-static int mkFigure_Robot(mkRun *run, const mkCObstacleOptions *o, const mkScene *s, const mkCObstacleWork *w)
+static int mkFigure_Robot(mkRun *run, const mkCObstacleOptions *o, const mkFig9Scene *s, const mkCObstacleWork *w)
 {
 	static const char *const cols[] = { "slice", "heading_index", "heading", "k", "x", "y" };
 	mkCsv csv;
@@ -680,7 +680,7 @@ static int mkFigure_Robot(mkRun *run, const mkCObstacleOptions *o, const mkScene
 	return mkFigure_Commit(&csv, &run->meta, "fig. 9 robot at the drawn headings, centred at the origin");
 }
 
-static int mkFigure_Slices(mkRun *run, const mkCObstacleOptions *o, const mkScene *s, const mkCObstacleWork *w,
+static int mkFigure_Slices(mkRun *run, const mkCObstacleOptions *o, const mkFig9Scene *s, const mkCObstacleWork *w,
 	double *x, double *y)
 {
 	static const char *const cols[] = { "slice", "heading_index", "heading", "obstacle", "k", "x", "y" };
@@ -720,7 +720,7 @@ static int mkFigure_Slices(mkRun *run, const mkCObstacleOptions *o, const mkScen
 int mkCObstacle_Figure9(mkRun *run, const mkCObstacleOptions *o, const mkCObstacleWork *w2)
 {
 	char msg[1024];
-	mkScene s;
+	mkFig9Scene s;
 	s.nobs = o->fig_obstacles;
 	int n = (int)w2->n;
 	long clamped = 0;
