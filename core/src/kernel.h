@@ -69,11 +69,11 @@ void mkK3_Run_avx512(const mkKPlan3 *p, const double *ux, const double *uy, cons
 
 /* ---- the single-precision tier (MK_PRECISION_F32) ----------------------
  * The same kernels (kernel_body.h) over float lanes: the prepared constants
- * below are the double ones rounded to float once per call; parameter
- * vectors are normalised in double and then rounded to float, points are
- * widened back to double on store. */
+ * below are the double ones, rescaled (sum.c) and rounded to float once per
+ * call; parameter vectors are normalised in double and then rounded to
+ * float, points are widened back to double on store. */
 typedef struct mkKShape2f {
-	float a, b, eps, q, qm1, k, inv2me, twome, loga, logb;
+	float a, b, eps, q, qm1, k, inv2me, twome;
 	int ellipse;
 } mkKShape2f;
 
@@ -81,7 +81,6 @@ typedef struct mkKShape3f {
 	float a, b, c, e1, e2;
 	float q1, q1m1, k1, q2, q2m1, k2, invq2;
 	float inv2me1, inv2me2, twome1, twome2;
-	float loga, logb, logc;
 	int ellipse;
 } mkKShape3f;
 

@@ -118,52 +118,94 @@ static void plan3(mkKPlan3 *p, mkBody3 b1, mkBody3 b2, const mkSumOptions *o)
 
 /* ---- the single-precision tier: its constants and its domain ------------------ */
 
-static void shape2f(mkKShape2f *f, const mkKShape2 *s)
+/* The float copies of a plan. Only the directions of M1^T u and of D2 v
+ * matter, so both matrices are divided by their largest entry; every length
+ * is divided by the largest semi-axis s of the pair (the canonical shapes
+ * then have semi-axes in (0, 1]) and M1, M2 are multiplied by s, which puts
+ * the points back in place. The products the kernels form then stay inside
+ * the normal float range wherever the domain test below holds. */
+static void shape2f(mkKShape2f *f, const mkKShape2 *s, double inv)
 {
-	f->a = (float)s->a; f->b = (float)s->b; f->eps = (float)s->eps;
+	f->a = (float)(s->a * inv); f->b = (float)(s->b * inv); f->eps = (float)s->eps;
 	f->q = (float)s->q; f->qm1 = (float)s->qm1; f->k = (float)s->k;
 	f->inv2me = (float)s->inv2me; f->twome = (float)s->twome;
-	f->loga = (float)s->loga; f->logb = (float)s->logb;
 	f->ellipse = s->ellipse;
 }
 
-static void shape3f(mkKShape3f *f, const mkKShape3 *s)
+static void shape3f(mkKShape3f *f, const mkKShape3 *s, double inv)
 {
-	f->a = (float)s->a; f->b = (float)s->b; f->c = (float)s->c;
+	f->a = (float)(s->a * inv); f->b = (float)(s->b * inv); f->c = (float)(s->c * inv);
 	f->e1 = (float)s->e1; f->e2 = (float)s->e2;
 	f->q1 = (float)s->q1; f->q1m1 = (float)s->q1m1; f->k1 = (float)s->k1;
 	f->q2 = (float)s->q2; f->q2m1 = (float)s->q2m1; f->k2 = (float)s->k2; f->invq2 = (float)s->invq2;
 	f->inv2me1 = (float)s->inv2me1; f->inv2me2 = (float)s->inv2me2;
 	f->twome1 = (float)s->twome1; f->twome2 = (float)s->twome2;
-	f->loga = (float)s->loga; f->logb = (float)s->logb; f->logc = (float)s->logc;
 	f->ellipse = s->ellipse;
 }
 
-static int eps_in_f32(double e) { return e >= MK_F32_EPS_MIN && e <= MK_F32_EPS_MAX; }
+/* dst[i] = src[i] * k rounded to float, for n entries; returns the largest
+ * |dst[i]|. */
+static double to_f32(float *dst, const double *src, int n, double k)
+{
+	double mx = 0.0;
+	for (int i = 0; i < n; ++i) {
+		dst[i] = (float)(src[i] * k);
+		if (fabs((double)dst[i]) > mx || dst[i] != dst[i]) mx = fabs((double)dst[i]);
+	}
+	return mx;
+}
 
-#define TO_F32(dst, src) \
-	for (size_t i_ = 0; i_ < sizeof(dst) / sizeof(float); ++i_) ((float *)(dst))[i_] = (float)((const double *)(src))[i_]
+static double max_abs(const double *v, int n)
+{
+	double mx = 0.0;
+	for (int i = 0; i < n; ++i) mx = fmax(mx, fabs(v[i]));
+	return mx;
+}
+
+/* A float map scaled as above is usable when its largest entry is a normal
+ * float well away from both ends of the range. */
+static int map_ok(double mx) { return mx >= 1e-30 && mx <= 1e30; }
 
 int mkKPlan2f_From(mkKPlan2f *f, const mkKPlan2 *p)
 {
-	shape2f(&f->s1, &p->s1);
-	shape2f(&f->s2, &p->s2);
-	TO_F32(f->M1, p->M1); TO_F32(f->M1T, p->M1T); TO_F32(f->M2, p->M2); TO_F32(f->D2, p->D2);
-	TO_F32(f->t1, p->t1); TO_F32(f->t2p, p->t2p);
+	double amax = fmax(fmax(p->s1.a, p->s1.b), fmax(p->s2.a, p->s2.b));
+	double amin = fmin(fmin(p->s1.a, p->s1.b), fmin(p->s2.a, p->s2.b));
+	shape2f(&f->s1, &p->s1, 1.0 / amax);
+	shape2f(&f->s2, &p->s2, 1.0 / amax);
+	double m1 = to_f32(&f->M1[0][0], &p->M1[0][0], 4, amax);
+	double m2 = to_f32(&f->M2[0][0], &p->M2[0][0], 4, amax);
+	to_f32(&f->M1T[0][0], &p->M1T[0][0], 4, 1.0 / max_abs(&p->M1T[0][0], 4));
+	to_f32(&f->D2[0][0], &p->D2[0][0], 4, 1.0 / max_abs(&p->D2[0][0], 4));
+	to_f32(f->t1, p->t1, 2, 1.0);
+	to_f32(f->t2p, p->t2p, 2, 1.0);
 	f->sigma = (float)p->sigma;
 	f->form = p->form; f->param = p->param;
-	return eps_in_f32(p->s1.eps) && eps_in_f32(p->s2.eps);
+	mkMat2 M1, M2;
+	memcpy(M1.m, p->M1, sizeof M1.m);
+	memcpy(M2.m, p->M2, sizeof M2.m);
+	return amax <= MK_F32_AXIS_RATIO_MAX * amin && mkMat2_Cond(M1) <= MK_F32_COND_MAX
+		&& mkMat2_Cond(M2) <= MK_F32_COND_MAX && map_ok(m1) && map_ok(m2);
 }
 
 int mkKPlan3f_From(mkKPlan3f *f, const mkKPlan3 *p)
 {
-	shape3f(&f->s1, &p->s1);
-	shape3f(&f->s2, &p->s2);
-	TO_F32(f->M1, p->M1); TO_F32(f->M1T, p->M1T); TO_F32(f->M2, p->M2); TO_F32(f->D2, p->D2);
-	TO_F32(f->t1, p->t1); TO_F32(f->t2p, p->t2p);
+	double amax = fmax(fmax(fmax(p->s1.a, p->s1.b), p->s1.c), fmax(fmax(p->s2.a, p->s2.b), p->s2.c));
+	double amin = fmin(fmin(fmin(p->s1.a, p->s1.b), p->s1.c), fmin(fmin(p->s2.a, p->s2.b), p->s2.c));
+	shape3f(&f->s1, &p->s1, 1.0 / amax);
+	shape3f(&f->s2, &p->s2, 1.0 / amax);
+	double m1 = to_f32(&f->M1[0][0], &p->M1[0][0], 9, amax);
+	double m2 = to_f32(&f->M2[0][0], &p->M2[0][0], 9, amax);
+	to_f32(&f->M1T[0][0], &p->M1T[0][0], 9, 1.0 / max_abs(&p->M1T[0][0], 9));
+	to_f32(&f->D2[0][0], &p->D2[0][0], 9, 1.0 / max_abs(&p->D2[0][0], 9));
+	to_f32(f->t1, p->t1, 3, 1.0);
+	to_f32(f->t2p, p->t2p, 3, 1.0);
 	f->sigma = (float)p->sigma;
 	f->form = p->form; f->param = p->param;
-	return eps_in_f32(p->s1.e1) && eps_in_f32(p->s1.e2) && eps_in_f32(p->s2.e1) && eps_in_f32(p->s2.e2);
+	mkMat3 M1, M2;
+	memcpy(M1.m, p->M1, sizeof M1.m);
+	memcpy(M2.m, p->M2, sizeof M2.m);
+	return amax <= MK_F32_AXIS_RATIO_MAX * amin && mkMat3_Cond(M1) <= MK_F32_COND_MAX
+		&& mkMat3_Cond(M2) <= MK_F32_COND_MAX && map_ok(m1) && map_ok(m2);
 }
 
 int mkSum2_TierHolds(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt)
