@@ -12,17 +12,20 @@ typedef struct Entry {
 	const mkMethod *method;
 	int nmin2, nmax2; /* resolution range in 2D */
 	int nmin3, nmax3; /* and in 3D (grid side) */
+	double tol;       /* stated accuracy of an MK_METHOD_APPROX method */
 } Entry;
 
 static const Entry table[] = {
-	{&mkMethod_ClosedNormal, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_ClosedGradient, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_ClosedPaper, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_Geometric, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_HullCgalEpick, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX},
-	{&mkMethod_HullCgalEpeck, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX},
-	{&mkMethod_HullQhull, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX},
-	{&mkMethod_EdgeSort, MK_SAMPLED_N_MIN, MK_EDGESORT_N_MAX, 0, 0},
+	{&mkMethod_ClosedNormal, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_ClosedGradient, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_ClosedNormalF32, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, MK_F32_TOL},
+	{&mkMethod_ClosedGradientF32, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, MK_F32_TOL},
+	{&mkMethod_ClosedPaper, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_Geometric, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_HullCgalEpick, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
+	{&mkMethod_HullCgalEpeck, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
+	{&mkMethod_HullQhull, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
+	{&mkMethod_EdgeSort, MK_SAMPLED_N_MIN, MK_EDGESORT_N_MAX, 0, 0, 0},
 };
 
 enum { COUNT = (int)(sizeof table / sizeof table[0]) };
@@ -49,6 +52,13 @@ static int runs_in(const mkMethod *m, int dim)
 {
 	return (dim == 2 && (m->flags & MK_METHOD_2D) && m->run2)
 		|| (dim == 3 && (m->flags & MK_METHOD_3D) && m->run3);
+}
+
+double mkMethod_Tolerance(const mkMethod *m)
+{
+	for (int i = 0; i < COUNT; ++i)
+		if (table[i].method == m) return (m->flags & MK_METHOD_APPROX) ? table[i].tol : 0.0;
+	return 0.0;
 }
 
 int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)
