@@ -49,8 +49,8 @@ typedef enum mkImpl { MK_IMPL_AUTO = 0, MK_IMPL_SCALAR = 1, MK_IMPL_AVX2 = 2, MK
  *  - MK_PRECISION_DOUBLE: double throughout, exp/log within 1 ulp: every
  *    point within a few thousand units of roundoff of the problem's scale.
  *  - MK_PRECISION_F32: the same kernels in single precision (16 lanes with
- *    AVX-512, 8 with AVX2; SLEEF's 1-ulp float exp/log, the C library's
- *    expf/logf in the scalar build), about twice the points per second of
+ *    AVX-512, 8 with AVX2; SLEEF's float exp (1 ulp) and log (3.5 ulp), the
+ *    C library's expf/logf in the scalar build), about twice the points per second of
  *    double on superellipses and superquadrics. Inputs and outputs stay
  *    double: parameter vectors are normalised in double, then rounded to
  *    float; the body constants are rounded to float once per call; points
