@@ -222,8 +222,8 @@ static void test_tails(void)
 	}
 }
 
-/* Options: names, a bad precision, the paper's form (double only), and the
- * domain question. */
+/* Options: names, a bad precision, the domain and the fallback outside it,
+ * and the paper's form (double only). */
 static void test_options(void)
 {
 	mkBody2 b = mkBody2_Make((mkShape2){1, 2, 0.5}, mkMat2_Identity(), (mkVec2){0, 0});
@@ -238,6 +238,32 @@ static void test_options(void)
 	ENSURE(!mkSum2_TierHolds(b, b, &opt));
 	opt.precision = MK_PRECISION_F32;
 	ENSURE(mkSum2_TierHolds(b, b, &opt));
+
+	/* Outside the domain (axis ratio 1e8; a map of condition 1e7) the call
+	 * runs the double kernel: the very same bits as a double call. */
+	mkBody2 thin = mkBody2_Make((mkShape2){1e4, 1e-4, 0.7}, mkMat2_Rotation(0.4), (mkVec2){1, 2});
+	mkMat2 skew = {{{1.0, 0.0}, {0.0, 1e-7}}};
+	mkBody2 flat = mkBody2_Make((mkShape2){2, 3, 1.3}, mkMat2_Mul(mkMat2_Rotation(0.3), skew), (mkVec2){0, 0});
+	mkBody2 pairs[2][2] = {{thin, b}, {b, flat}};
+	for (int k = 0; k < 2; ++k) {
+		mkSumOptions od = mkSumOptions_Default(), of = od;
+		of.precision = MK_PRECISION_F32;
+		ENSURE(!mkSum2_TierHolds(pairs[k][0], pairs[k][1], &of));
+		ENSURE(mkSum2_TierHolds(pairs[k][0], pairs[k][1], &od));
+		int n = 37;
+		mkSample2_Angles(n, ux, uy);
+		ENSURE(mkSum2_Batch(pairs[k][0], pairs[k][1], &od, ux, uy, n, o[0][0], o[0][1], NULL, NULL) == MK_OK);
+		ENSURE(mkSum2_Batch(pairs[k][0], pairs[k][1], &of, ux, uy, n, o[1][0], o[1][1], NULL, NULL) == MK_OK);
+		ENSURE(memcmp(o[0][0], o[1][0], (size_t)n * sizeof(double)) == 0);
+		ENSURE(memcmp(o[0][1], o[1][1], (size_t)n * sizeof(double)) == 0);
+	}
+	mkBody3 slab = mkBody3_Make((mkShape3){1e4, 1, 1e-3, 0.5, 1.5}, mkMat3_Identity(), (mkVec3){0, 0, 0});
+	mkBody3 ball = mkBody3_Make((mkShape3){1, 1, 1, 0.5, 1.5}, mkMat3_Identity(), (mkVec3){0, 0, 0});
+	mkSumOptions of3 = mkSumOptions_Default();
+	of3.precision = MK_PRECISION_F32;
+	ENSURE(!mkSum3_TierHolds(slab, ball, &of3));
+	ENSURE(mkSum3_TierHolds(ball, ball, &of3));
+
 	opt.form = MK_FORM_PAPER;
 	opt.impl = MK_IMPL_SCALAR;
 	ENSURE(mkSum2_Batch(b, b, &opt, ux, uy, 3, o[0][0], o[0][1], NULL, NULL) == MK_ERR_UNSUPPORTED);
