@@ -21,27 +21,27 @@
 
 static mkResult normal2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
 {
-	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_NORMAL);
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_NORMAL, MK_PRECISION_DOUBLE);
 }
 static mkResult normal3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
 {
-	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_NORMAL);
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_NORMAL, MK_PRECISION_DOUBLE);
 }
 static mkResult gradient2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
 {
-	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_GRADIENT);
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_GRADIENT, MK_PRECISION_DOUBLE);
 }
 static mkResult gradient3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
 {
-	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_GRADIENT);
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_GRADIENT, MK_PRECISION_DOUBLE);
 }
 static mkResult paper2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
 {
-	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_PAPER);
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_PAPER, MK_PRECISION_DOUBLE);
 }
 static mkResult paper3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
 {
-	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_PAPER);
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_PAPER, MK_PRECISION_DOUBLE);
 }
 static mkResult epick2(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
 {
@@ -70,6 +70,23 @@ static mkResult qhull3(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out
 
 /* ---- the entries ------------------------------------------------------------ */
 
+static mkResult normal2f(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_NORMAL, MK_PRECISION_F32);
+}
+static mkResult normal3f(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_NORMAL, MK_PRECISION_F32);
+}
+static mkResult gradient2f(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed2_Run(b1, b2, set, n, out, MK_FORM_GRADIENT, MK_PRECISION_F32);
+}
+static mkResult gradient3f(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out)
+{
+	return mkClosed3_Run(b1, b2, set, n, out, MK_FORM_GRADIENT, MK_PRECISION_F32);
+}
+
 const mkMethod mkMethod_ClosedNormal = {
 	"closed-normal",
 	"closed form, Theorem 1: support points f~1(n) - f~2(-n) along body 1's normals",
@@ -92,6 +109,25 @@ const mkMethod mkMethod_ClosedPaper = {
 	"Ruan & Chirikjian, CAD 2022, eqs. 2d_sq_f_m, 3d_sq_f_m, Phi_m1_general",
 	MK_METHOD_2D | MK_METHOD_3D,
 	mkAcceptAny2, mkAcceptAny3, paper2, paper3,
+};
+
+/* The single-precision tier (mink/sum.h, MK_PRECISION_F32): the same closed
+ * forms, each point within MK_F32_TOL of the scale of the exact boundary;
+ * pairs outside the tier's domain run in double. */
+const mkMethod mkMethod_ClosedNormalF32 = {
+	"closed-normal-f32",
+	"closed form, Theorem 1, in single precision (about 2x faster; points within 1e-6 of scale)",
+	"Ruan & Chirikjian, CAD 2022, Theorem 1; mink's f32 tier (docs/fast-tiers.md)",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_APPROX,
+	mkAcceptAny2, mkAcceptAny3, normal2f, normal3f,
+};
+
+const mkMethod mkMethod_ClosedGradientF32 = {
+	"closed-gradient-f32",
+	"closed form, Theorem 2, in single precision (about 2x faster; points within 1e-6 of scale)",
+	"Ruan & Chirikjian, CAD 2022, Theorem 2; mink's f32 tier (docs/fast-tiers.md)",
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_APPROX,
+	mkAcceptAny2, mkAcceptAny3, gradient2f, gradient3f,
 };
 
 const mkMethod mkMethod_Geometric = {
@@ -140,17 +176,20 @@ typedef struct Entry {
 	const mkMethod *method;
 	int nmin2, nmax2; /* resolution range in 2D */
 	int nmin3, nmax3; /* and in 3D (grid side) */
+	double tol;       /* stated accuracy of an MK_METHOD_APPROX method */
 } Entry;
 
 static const Entry table[] = {
-	{&mkMethod_ClosedNormal, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_ClosedGradient, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_ClosedPaper, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_Geometric, 1, INT_MAX, 2, MK_CLOSED3_N_MAX},
-	{&mkMethod_HullCgalEpick, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX},
-	{&mkMethod_HullCgalEpeck, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX},
-	{&mkMethod_HullQhull, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX},
-	{&mkMethod_EdgeSort, MK_SAMPLED_N_MIN, MK_EDGESORT_N_MAX, 0, 0},
+	{&mkMethod_ClosedNormal, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_ClosedGradient, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_ClosedNormalF32, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, MK_F32_TOL},
+	{&mkMethod_ClosedGradientF32, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, MK_F32_TOL},
+	{&mkMethod_ClosedPaper, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_Geometric, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
+	{&mkMethod_HullCgalEpick, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
+	{&mkMethod_HullCgalEpeck, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
+	{&mkMethod_HullQhull, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
+	{&mkMethod_EdgeSort, MK_SAMPLED_N_MIN, MK_EDGESORT_N_MAX, 0, 0, 0},
 };
 
 enum { COUNT = (int)(sizeof table / sizeof table[0]) };
@@ -177,6 +216,13 @@ static int runs_in(const mkMethod *m, int dim)
 {
 	return (dim == 2 && (m->flags & MK_METHOD_2D) && m->run2)
 		|| (dim == 3 && (m->flags & MK_METHOD_3D) && m->run3);
+}
+
+double mkMethod_Tolerance(const mkMethod *m)
+{
+	for (int i = 0; i < COUNT; ++i)
+		if (table[i].method == m) return (m->flags & MK_METHOD_APPROX) ? table[i].tol : 0.0;
+	return 0.0;
 }
 
 int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)

@@ -31,8 +31,8 @@ mkResult mkSurface3_Params(int n, mkPointSet *out, double **u);
 
 /* The core's closed forms in form `form`, one point per surface parameter.
  * (closed.c) */
-mkResult mkClosed2_Run(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out, mkForm form);
-mkResult mkClosed3_Run(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out, mkForm form);
+mkResult mkClosed2_Run(mkBody2 b1, mkBody2 b2, mkSet set, int n, mkPointSet *out, mkForm form, mkPrecision prec);
+mkResult mkClosed3_Run(mkBody3 b1, mkBody3 b2, mkSet set, int n, mkPointSet *out, mkForm form, mkPrecision prec);
 
 /* The geometric formula (body 2 an ellipse / ellipsoid). (geometric.c) */
 int mkGeometric2_Accepts(mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen);

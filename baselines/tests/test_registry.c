@@ -20,10 +20,11 @@ static mkBody3 superquadric(double a, double b, double c, double e1, double e2)
 
 int main(void)
 {
-	static const char *const names[] = {"closed-normal", "closed-gradient", "closed-paper", "geometric",
-		"hull-cgal-epick", "hull-cgal-epeck", "hull-qhull", "edge-sort"};
+	static const char *const names[] = {"closed-normal", "closed-gradient", "closed-normal-f32",
+		"closed-gradient-f32", "closed-paper", "geometric", "hull-cgal-epick", "hull-cgal-epeck", "hull-qhull",
+		"edge-sort"};
 	int count = mkRegistry_Count();
-	ENSURE(count >= 8);
+	ENSURE(count >= 10);
 	for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k) {
 		const mkMethod *m = mkRegistry_Find(names[k]);
 		ENSURE(m != NULL);
@@ -45,11 +46,18 @@ int main(void)
 		ENSURE(!!(m->flags & MK_METHOD_2D) == (m->run2 != NULL && m->accepts2 != NULL));
 		ENSURE(!!(m->flags & MK_METHOD_3D) == (m->run3 != NULL && m->accepts3 != NULL));
 		ENSURE(!((m->flags & MK_METHOD_EXACT) && (m->flags & MK_METHOD_SAMPLED)));
+		/* an approximate tier states its accuracy; no other method does */
+		ENSURE(!((m->flags & MK_METHOD_APPROX) && (m->flags & (MK_METHOD_EXACT | MK_METHOD_SAMPLED))));
+		ENSURE(!!(m->flags & MK_METHOD_APPROX) == (mkMethod_Tolerance(m) > 0));
 		for (int j = 0; j < i; ++j) ENSURE(strcmp(mkRegistry_At(j)->name, m->name) != 0);
 	}
 	ENSURE(mkMethod_EdgeSort.flags == (MK_METHOD_2D | MK_METHOD_SAMPLED));
 	ENSURE(mkMethod_ClosedGradient.flags & MK_METHOD_EXACT);
 	ENSURE(!(mkMethod_ClosedPaper.flags & MK_METHOD_EXACT));
+	ENSURE(mkMethod_ClosedGradientF32.flags & MK_METHOD_APPROX);
+	ENSURE(mkMethod_Tolerance(&mkMethod_ClosedNormalF32) == MK_F32_TOL);
+	ENSURE(mkMethod_Tolerance(&mkMethod_ClosedGradient) == 0.0);
+	ENSURE(mkMethod_Tolerance(NULL) == 0.0);
 
 	/* The geometric formula needs body 2 an ellipse / ellipsoid. */
 	char msg[512];

@@ -45,7 +45,7 @@ static void sumsAreFinite2(mkBody2 b, const char *text)
 		for (int mask = 0; mask < 16; ++mask) {
 			mkSumOptions opt = { (mask & 1) ? MK_SET_PLUS : MK_SET_CONTACT,
 				(mask & 2) ? MK_FORM_GRADIENT : MK_FORM_NORMAL,
-				(mask & 4) ? MK_PARAM_NORMAL : MK_PARAM_SURFACE, implList[ii] };
+				(mask & 4) ? MK_PARAM_NORMAL : MK_PARAM_SURFACE, implList[ii], MK_PRECISION_DOUBLE };
 			mkBody2 b1 = (mask & 8) ? other : b, b2 = (mask & 8) ? b : other;
 			mkResult r = mkSum2_Batch(b1, b2, &opt, ux, uy, N, o[0], o[1], o[2], o[3]);
 			FUZZ_CHECK(r == MK_OK, text);
@@ -68,7 +68,7 @@ static void sumsAreFinite3(mkBody3 b, const char *text)
 		for (int mask = 0; mask < 16; ++mask) {
 			mkSumOptions opt = { (mask & 1) ? MK_SET_PLUS : MK_SET_CONTACT,
 				(mask & 2) ? MK_FORM_GRADIENT : MK_FORM_NORMAL,
-				(mask & 4) ? MK_PARAM_NORMAL : MK_PARAM_SURFACE, implList[ii] };
+				(mask & 4) ? MK_PARAM_NORMAL : MK_PARAM_SURFACE, implList[ii], MK_PRECISION_DOUBLE };
 			mkBody3 b1 = (mask & 8) ? other : b, b2 = (mask & 8) ? b : other;
 			mkResult r = mkSum3_Batch(b1, b2, &opt, ux, uy, uz, N, o[0], o[1], o[2], o[3], o[4], o[5]);
 			FUZZ_CHECK(r == MK_OK, text);

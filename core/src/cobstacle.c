@@ -126,14 +126,14 @@ static void sincos_exact(double t, double *c, double *s)
 static mkResult eval2(mkBody2 b1, mkBody2 b2, mkImpl impl, const double *ux, const double *uy, int n,
 	double *x, double *y)
 {
-	mkSumOptions o = {MK_SET_CONTACT, MK_FORM_NORMAL, MK_PARAM_NORMAL, impl};
+	mkSumOptions o = {MK_SET_CONTACT, MK_FORM_NORMAL, MK_PARAM_NORMAL, impl, MK_PRECISION_DOUBLE};
 	return mkSum2_Batch(b1, b2, &o, ux, uy, n, x, y, NULL, NULL);
 }
 
 static mkResult eval3(mkBody3 b1, mkBody3 b2, mkImpl impl, const double *ux, const double *uy, const double *uz,
 	int n, double *x, double *y, double *z)
 {
-	mkSumOptions o = {MK_SET_CONTACT, MK_FORM_NORMAL, MK_PARAM_NORMAL, impl};
+	mkSumOptions o = {MK_SET_CONTACT, MK_FORM_NORMAL, MK_PARAM_NORMAL, impl, MK_PRECISION_DOUBLE};
 	return mkSum3_Batch(b1, b2, &o, ux, uy, uz, n, x, y, z, NULL, NULL, NULL);
 }
 
@@ -1012,7 +1012,7 @@ static mkResult do_task(Run *R, Work *w, long task)
 			if (o->mode == MK_CSPACE_PAPER) {
 				count = R->paper_n;
 				if (!work_batch(w, count, 2)) return MK_ERR_MEMORY;
-				mkSumOptions so = {MK_SET_CONTACT, o->form, MK_PARAM_SURFACE, o->impl};
+				mkSumOptions so = {MK_SET_CONTACT, o->form, MK_PARAM_SURFACE, o->impl, MK_PRECISION_DOUBLE};
 				r = mkSum2_Batch(ob, rob, &so, R->paper_u[0], R->paper_u[1], count, w->q[0], w->q[1], NULL, NULL);
 				if (r != MK_OK) return r;
 				px = w->q[0]; py = w->q[1];
@@ -1033,7 +1033,7 @@ static mkResult do_task(Run *R, Work *w, long task)
 			if (o->mode == MK_CSPACE_PAPER) {
 				count = R->paper_n * R->paper_n;
 				if (!work_batch(w, count, 3)) return MK_ERR_MEMORY;
-				mkSumOptions so = {MK_SET_CONTACT, o->form, MK_PARAM_SURFACE, o->impl};
+				mkSumOptions so = {MK_SET_CONTACT, o->form, MK_PARAM_SURFACE, o->impl, MK_PRECISION_DOUBLE};
 				r = mkSum3_Batch(ob, rob, &so, R->paper_u[0], R->paper_u[1], R->paper_u[2], count,
 					w->q[0], w->q[1], w->q[2], NULL, NULL, NULL);
 				if (r != MK_OK) return r;

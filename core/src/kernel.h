@@ -67,6 +67,56 @@ void mkK3_Run_avx512(const mkKPlan3 *p, const double *ux, const double *uy, cons
 	double *x, double *y, double *z, double *kx, double *ky, double *kz);
 #endif
 
+/* ---- the single-precision tier (MK_PRECISION_F32) ----------------------
+ * The same kernels (kernel_body.h) over float lanes: the prepared constants
+ * below are the double ones, rescaled (sum.c) and rounded to float once per
+ * call; parameter vectors are normalised in double and then rounded to
+ * float, points are widened back to double on store. */
+typedef struct mkKShape2f {
+	float a, b, eps, q, qm1, k, inv2me, twome;
+	int ellipse;
+} mkKShape2f;
+
+typedef struct mkKShape3f {
+	float a, b, c, e1, e2;
+	float q1, q1m1, k1, q2, q2m1, k2, invq2;
+	float inv2me1, inv2me2, twome1, twome2;
+	int ellipse;
+} mkKShape3f;
+
+typedef struct mkKPlan2f {
+	mkKShape2f s1, s2;
+	float M1[2][2], M1T[2][2], M2[2][2], D2[2][2], t1[2], t2p[2], sigma;
+	int form, param;
+} mkKPlan2f;
+
+typedef struct mkKPlan3f {
+	mkKShape3f s1, s2;
+	float M1[3][3], M1T[3][3], M2[3][3], D2[3][3], t1[3], t2p[3], sigma;
+	int form, param;
+} mkKPlan3f;
+
+/* Round a double plan to float. Returns 1 when the single-precision tier
+ * holds its stated accuracy for this plan (sum.c's domain test), else 0
+ * (the caller then runs the double kernel). */
+int mkKPlan2f_From(mkKPlan2f *f, const mkKPlan2 *p);
+int mkKPlan3f_From(mkKPlan3f *f, const mkKPlan3 *p);
+
+void mkK2_Run_f32_scalar(const mkKPlan2f *p, const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky);
+void mkK3_Run_f32_scalar(const mkKPlan3f *p, const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+#if defined(MINK_HAVE_X86_KERNELS)
+void mkK2_Run_f32_avx2(const mkKPlan2f *p, const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky);
+void mkK3_Run_f32_avx2(const mkKPlan3f *p, const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+void mkK2_Run_f32_avx512(const mkKPlan2f *p, const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky);
+void mkK3_Run_f32_avx512(const mkKPlan3f *p, const double *ux, const double *uy, const double *uz, int n,
+	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+#endif
+
 /* Scalar single-shape maps of the canonical shapes, from the scalar build of
  * kernel_body.h; body.c exposes them through the public API. */
 void mkK2_Surface(const mkKShape2 *s, double u1, double u2, double *x, double *m);

@@ -12,6 +12,18 @@
  *   KALL(mask)   nonzero when the mask holds in every lane
  *   KFN(name)    appends the ISA suffix to a function name
  *   KP           (optional, default 1) lane vectors processed together
+ * and, for a build whose lanes are not doubles (the single-precision tier,
+ * kernel_f32*.c), optionally:
+ *   KS           scalar type of the lanes (default double); KC(x) converts a
+ *                double constant to it (default: x unchanged)
+ *   KSHAPE2 KSHAPE3 KPLAN2 KPLAN3   the prepared constants in that type
+ *                (default mkKShape2 ... mkKPlan3)
+ *   KTINY KUNIT_TOL   the two thresholds below, for that type's range
+ *   KLOAD_UNIT2(s, px, py, u1, u2) / KLOAD_UNIT3(...)   load KW parameter
+ *                vectors from doubles at px[s], py[s] and make them unit
+ *                length (default: the load-and-normalise below, on KV)
+ * A double build defines none of these, and its arithmetic is exactly the
+ * same as before they existed.
  *
  * Interleaving. The elementary functions are out-of-line calls whose
  * latency, not their throughput, bounds a single chain of them: on this
@@ -38,8 +50,24 @@
 #endif
 #define KFOR(j) _Pragma("GCC unroll 8") for (int j = 0; j < KP; ++j)
 
+#ifndef KTINY
 #define KTINY 1e-300 /* floor of a divisor that may be exactly zero */
+#endif
+#ifndef KUNIT_TOL
 #define KUNIT_TOL 1e-15 /* |u|^2 - 1 of a unit vector rounded to double, with room */
+#endif
+#ifndef KS
+#define KS double
+#endif
+#ifndef KC
+#define KC(x) (x)
+#endif
+#ifndef KSHAPE2
+#define KSHAPE2 mkKShape2
+#define KSHAPE3 mkKShape3
+#define KPLAN2 mkKPlan2
+#define KPLAN3 mkKPlan3
+#endif
 
 /* log(1 + t) for t in [0, 1]: through log rather than log1p (twice as fast
  * in SLEEF). Rounding 1 + t costs at most half an ulp of 1 in absolute
@@ -59,7 +87,7 @@ static inline KV KFN(kmin)(KV a, KV b) { return KSEL(a >= b, b, a); }
  * |(a,b)|_q = mx * exp(L / q). With r = min/max <= 1 the ratios are
  * (1 + r^q)^(-(q-1)/q) for the larger and r^(q-1) times that for the
  * smaller: two logs and two exps. */
-static inline void KFN(pair_dual)(const KV *a, const KV *b, double qm1, double k,
+static inline void KFN(pair_dual)(const KV *a, const KV *b, KS qm1, KS k,
 	KV *ra, KV *rb, KV *mx, KV *L)
 {
 	KM agb[KP];
@@ -83,7 +111,7 @@ static inline void KFN(pair_dual)(const KV *a, const KV *b, double qm1, double k
 /* ---- 2D ------------------------------------------------------------------ */
 
 /* B1's point f(u) and a positive multiple of its gradient g(u). */
-static inline void KFN(se_surface)(const mkKShape2 *s, const KV *u1, const KV *u2,
+static inline void KFN(se_surface)(const KSHAPE2 *s, const KV *u1, const KV *u2,
 	KV *x1, KV *x2, KV *m1, KV *m2)
 {
 	if (s->ellipse) {
@@ -109,7 +137,7 @@ static inline void KFN(se_surface)(const mkKShape2 *s, const KV *u1, const KV *u
 }
 
 /* Theorem 1's f~(d): the support point in direction d (any nonzero d). */
-static inline void KFN(se_support)(const mkKShape2 *s, const KV *d1, const KV *d2, KV *x1, KV *x2)
+static inline void KFN(se_support)(const KSHAPE2 *s, const KV *d1, const KV *d2, KV *x1, KV *x2)
 {
 	if (s->ellipse) { /* A^2 d / |A d| */
 		KFOR(j) {
@@ -129,7 +157,7 @@ static inline void KFN(se_support)(const mkKShape2 *s, const KV *d1, const KV *d
 }
 
 /* log(w_min / w_max) of g^-1(m) (below) and which component is larger. */
-static inline void KFN(se_gradinv_ratio)(const mkKShape2 *s, const KV *m1, const KV *m2, KM *pg, KV *al)
+static inline void KFN(se_gradinv_ratio)(const KSHAPE2 *s, const KV *m1, const KV *m2, KM *pg, KV *al)
 {
 	KV q[KP];
 	KFOR(j) {
@@ -143,7 +171,7 @@ static inline void KFN(se_gradinv_ratio)(const mkKShape2 *s, const KV *m1, const
 
 /* Theorem 2's f~~(m) for a gradient direction m: u = g^-1(m)/|g^-1(m)|,
  * x = f(u), with g^-1(m)_i proportional to (a_i |m_i|)^(1/(2-eps)). */
-static inline void KFN(se_gradinv)(const mkKShape2 *s, const KV *m1, const KV *m2, KV *x1, KV *x2)
+static inline void KFN(se_gradinv)(const KSHAPE2 *s, const KV *m1, const KV *m2, KV *x1, KV *x2)
 {
 	if (s->ellipse) { KFN(se_support)(s, m1, m2, x1, x2); return; }
 	KM pg[KP];
@@ -151,7 +179,7 @@ static inline void KFN(se_gradinv)(const mkKShape2 *s, const KV *m1, const KV *m
 	KFN(se_gradinv_ratio)(s, m1, m2, pg, al);      /* log(w_min / w_max) */
 	KFOR(j) L[j] = KEXP(2.0 * al[j]);
 	KFOR(j) L[j] = KLOG1P1(L[j]);                 /* log(|w|^2 / w_max^2) */
-	KFOR(j) xmax[j] = KEXP(-0.5 * s->eps * L[j]); /* u_max^eps */
+	KFOR(j) xmax[j] = KEXP(KC(-0.5 * s->eps) * L[j]); /* u_max^eps */
 	KFOR(j) xmin[j] = KEXP(s->eps * (al[j] - 0.5 * L[j]));
 	KFOR(j) {
 		x1[j] = s->a * KCOPYSIGN(KSEL(pg[j], xmax[j], xmin[j]), m1[j]);
@@ -162,30 +190,33 @@ static inline void KFN(se_gradinv)(const mkKShape2 *s, const KV *m1, const KV *m
 /* log |u_i| of the unit parameter u = g^-1(m)/|g^-1(m)| of the point that
  * se_gradinv finds (Lemma 1's Phi is |g(u)|, whose powers 2-eps must act on
  * these logarithms: u_i itself may underflow where u_i^(2-eps) does not). */
-static inline void KFN(se_gradinv_logs)(const mkKShape2 *s, const KV *m1, const KV *m2, KV *l1, KV *l2)
+static inline void KFN(se_gradinv_logs)(const KSHAPE2 *s, const KV *m1, const KV *m2, KV *l1, KV *l2)
 {
 	KM pg[KP];
 	KV al[KP], lmax[KP];
 	KFN(se_gradinv_ratio)(s, m1, m2, pg, al);
 	KFOR(j) lmax[j] = KEXP(2.0 * al[j]);
-	KFOR(j) lmax[j] = -0.5 * KLOG1P1(lmax[j]);
+	KFOR(j) lmax[j] = KC(-0.5) * KLOG1P1(lmax[j]);
 	KFOR(j) {
 		l1[j] = KSEL(pg[j], lmax[j], al[j] + lmax[j]);
 		l2[j] = KSEL(pg[j], al[j] + lmax[j], lmax[j]);
 	}
 }
 
-static inline void KFN(se_dir)(const mkKShape2 *s, int form, const KV *d1, const KV *d2, KV *x1, KV *x2)
+static inline void KFN(se_dir)(const KSHAPE2 *s, int form, const KV *d1, const KV *d2, KV *x1, KV *x2)
 {
 	if (form == MK_FORM_NORMAL) KFN(se_support)(s, d1, d2, x1, x2);
 	else KFN(se_gradinv)(s, d1, d2, x1, x2);
 }
 
 /* KP * KW points: pux[0 .. KP*KW) and so on. */
-static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const double *puy,
+static inline void KFN(block2)(const KPLAN2 *p, const double *pux, const double *puy,
 	double *px, double *py, double *pkx, double *pky)
 {
 	KV u1[KP], u2[KP];
+#ifdef KLOAD_UNIT2
+	KFOR(j) KLOAD_UNIT2(j * KW, pux, puy, u1[j], u2[j]);
+#else
 	KFOR(j) {
 		u1[j] = KLOAD(pux + j * KW); u2[j] = KLOAD(puy + j * KW);
 		/* Only the direction of u counts. A unit vector (to rounding) is
@@ -200,6 +231,7 @@ static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const doubl
 			u1[j] = KSEL(unit, u1[j], v1 * inv); u2[j] = KSEL(unit, u2[j], v2 * inv);
 		}
 	}
+#endif
 	KV x1[KP], x2[KP], v1[KP], v2[KP]; /* v: B1's gradient (surface) or the normal */
 	if (p->param == MK_PARAM_SURFACE) {
 		KFN(se_surface)(&p->s1, u1, u2, x1, x2, v1, v2);
@@ -231,7 +263,7 @@ static inline void KFN(block2)(const mkKPlan2 *p, const double *pux, const doubl
 
 #define KBLK (KW * KP) /* points per block */
 
-void KFN(mkK2_Run)(const mkKPlan2 *p, const double *ux, const double *uy, int n,
+void KFN(mkK2_Run)(const KPLAN2 *p, const double *ux, const double *uy, int n,
 	double *x, double *y, double *kx, double *ky)
 {
 	int i = 0;
@@ -254,7 +286,7 @@ void KFN(mkK2_Run)(const mkKPlan2 *p, const double *ux, const double *uy, int n,
 
 /* ---- 3D ------------------------------------------------------------------ */
 
-static inline void KFN(sq_surface)(const mkKShape3 *s, const KV *u1, const KV *u2, const KV *u3,
+static inline void KFN(sq_surface)(const KSHAPE3 *s, const KV *u1, const KV *u2, const KV *u3,
 	KV *x1, KV *x2, KV *x3, KV *m1, KV *m2, KV *m3)
 {
 	if (s->ellipse) {
@@ -291,7 +323,7 @@ static inline void KFN(sq_surface)(const mkKShape3 *s, const KV *u1, const KV *u
 }
 
 /* Support point of the nested norm: inner l_q2 over (x, y), outer l_q1. */
-static inline void KFN(sq_support)(const mkKShape3 *s, const KV *d1, const KV *d2, const KV *d3,
+static inline void KFN(sq_support)(const KSHAPE3 *s, const KV *d1, const KV *d2, const KV *d3,
 	KV *x1, KV *x2, KV *x3)
 {
 	if (s->ellipse) {
@@ -319,7 +351,7 @@ static inline void KFN(sq_support)(const mkKShape3 *s, const KV *d1, const KV *d
  * domain, D = log(w12/w3), and cos(eta), sin(eta) follow from D alone. */
 /* The logarithms of the unit parameter of the point whose gradient is
  * parallel to m: log cos(eta), log |sin(eta)|, log |cos(omega)|, log |sin(omega)|. */
-static inline void KFN(sq_gradinv_logs)(const mkKShape3 *s, const KV *m1, const KV *m2, const KV *m3,
+static inline void KFN(sq_gradinv_logs)(const KSHAPE3 *s, const KV *m1, const KV *m2, const KV *m3,
 	KV *lrho, KV *l3, KV *lc1, KV *lc2)
 {
 	KM pg[KP];
@@ -339,22 +371,22 @@ static inline void KFN(sq_gradinv_logs)(const mkKShape3 *s, const KV *m1, const 
 	KFOR(j) t12[j] = KLOG(P12[j] / P[j]);
 	KFOR(j) t3[j] = KLOG(p3[j] / P[j]);
 	KFOR(j) {
-		D[j] = (t12[j] - t3[j] + 0.5 * s->twome2 * L12[j]) * s->inv2me1;
-		le[j] = -2.0 * KABS(D[j]);
+		D[j] = (t12[j] - t3[j] + KC(0.5 * s->twome2) * L12[j]) * s->inv2me1;
+		le[j] = KC(-2.0) * KABS(D[j]);
 	}
 	KFOR(j) le[j] = KEXP(le[j]);
 	KFOR(j) le[j] = KLOG1P1(le[j]);
 	KFOR(j) {
 		KM dpos = D[j] >= 0.0;
-		lrho[j] = KSEL(dpos, -0.5 * le[j], D[j] - 0.5 * le[j]); /* log cos(eta) */
-		l3[j] = KSEL(dpos, -D[j] - 0.5 * le[j], -0.5 * le[j]);  /* log |sin(eta)| */
-		KV lcmax = -0.5 * L12[j], lcmin = al[j] - 0.5 * L12[j]; /* log cos/sin(omega) */
+		lrho[j] = KSEL(dpos, KC(-0.5) * le[j], D[j] - 0.5 * le[j]); /* log cos(eta) */
+		l3[j] = KSEL(dpos, -D[j] - 0.5 * le[j], KC(-0.5) * le[j]);  /* log |sin(eta)| */
+		KV lcmax = KC(-0.5) * L12[j], lcmin = al[j] - 0.5 * L12[j]; /* log cos/sin(omega) */
 		lc1[j] = KSEL(pg[j], lcmax, lcmin);
 		lc2[j] = KSEL(pg[j], lcmin, lcmax);
 	}
 }
 
-static inline void KFN(sq_gradinv)(const mkKShape3 *s, const KV *m1, const KV *m2, const KV *m3,
+static inline void KFN(sq_gradinv)(const KSHAPE3 *s, const KV *m1, const KV *m2, const KV *m3,
 	KV *x1, KV *x2, KV *x3)
 {
 	if (s->ellipse) { KFN(sq_support)(s, m1, m2, m3, x1, x2, x3); return; }
@@ -365,7 +397,7 @@ static inline void KFN(sq_gradinv)(const mkKShape3 *s, const KV *m1, const KV *m
 	KFOR(j) x3[j] = s->c * KCOPYSIGN(KEXP(s->e1 * l3[j]), m3[j]);
 }
 
-static inline void KFN(sq_dir)(const mkKShape3 *s, int form, const KV *d1, const KV *d2, const KV *d3,
+static inline void KFN(sq_dir)(const KSHAPE3 *s, int form, const KV *d1, const KV *d2, const KV *d3,
 	KV *x1, KV *x2, KV *x3)
 {
 	if (form == MK_FORM_NORMAL) KFN(sq_support)(s, d1, d2, d3, x1, x2, x3);
@@ -374,10 +406,13 @@ static inline void KFN(sq_dir)(const mkKShape3 *s, int form, const KV *d1, const
 
 #define KMV3(A, v1, v2, v3, i) ((A)[i][0] * (v1) + (A)[i][1] * (v2) + (A)[i][2] * (v3))
 
-static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const double *puy, const double *puz,
+static inline void KFN(block3)(const KPLAN3 *p, const double *pux, const double *puy, const double *puz,
 	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
 {
 	KV u1[KP], u2[KP], u3[KP];
+#ifdef KLOAD_UNIT3
+	KFOR(j) KLOAD_UNIT3(j * KW, pux, puy, puz, u1[j], u2[j], u3[j]);
+#else
 	KFOR(j) {
 		u1[j] = KLOAD(pux + j * KW); u2[j] = KLOAD(puy + j * KW); u3[j] = KLOAD(puz + j * KW);
 		/* as in block2 */
@@ -391,6 +426,7 @@ static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const doubl
 			u3[j] = KSEL(unit, u3[j], v3 * inv);
 		}
 	}
+#endif
 	KV x1[KP], x2[KP], x3[KP], v1[KP], v2[KP], v3[KP];
 	if (p->param == MK_PARAM_SURFACE) {
 		KFN(sq_surface)(&p->s1, u1, u2, u3, x1, x2, x3, v1, v2, v3);
@@ -422,7 +458,7 @@ static inline void KFN(block3)(const mkKPlan3 *p, const double *pux, const doubl
 	}
 }
 
-void KFN(mkK3_Run)(const mkKPlan3 *p, const double *ux, const double *uy, const double *uz, int n,
+void KFN(mkK3_Run)(const KPLAN3 *p, const double *ux, const double *uy, const double *uz, int n,
 	double *x, double *y, double *z, double *kx, double *ky, double *kz)
 {
 	int i = 0;

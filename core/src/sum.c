@@ -13,7 +13,7 @@
 
 mkSumOptions mkSumOptions_Default(void)
 {
-	mkSumOptions o = {MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, MK_IMPL_AUTO};
+	mkSumOptions o = {MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, MK_IMPL_AUTO, MK_PRECISION_DOUBLE};
 	return o;
 }
 
@@ -21,6 +21,7 @@ static const char *const set_names[] = {"contact", "plus"};
 static const char *const form_names[] = {"normal", "gradient", "paper"};
 static const char *const param_names[] = {"surface", "normal"};
 static const char *const impl_names[] = {"auto", "scalar", "avx2", "avx512"};
+static const char *const precision_names[] = {"double", "f32"};
 
 #define NAME_OF(tab, v) ((int)(v) >= 0 && (size_t)(v) < sizeof tab / sizeof tab[0] ? tab[(int)(v)] : "?")
 
@@ -36,10 +37,12 @@ const char *mkSet_Name(mkSet v) { return NAME_OF(set_names, v); }
 const char *mkForm_Name(mkForm v) { return NAME_OF(form_names, v); }
 const char *mkParam_Name(mkParam v) { return NAME_OF(param_names, v); }
 const char *mkImpl_Name(mkImpl v) { return NAME_OF(impl_names, v); }
+const char *mkPrecision_Name(mkPrecision v) { return NAME_OF(precision_names, v); }
 int mkSet_Parse(const char *s) { return parse_name(set_names, 2, s); }
 int mkForm_Parse(const char *s) { return parse_name(form_names, 3, s); }
 int mkParam_Parse(const char *s) { return parse_name(param_names, 2, s); }
 int mkImpl_Parse(const char *s) { return parse_name(impl_names, 4, s); }
+int mkPrecision_Parse(const char *s) { return parse_name(precision_names, 2, s); }
 
 int mkImpl_Available(mkImpl impl)
 {
@@ -71,7 +74,8 @@ static int options_ok(const mkSumOptions *o)
 	return o && (o->set == MK_SET_CONTACT || o->set == MK_SET_PLUS)
 		&& (o->form == MK_FORM_NORMAL || o->form == MK_FORM_GRADIENT || o->form == MK_FORM_PAPER)
 		&& (o->param == MK_PARAM_SURFACE || o->param == MK_PARAM_NORMAL)
-		&& (int)o->impl >= MK_IMPL_AUTO && o->impl <= MK_IMPL_AVX512;
+		&& (int)o->impl >= MK_IMPL_AUTO && o->impl <= MK_IMPL_AVX512
+		&& (o->precision == MK_PRECISION_DOUBLE || o->precision == MK_PRECISION_F32);
 }
 
 static void plan2(mkKPlan2 *p, mkBody2 b1, mkBody2 b2, const mkSumOptions *o)
@@ -110,6 +114,120 @@ static void plan3(mkKPlan3 *p, mkBody3 b1, mkBody3 b2, const mkSumOptions *o)
 	p->t2p[0] = plus ? b2.t.x : 0.0; p->t2p[1] = plus ? b2.t.y : 0.0; p->t2p[2] = plus ? b2.t.z : 0.0;
 	p->sigma = sg;
 	p->form = o->form; p->param = o->param;
+}
+
+/* ---- the single-precision tier: its constants and its domain ------------------ */
+
+/* The float copies of a plan. Only the directions of M1^T u and of D2 v
+ * matter, so both matrices are divided by their largest entry; every length
+ * is divided by the largest semi-axis s of the pair (the canonical shapes
+ * then have semi-axes in (0, 1]) and M1, M2 are multiplied by s, which puts
+ * the points back in place. The products the kernels form then stay inside
+ * the normal float range wherever the domain test below holds. */
+static void shape2f(mkKShape2f *f, const mkKShape2 *s, double inv)
+{
+	f->a = (float)(s->a * inv); f->b = (float)(s->b * inv); f->eps = (float)s->eps;
+	f->q = (float)s->q; f->qm1 = (float)s->qm1; f->k = (float)s->k;
+	f->inv2me = (float)s->inv2me; f->twome = (float)s->twome;
+	f->ellipse = s->ellipse;
+}
+
+static void shape3f(mkKShape3f *f, const mkKShape3 *s, double inv)
+{
+	f->a = (float)(s->a * inv); f->b = (float)(s->b * inv); f->c = (float)(s->c * inv);
+	f->e1 = (float)s->e1; f->e2 = (float)s->e2;
+	f->q1 = (float)s->q1; f->q1m1 = (float)s->q1m1; f->k1 = (float)s->k1;
+	f->q2 = (float)s->q2; f->q2m1 = (float)s->q2m1; f->k2 = (float)s->k2; f->invq2 = (float)s->invq2;
+	f->inv2me1 = (float)s->inv2me1; f->inv2me2 = (float)s->inv2me2;
+	f->twome1 = (float)s->twome1; f->twome2 = (float)s->twome2;
+	f->ellipse = s->ellipse;
+}
+
+/* dst[i] = src[i] * k rounded to float, for n entries; returns the largest
+ * |dst[i]|. */
+static double to_f32(float *dst, const double *src, int n, double k)
+{
+	double mx = 0.0;
+	for (int i = 0; i < n; ++i) {
+		dst[i] = (float)(src[i] * k);
+		if (fabs((double)dst[i]) > mx || dst[i] != dst[i]) mx = fabs((double)dst[i]);
+	}
+	return mx;
+}
+
+static double max_abs(const double *v, int n)
+{
+	double mx = 0.0;
+	for (int i = 0; i < n; ++i) mx = fmax(mx, fabs(v[i]));
+	return mx;
+}
+
+/* A float map scaled as above is usable when its largest entry is a normal
+ * float well away from both ends of the range. */
+static int map_ok(double mx) { return mx >= 1e-30 && mx <= 1e30; }
+
+int mkKPlan2f_From(mkKPlan2f *f, const mkKPlan2 *p)
+{
+	double amax = fmax(fmax(p->s1.a, p->s1.b), fmax(p->s2.a, p->s2.b));
+	double amin = fmin(fmin(p->s1.a, p->s1.b), fmin(p->s2.a, p->s2.b));
+	shape2f(&f->s1, &p->s1, 1.0 / amax);
+	shape2f(&f->s2, &p->s2, 1.0 / amax);
+	double m1 = to_f32(&f->M1[0][0], &p->M1[0][0], 4, amax);
+	double m2 = to_f32(&f->M2[0][0], &p->M2[0][0], 4, amax);
+	to_f32(&f->M1T[0][0], &p->M1T[0][0], 4, 1.0 / max_abs(&p->M1T[0][0], 4));
+	to_f32(&f->D2[0][0], &p->D2[0][0], 4, 1.0 / max_abs(&p->D2[0][0], 4));
+	to_f32(f->t1, p->t1, 2, 1.0);
+	to_f32(f->t2p, p->t2p, 2, 1.0);
+	f->sigma = (float)p->sigma;
+	f->form = p->form; f->param = p->param;
+	mkMat2 M1, M2;
+	memcpy(M1.m, p->M1, sizeof M1.m);
+	memcpy(M2.m, p->M2, sizeof M2.m);
+	return amax <= MK_F32_AXIS_RATIO_MAX * amin && mkMat2_Cond(M1) <= MK_F32_COND_MAX
+		&& mkMat2_Cond(M2) <= MK_F32_COND_MAX && map_ok(m1) && map_ok(m2);
+}
+
+int mkKPlan3f_From(mkKPlan3f *f, const mkKPlan3 *p)
+{
+	double amax = fmax(fmax(fmax(p->s1.a, p->s1.b), p->s1.c), fmax(fmax(p->s2.a, p->s2.b), p->s2.c));
+	double amin = fmin(fmin(fmin(p->s1.a, p->s1.b), p->s1.c), fmin(fmin(p->s2.a, p->s2.b), p->s2.c));
+	shape3f(&f->s1, &p->s1, 1.0 / amax);
+	shape3f(&f->s2, &p->s2, 1.0 / amax);
+	double m1 = to_f32(&f->M1[0][0], &p->M1[0][0], 9, amax);
+	double m2 = to_f32(&f->M2[0][0], &p->M2[0][0], 9, amax);
+	to_f32(&f->M1T[0][0], &p->M1T[0][0], 9, 1.0 / max_abs(&p->M1T[0][0], 9));
+	to_f32(&f->D2[0][0], &p->D2[0][0], 9, 1.0 / max_abs(&p->D2[0][0], 9));
+	to_f32(f->t1, p->t1, 3, 1.0);
+	to_f32(f->t2p, p->t2p, 3, 1.0);
+	f->sigma = (float)p->sigma;
+	f->form = p->form; f->param = p->param;
+	mkMat3 M1, M2;
+	memcpy(M1.m, p->M1, sizeof M1.m);
+	memcpy(M2.m, p->M2, sizeof M2.m);
+	return amax <= MK_F32_AXIS_RATIO_MAX * amin && mkMat3_Cond(M1) <= MK_F32_COND_MAX
+		&& mkMat3_Cond(M2) <= MK_F32_COND_MAX && map_ok(m1) && map_ok(m2);
+}
+
+int mkSum2_TierHolds(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt)
+{
+	if (!options_ok(opt)) return 0;
+	if (opt->precision == MK_PRECISION_DOUBLE) return 1;
+	if (opt->form == MK_FORM_PAPER) return 0;
+	mkKPlan2 p;
+	mkKPlan2f f;
+	plan2(&p, b1, b2, opt);
+	return mkKPlan2f_From(&f, &p);
+}
+
+int mkSum3_TierHolds(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt)
+{
+	if (!options_ok(opt)) return 0;
+	if (opt->precision == MK_PRECISION_DOUBLE) return 1;
+	if (opt->form == MK_FORM_PAPER) return 0;
+	mkKPlan3 p;
+	mkKPlan3f f;
+	plan3(&p, b1, b2, opt);
+	return mkKPlan3f_From(&f, &p);
 }
 
 /* ---- the published gradient formula (reference only) -------------------------- */
@@ -163,7 +281,8 @@ mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
 	mkImpl impl = mkImpl_Resolve(opt->impl);
 	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
 	if (opt->form == MK_FORM_PAPER) {
-		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR))
+		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR)
+			|| opt->precision != MK_PRECISION_DOUBLE)
 			return MK_ERR_UNSUPPORTED;
 		for (int i = 0; i < n; ++i) {
 			double p[2], k[2];
@@ -175,6 +294,17 @@ mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
 	}
 	mkKPlan2 p;
 	plan2(&p, b1, b2, opt);
+	mkKPlan2f pf;
+	if (opt->precision == MK_PRECISION_F32 && mkKPlan2f_From(&pf, &p)) {
+		switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+		case MK_IMPL_AVX512: mkK2_Run_f32_avx512(&pf, ux, uy, n, x, y, kx, ky); break;
+		case MK_IMPL_AVX2: mkK2_Run_f32_avx2(&pf, ux, uy, n, x, y, kx, ky); break;
+#endif
+		default: mkK2_Run_f32_scalar(&pf, ux, uy, n, x, y, kx, ky); break;
+		}
+		return MK_OK;
+	}
 	switch (impl) {
 #if defined(MINK_HAVE_X86_KERNELS)
 	case MK_IMPL_AVX512: mkK2_Run_avx512(&p, ux, uy, n, x, y, kx, ky); break;
@@ -196,7 +326,8 @@ mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 	mkImpl impl = mkImpl_Resolve(opt->impl);
 	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
 	if (opt->form == MK_FORM_PAPER) {
-		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR))
+		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR)
+			|| opt->precision != MK_PRECISION_DOUBLE)
 			return MK_ERR_UNSUPPORTED;
 		for (int i = 0; i < n; ++i) {
 			double p[3], k[3];
@@ -208,6 +339,17 @@ mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 	}
 	mkKPlan3 p;
 	plan3(&p, b1, b2, opt);
+	mkKPlan3f pf;
+	if (opt->precision == MK_PRECISION_F32 && mkKPlan3f_From(&pf, &p)) {
+		switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+		case MK_IMPL_AVX512: mkK3_Run_f32_avx512(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+		case MK_IMPL_AVX2: mkK3_Run_f32_avx2(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+#endif
+		default: mkK3_Run_f32_scalar(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+		}
+		return MK_OK;
+	}
 	switch (impl) {
 #if defined(MINK_HAVE_X86_KERNELS)
 	case MK_IMPL_AVX512: mkK3_Run_avx512(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
@@ -220,7 +362,7 @@ mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 
 mkVec2 mkSum2_Point(mkBody2 b1, mkBody2 b2, mkSet set, mkForm form, mkParam param, mkVec2 u, mkVec2 *kiss)
 {
-	mkSumOptions o = {set, form, param, MK_IMPL_SCALAR};
+	mkSumOptions o = {set, form, param, MK_IMPL_SCALAR, MK_PRECISION_DOUBLE};
 	mkVec2 r = {NAN, NAN}, k = {NAN, NAN};
 	mkSum2_Batch(b1, b2, &o, &u.x, &u.y, 1, &r.x, &r.y, &k.x, &k.y);
 	if (kiss) *kiss = k;
@@ -229,7 +371,7 @@ mkVec2 mkSum2_Point(mkBody2 b1, mkBody2 b2, mkSet set, mkForm form, mkParam para
 
 mkVec3 mkSum3_Point(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkParam param, mkVec3 u, mkVec3 *kiss)
 {
-	mkSumOptions o = {set, form, param, MK_IMPL_SCALAR};
+	mkSumOptions o = {set, form, param, MK_IMPL_SCALAR, MK_PRECISION_DOUBLE};
 	mkVec3 r = {NAN, NAN, NAN}, k = {NAN, NAN, NAN};
 	mkSum3_Batch(b1, b2, &o, &u.x, &u.y, &u.z, 1, &r.x, &r.y, &r.z, &k.x, &k.y, &k.z);
 	if (kiss) *kiss = k;

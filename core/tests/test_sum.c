@@ -18,13 +18,13 @@ static const mkImpl impls[] = {MK_IMPL_SCALAR, MK_IMPL_AVX2, MK_IMPL_AVX512};
 
 static mkResult run2(mkBody2 b1, mkBody2 b2, mkSet set, mkForm form, mkParam param, mkImpl impl, int n, int slot)
 {
-	mkSumOptions opt = {set, form, param, impl};
+	mkSumOptions opt = {set, form, param, impl, MK_PRECISION_DOUBLE};
 	return mkSum2_Batch(b1, b2, &opt, ux, uy, n, o[slot][0], o[slot][1], o[slot][2], o[slot][3]);
 }
 
 static mkResult run3(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkParam param, mkImpl impl, int n, int slot)
 {
-	mkSumOptions opt = {set, form, param, impl};
+	mkSumOptions opt = {set, form, param, impl, MK_PRECISION_DOUBLE};
 	return mkSum3_Batch(b1, b2, &opt, ux, uy, uz, n, o[slot][0], o[slot][1], o[slot][2],
 		o[slot][3], o[slot][4], o[slot][5]);
 }

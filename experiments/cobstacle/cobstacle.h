@@ -39,8 +39,8 @@
  * Fig. 9's geometry (the obstacles and 10 of the 50 C-slices of one 2D scene
  * of 500 obstacles) is written beside the result, in the directory named
  * like the result without ".csv" (mkPath_Sibling). */
-#ifndef MINK_COBSTACLE_H
-#define MINK_COBSTACLE_H
+#ifndef MINK_EXP_COBSTACLE_H
+#define MINK_EXP_COBSTACLE_H
 
 #include <mink/mink.h>
 #include <mink_exp/exp.h>

@@ -5,7 +5,14 @@
  * loop reuses them) with CLOCK_MONOTONIC, on the calling thread only; after
  * one untimed warm-up call, `reps` measurements are taken and the median is
  * reported. Bodies are random with a fixed seed: 2D with rotation and shear
- * (the paper's validation draw), 3D with rotations. */
+ * (the paper's validation draw), 3D with rotations.
+ *
+ * Precision tiers (mkSumOptions.precision): each case and form is timed in
+ * the double kernel and in every faster tier alternately, A B A B within
+ * one repetition loop, so that both see the same machine state; a tier's
+ * row names it in `form` (gradient-f32) and gives, in `speedup`, the median
+ * over the repetitions of (double time / tier time) of the same repetition.
+ * The double rows have speedup 1. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -19,17 +26,21 @@
 #include "cli.h"
 #include "commands.h"
 
-
 static void help(FILE *fp)
 {
 	fprintf(fp,
-		"usage: mink bench [--n2 N] [--n3 N] [--reps R] [--impl auto|scalar|avx2|avx512] [--seed S]\n"
+		"usage: mink bench [--n2 N] [--n3 N] [--reps R] [--impl auto|scalar|avx2|avx512]\n"
+		"                  [--precision all|double|f32] [--seed S]\n"
 		"\n"
-		"Prints CSV  dim,case,form,n,ns_per_point  for 2D and 3D x EE (two ellipses/ellipsoids),\n"
-		"ES (ellipse/ellipsoid and superellipse/superquadric), SQ (two super shapes) x the\n"
-		"normal and gradient forms: the median over R measurements of the time of one batch\n"
-		"call divided by its number of points. Random bodies from a fixed seed: 2D rotated\n"
-		"and sheared, 3D rotated. The kernel used is printed on standard error.\n\n");
+		"Prints CSV  dim,case,form,n,ns_per_point,speedup  for 2D and 3D x EE (two\n"
+		"ellipses/ellipsoids), ES (ellipse/ellipsoid and superellipse/superquadric), SQ (two\n"
+		"super shapes) x the normal and gradient forms x the precision tiers: the median over\n"
+		"R measurements of the time of one batch call divided by its number of points. A\n"
+		"tier other than double is named in the form (gradient-f32) and timed alternately\n"
+		"with the double kernel; speedup is the median of double time / tier time over the\n"
+		"R pairs. Random bodies from a fixed seed: 2D rotated and sheared, 3D rotated. The\n"
+		"kernel used is printed on standard error.\n"
+		"\n");
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -49,47 +60,79 @@ typedef struct Bench {
 	mkImpl impl;
 } Bench;
 
-static double measure(Bench *b, mkBody2 *p2, mkBody3 *p3, mkForm form)
+static double call_s(Bench *b, mkBody2 *p2, mkBody3 *p3, const mkSumOptions *opt, int calls)
 {
-	mkSumOptions opt = {MK_SET_CONTACT, form, MK_PARAM_SURFACE, b->impl};
-	int calls = calls_for(b->count);
-	double *t = malloc((size_t)b->reps * sizeof *t);
-	if (!t) return NAN;
-	for (int r = -1; r < b->reps; ++r) {
-		double t0 = mkClock_Wall();
-		for (int c = 0; c < (r < 0 ? 1 : calls); ++c) {
-			if (b->dim == 2)
-				mkSum2_Batch(p2[0], p2[1], &opt, b->u[0], b->u[1], (int)b->count, b->o[0], b->o[1], b->o[2], b->o[3]);
-			else
-				mkSum3_Batch(p3[0], p3[1], &opt, b->u[0], b->u[1], b->u[2], (int)b->count,
-					b->o[0], b->o[1], b->o[2], b->o[3], b->o[4], b->o[5]);
-		}
-		if (r >= 0) t[r] = (mkClock_Wall() - t0) / calls / (double)b->count * 1e9;
+	double t0 = mkClock_Wall();
+	for (int c = 0; c < calls; ++c) {
+		if (b->dim == 2)
+			mkSum2_Batch(p2[0], p2[1], opt, b->u[0], b->u[1], (int)b->count, b->o[0], b->o[1], b->o[2], b->o[3]);
+		else
+			mkSum3_Batch(p3[0], p3[1], opt, b->u[0], b->u[1], b->u[2], (int)b->count,
+				b->o[0], b->o[1], b->o[2], b->o[3], b->o[4], b->o[5]);
 	}
-	qsort(t, (size_t)b->reps, sizeof *t, cmp_double);
-	double med = t[b->reps / 2];
+	return (mkClock_Wall() - t0) / calls / (double)b->count * 1e9;
+}
+
+static double median(double *t, int n)
+{
+	qsort(t, (size_t)n, sizeof *t, cmp_double);
+	return t[n / 2];
+}
+
+/* ns per point of the double kernel (ns[0]) and of the tier `tier` (ns[1],
+ * with the median ratio in *speedup), timed alternately; tier ==
+ * MK_PRECISION_DOUBLE times the double kernel alone. */
+static int measure(Bench *b, mkBody2 *p2, mkBody3 *p3, mkForm form, mkPrecision tier, double ns[2], double *speedup)
+{
+	mkSumOptions opt[2] = {mkSumOptions_Default(), mkSumOptions_Default()};
+	for (int k = 0; k < 2; ++k) {
+		opt[k].form = form;
+		opt[k].impl = b->impl;
+	}
+	opt[1].precision = tier;
+	int pair = tier != MK_PRECISION_DOUBLE, calls = calls_for(b->count);
+	double *t = malloc(3 * (size_t)b->reps * sizeof *t);
+	if (!t) return 1;
+	double *t1 = t + b->reps, *ratio = t + 2 * b->reps;
+	for (int k = 0; k <= pair; ++k) call_s(b, p2, p3, &opt[k], 1); /* warm-up */
+	for (int r = 0; r < b->reps; ++r) {
+		t[r] = call_s(b, p2, p3, &opt[0], calls);
+		if (pair) {
+			t1[r] = call_s(b, p2, p3, &opt[1], calls);
+			ratio[r] = t[r] / t1[r];
+		}
+	}
+	ns[0] = median(t, b->reps);
+	ns[1] = pair ? median(t1, b->reps) : ns[0];
+	*speedup = pair ? median(ratio, b->reps) : 1.0;
 	free(t);
-	return med;
+	return 0;
 }
 
 int mkCmd_Bench(int argc, char **argv)
 {
 	long n2 = 1000, n3 = 50, reps = 21, seed = 1;
-	int impl = MK_IMPL_AUTO;
+	int impl = MK_IMPL_AUTO, precision = -1;
+	static const char *const precisionNames[] = { "all", "double", "f32" };
+	int tiers = 0;
 	mkFlag flags[] = {
 		MK_FLAG_LONG("--n2", "N", "2D points per call (default 1000, in [3, 1000000])", &n2, 3, 1000000),
 		MK_FLAG_LONG("--n3", "N", "3D grid side, N x N points per call (default 50, in [3, 1000])", &n3, 3, 1000),
 		MK_FLAG_LONG("--reps", "R", "measurements per row (default 21, in [1, 10000])", &reps, 1, 10000),
 		MK_FLAG_IMPL("--impl", "kernel (default auto: the widest this CPU runs)", &impl),
+		MK_FLAG_CHOICE("--precision", "all|double|f32", "tiers to time (default all: double and f32)", &tiers,
+			precisionNames),
 		MK_FLAG_LONG("--seed", "S", "seed of the random bodies (default 1)", &seed, 0, 2147483647L),
 	};
 	int rc = mkCli_Parse("bench", flags, MK_COUNT(flags), argc, argv, help);
 	if (rc != MK_CLI_GO)
 		return rc;
+	if (tiers > 0)
+		precision = mkPrecision_Parse(precisionNames[tiers]);
 	fprintf(stderr, "mink bench: kernel %s\n", mkImpl_Name(mkImpl_Resolve((mkImpl)impl)));
 	mkRng rng;
 	mkRng_Seed(&rng, (uint64_t)seed, 0);
-	printf("dim,case,form,n,ns_per_point\n");
+	printf("dim,case,form,n,ns_per_point,speedup\n");
 	static const char *cases[3] = {"EE", "ES", "SQ"};
 	for (int dim = 2; dim <= 3; ++dim) {
 		Bench b = {0};
@@ -129,9 +172,28 @@ int mkCmd_Bench(int argc, char **argv)
 				}
 			}
 			for (int f = MK_FORM_NORMAL; f <= MK_FORM_GRADIENT; ++f) {
-				double ns = measure(&b, p2, p3, (mkForm)f);
-				printf("%d,%s,%s,%ld,%.3f\n", dim, cases[c], mkForm_Name((mkForm)f), b.count, ns);
-				fflush(stdout);
+				/* The double row, then each faster tier timed against it. */
+				for (int tier = MK_PRECISION_DOUBLE; tier <= MK_PRECISION_F32; ++tier) {
+					if (precision >= 0 && tier != precision) continue;
+					double ns[2], speedup;
+					if (measure(&b, p2, p3, (mkForm)f, (mkPrecision)tier, ns, &speedup)) {
+						fprintf(stderr, "mink bench: out of memory\n");
+						return 1;
+					}
+					int holds = dim == 2 ? mkSum2_TierHolds(p2[0], p2[1], &(mkSumOptions){MK_SET_CONTACT,
+						(mkForm)f, MK_PARAM_SURFACE, (mkImpl)impl, (mkPrecision)tier})
+						: mkSum3_TierHolds(p3[0], p3[1], &(mkSumOptions){MK_SET_CONTACT,
+						(mkForm)f, MK_PARAM_SURFACE, (mkImpl)impl, (mkPrecision)tier});
+					if (!holds)
+						fprintf(stderr, "mink bench: %dD %s %s: outside the %s tier's domain, the double kernel ran\n",
+							dim, cases[c], mkForm_Name((mkForm)f), mkPrecision_Name((mkPrecision)tier));
+					if (tier == MK_PRECISION_DOUBLE)
+						printf("%d,%s,%s,%ld,%.3f,1\n", dim, cases[c], mkForm_Name((mkForm)f), b.count, ns[0]);
+					else
+						printf("%d,%s,%s-%s,%ld,%.3f,%.3f\n", dim, cases[c], mkForm_Name((mkForm)f),
+							mkPrecision_Name((mkPrecision)tier), b.count, ns[1], speedup);
+					fflush(stdout);
+				}
 			}
 		}
 		for (int k = 0; k < 3; ++k) free(b.u[k]);

@@ -7,6 +7,8 @@
  *   name             dims  exact  sampled  accepts
  *   closed-normal    2D 3D  yes            any pair (Theorem 1)
  *   closed-gradient  2D 3D  yes            any pair (Theorem 2)
+ *   closed-normal-f32   2D 3D  approx 1e-6  any pair (Theorem 1, single precision)
+ *   closed-gradient-f32 2D 3D  approx 1e-6  any pair (Theorem 2, single precision)
  *   closed-paper     2D 3D                 any pair (Theorem 2 as printed;
  *                                          reference only, see mink/sum.h)
  *   geometric        2D 3D  yes            body2 an ellipse / ellipsoid
@@ -71,6 +73,13 @@ MK_API const mkMethod *mkRegistry_Find(const char *name);
  * functions return MK_ERR_RANGE for such n. */
 MK_API int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen);
 
+/* The accuracy a method states for its points, relative to the problem's
+ * scale: MK_F32_TOL (1e-6) for the single-precision tier (MK_METHOD_APPROX);
+ * 0 for every other method, which means "exact up to rounding" for
+ * MK_METHOD_EXACT ones (the referee's rounding allowance) and nothing for
+ * the rest. 0 also for NULL or an unregistered method. */
+MK_API double mkMethod_Tolerance(const mkMethod *m);
+
 /* m->accepts2/3 with the dimension checked first: 0 and a message when the
  * method does not run in this dimension or does not take this pair. */
 MK_API int mkMethod2_Accepts(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen);
@@ -79,6 +88,8 @@ MK_API int mkMethod3_Accepts(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet se
 /* The entries themselves, for code that wants one without a name lookup. */
 MK_API extern const mkMethod mkMethod_ClosedNormal;
 MK_API extern const mkMethod mkMethod_ClosedGradient;
+MK_API extern const mkMethod mkMethod_ClosedNormalF32;
+MK_API extern const mkMethod mkMethod_ClosedGradientF32;
 MK_API extern const mkMethod mkMethod_ClosedPaper;
 MK_API extern const mkMethod mkMethod_Geometric;
 MK_API extern const mkMethod mkMethod_HullCgalEpick;

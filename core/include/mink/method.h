@@ -39,7 +39,10 @@ typedef enum mkMethodFlags {
 	MK_METHOD_2D = 1,       /* runs in 2D */
 	MK_METHOD_3D = 2,       /* runs in 3D */
 	MK_METHOD_EXACT = 4,    /* its points lie exactly on the smooth boundary */
-	MK_METHOD_SAMPLED = 8   /* n is samples per body, output is a hull */
+	MK_METHOD_SAMPLED = 8,  /* n is samples per body, output is a hull */
+	MK_METHOD_APPROX = 16   /* a faster, less accurate tier of an exact method: its points lie
+	                           within a stated distance of the smooth boundary (relative to the
+	                           problem's scale; mkMethod_Tolerance in mink/registry.h) */
 } mkMethodFlags;
 
 typedef struct mkMethod {

@@ -45,14 +45,42 @@ typedef enum mkParam { MK_PARAM_SURFACE = 0, MK_PARAM_NORMAL = 1 } mkParam;
  * 1-ulp exp/log and are tested against it. */
 typedef enum mkImpl { MK_IMPL_AUTO = 0, MK_IMPL_SCALAR = 1, MK_IMPL_AVX2 = 2, MK_IMPL_AVX512 = 3 } mkImpl;
 
+/* The arithmetic of the kernels (docs/fast-tiers.md).
+ *  - MK_PRECISION_DOUBLE: double throughout, exp/log within 1 ulp: every
+ *    point within a few thousand units of roundoff of the problem's scale.
+ *  - MK_PRECISION_F32: the same kernels in single precision (16 lanes with
+ *    AVX-512, 8 with AVX2; SLEEF's float exp (1 ulp) and log (3.5 ulp), the
+ *    C library's expf/logf in the scalar build), about twice the points per second of
+ *    double on superellipses and superquadrics. Inputs and outputs stay
+ *    double: parameter vectors are normalised in double, then rounded to
+ *    float; the body constants are rounded to float once per call; points
+ *    are widened on store. Stated accuracy, relative to the problem's scale
+ *    S (|t| + |M|_F |a| summed over the bodies): every point within
+ *    MK_F32_TOL S of the exact boundary of the sum (measured along the exact
+ *    normal), and within MK_F32_TOL S of the exact point of the same
+ *    parameter wherever that point is well-conditioned (moves by less than
+ *    1e-7 S when its direction turns by float-sized amounts); measured
+ *    against 256-bit MPFR over the whole exponent range [MK_EPS_MIN,
+ *    MK_EPS_MAX]. The tier holds this inside its domain: the largest
+ *    semi-axis of the pair at most MK_F32_AXIS_RATIO_MAX times the smallest,
+ *    and each map's condition number (mkMat2_Cond) at most MK_F32_COND_MAX.
+ *    Outside it the batch call runs the double kernel instead (same impl),
+ *    so it never returns points that miss the stated accuracy;
+ *    mkSum2_TierHolds tells which kernel runs. */
+typedef enum mkPrecision { MK_PRECISION_DOUBLE = 0, MK_PRECISION_F32 = 1 } mkPrecision;
+#define MK_F32_TOL 1e-6
+#define MK_F32_AXIS_RATIO_MAX 1e6
+#define MK_F32_COND_MAX 1e6
+
 typedef struct mkSumOptions {
 	mkSet set;
 	mkForm form;
 	mkParam param;
 	mkImpl impl;
+	mkPrecision precision;
 } mkSumOptions;
 
-/* Defaults: contact space, gradient form, surface parameters, AUTO. */
+/* Defaults: contact space, gradient form, surface parameters, AUTO, DOUBLE. */
 MK_API mkSumOptions mkSumOptions_Default(void);
 
 /* Name of an enum value ("contact", "gradient", "surface", "avx512", ...) and
@@ -61,20 +89,30 @@ MK_API const char *mkSet_Name(mkSet v);
 MK_API const char *mkForm_Name(mkForm v);
 MK_API const char *mkParam_Name(mkParam v);
 MK_API const char *mkImpl_Name(mkImpl v);
+MK_API const char *mkPrecision_Name(mkPrecision v); /* "double", "f32" */
 MK_API int mkSet_Parse(const char *s);
 MK_API int mkForm_Parse(const char *s);
 MK_API int mkParam_Parse(const char *s);
 MK_API int mkImpl_Parse(const char *s);
+MK_API int mkPrecision_Parse(const char *s);
 
 /* 1 if this CPU and build can run the kernel. SCALAR and AUTO always can. */
 MK_API int mkImpl_Available(mkImpl impl);
 /* The kernel AUTO resolves to on this machine. */
 MK_API mkImpl mkImpl_Resolve(mkImpl impl);
 
+/* 1 when a batch call with these bodies and options runs the kernel of
+ * opt->precision, 0 when it falls back to the double kernel because the
+ * pair lies outside that tier's domain (see mkPrecision) or opt is NULL.
+ * Always 1 for MK_PRECISION_DOUBLE. */
+MK_API int mkSum2_TierHolds(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt);
+MK_API int mkSum3_TierHolds(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt);
+
 /* Batch closed form over n parameter vectors (u may be any nonzero finite
  * vectors; only their directions matter). Fails with MK_ERR_ARGUMENT on n < 0, NULL
  * required pointers or a bad option, MK_ERR_UNSUPPORTED for MK_FORM_PAPER
- * with MK_PARAM_NORMAL or a vector impl, or an impl this CPU lacks. Bodies
+ * with MK_PARAM_NORMAL, a vector impl or a precision other than double, or
+ * an impl this CPU lacks. Bodies
  * must be valid (mkBody2_IsValid); this is asserted, not checked. */
 MK_API mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
 	const double *ux, const double *uy, int n,

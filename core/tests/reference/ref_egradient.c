@@ -106,7 +106,7 @@ int main(void)
 	static double core[TRIALS * N], floorExact[TRIALS * N];
 	ENSURE(mkSample2_Angles(N, ux, uy) == MK_OK);
 	refRng rng = { 6701u };
-	mkSumOptions opt = { MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, MK_IMPL_AUTO };
+	mkSumOptions opt = { MK_SET_CONTACT, MK_FORM_GRADIENT, MK_PARAM_SURFACE, MK_IMPL_AUTO, MK_PRECISION_DOUBLE };
 	refVec u, X, K;
 	refVec_Init(&u);
 	refVec_Init(&X);

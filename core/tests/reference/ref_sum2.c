@@ -12,12 +12,23 @@
  *    +-10; ratio 1e4 with shear -10 and 2.5), at angles on the axes, 1e-8 and
  *    1e-4 off them, on the diagonals, at the world normals of the bodies'
  *    faces (exactly and turned by 1e-13 and 1e-9 rad) and at random;
+ *  - the extremes' cases again at the ends of the exponent range, every
+ *    pair from {1e-6, 1e-5, 1e-4, 1, 2 - 1e-4, 2 - 1e-5, 2 - 1e-6} (group 4);
  *  - parameter vectors that are not unit vectors (scaled by 3, 1e-5, 1e5,
- *    1e-150, 1e150, 1e-300, 1e300), which sum.h accepts. */
+ *    1e-150, 1e150, 1e-300, 1e300), which sum.h accepts.
+ * Usage: ref_sumN [group [tier [all]]]: group 1-4 in the order above, the
+ * parameter vectors being 3 (0: all); tier "double" (default) or "f32";
+ * "all" evaluates the conditioning of every point of group 4 as well. */
 #include "refcheck.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
+
+/* The precision tier under test: double unless the second argument names
+ * another ("f32": the single-precision tier against its stated accuracy). */
+static mkPrecision tier = MK_PRECISION_DOUBLE;
+
 
 static mkBody2 body(double a, double b, double eps, double angle, double shear, double tx, double ty)
 {
@@ -35,7 +46,7 @@ static mkBody2 body(double a, double b, double eps, double angle, double shear, 
 
 static void validationDraws(void)
 {
-	refGroup g = { .name = "ref_sum2 validation" };
+	refGroup g = { .name = "ref_sum2 validation", .precision = tier };
 	refRng rng = { 6101u };
 	enum { N = 32 };
 	double ux[N], uy[N];
@@ -72,11 +83,12 @@ static void faceNormal(mkBody2 B, int axis, double turn, double *ux, double *uy)
 	*uy = (s * x + c * y) / r;
 }
 
-static void extremes(void)
+/* E: seven exponents, every pair of which is tried; all: evaluate the
+ * conditioning of every point (for the statistics; costly in MPFR). */
+static void extremes(const double *E, const char *name, uint64_t seed, int all)
 {
-	static const double E[] = { 1e-3, 0.01, 0.5, 1.0, 1.5, 1.99, 2.0 - 1e-3 };
-	refGroup g = { .name = "ref_sum2 extremes", .conditionAll = 1 };
-	refRng rng = { 6102u };
+	refGroup g = { .name = name, .precision = tier, .conditionAll = all };
+	refRng rng = { seed };
 	enum { N = 20 };
 	double ux[N], uy[N];
 	for (int i = 0; i < 7; ++i)
@@ -142,7 +154,7 @@ static void extremes(void)
 static void scaledParameters(void)
 {
 	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150, 1e-300, 1e300 };
-	refGroup g = { .name = "ref_sum2 scaled-u" };
+	refGroup g = { .name = "ref_sum2 scaled-u", .precision = tier };
 	refRng rng = { 6103u };
 	enum { N = 16 };
 	double ux0[N], uy0[N], ux[N], uy[N];
@@ -171,10 +183,27 @@ static void scaledParameters(void)
 int main(int argc, char **argv)
 {
 	int which = argc > 1 ? atoi(argv[1]) : 0;
+	if (argc > 2) {
+		int t = mkPrecision_Parse(argv[2]);
+		ENSURE(t >= 0);
+		if (t < 0)
+			return refTest_Result(argv[0]);
+		tier = (mkPrecision)t;
+	}
+	/* "all" as the third argument: evaluate the conditioning of every point
+	 * of group 4 too, for its statistics (twice the time; the test runs
+	 * without, its tolerances need it only where an error is large). */
+	int rangeAll = argc > 3 && strcmp(argv[3], "all") == 0;
 	if (which == 0 || which == 1)
 		validationDraws();
+	static const double E[] = { 1e-3, 0.01, 0.5, 1.0, 1.5, 1.99, 2.0 - 1e-3 };
+	/* the ends of the valid exponent range, where the powers' exponents
+	 * reach 5e-7 and 2e6 */
+	static const double R[] = { 1e-6, 1e-5, 1e-4, 1.0, 2.0 - 1e-4, 2.0 - 1e-5, 2.0 - 1e-6 };
 	if (which == 0 || which == 2)
-		extremes();
+		extremes(E, "ref_sum2 extremes", 6102u, 1);
+	if (which == 0 || which == 4)
+		extremes(R, "ref_sum2 eps-range", 6104u, rangeAll);
 	if (which == 0 || which == 3)
 		scaledParameters();
 	return refTest_Result("ref_sum2");

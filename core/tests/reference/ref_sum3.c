@@ -14,14 +14,25 @@
  *    the poles exactly, 1e-8 and 1e-4 rad from them, on and near the axes,
  *    at the world normals of the bodies' faces (exactly and tilted by 1e-13
  *    and 1e-9) and at random;
+ *  - the extremes' cases again at the ends of the exponent range, every
+ *    pair from {1e-6, 1e-5, 1e-4, 1, 2 - 1e-4, 2 - 1e-5, 2 - 1e-6} (group 4);
  *  - parameter vectors that are not unit vectors (scaled by 3, 1e-5, 1e5,
- *    1e-150, 1e150, 1e-300, 1e300), which sum.h accepts. */
+ *    1e-150, 1e150, 1e-300, 1e300), which sum.h accepts.
+ * Usage: ref_sumN [group [tier [all]]]: group 1-4 in the order above, the
+ * parameter vectors being 3 (0: all); tier "double" (default) or "f32";
+ * "all" evaluates the conditioning of every point of group 4 as well. */
 #include "refcheck.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
+
+/* The precision tier under test: double unless the second argument names
+ * another ("f32": the single-precision tier against its stated accuracy). */
+static mkPrecision tier = MK_PRECISION_DOUBLE;
 
 /* Shear in 3D: [1 s 0; 0 1 s2; 0 0 1]. */
+
 static mkMat3 shear3(double s, double s2)
 {
 	mkMat3 M = mkMat3_Identity();
@@ -56,7 +67,7 @@ static mkMat3 quatRotation(refRng *rng)
 
 static void validationDraws(void)
 {
-	refGroup g = { .name = "ref_sum3 validation" };
+	refGroup g = { .name = "ref_sum3 validation", .precision = tier };
 	refRng rng = { 6201u };
 	enum { G = 5, N = G * G };
 	double ux[N], uy[N], uz[N];
@@ -109,11 +120,12 @@ static void faceNormal(mkBody3 B, int axis, double tilt, int toward, double *ux,
 	*uz = v[2] / r;
 }
 
-static void extremes(void)
+/* E: seven exponents, every pair of which is tried; all: evaluate the
+ * conditioning of every point (for the statistics; costly in MPFR). */
+static void extremes(const double *E, const char *name, uint64_t seed, int all)
 {
-	static const double E[] = { 1e-3, 0.01, 0.5, 1.0, 1.5, 1.99, 2.0 - 1e-3 };
-	refGroup g = { .name = "ref_sum3 extremes", .conditionAll = 1 };
-	refRng rng = { 6202u };
+	refGroup g = { .name = name, .precision = tier, .conditionAll = all };
+	refRng rng = { seed };
 	enum { N = 20 };
 	double ux[N], uy[N], uz[N];
 	const double h = REF_PI / 2;
@@ -189,7 +201,7 @@ static void extremes(void)
 static void scaledParameters(void)
 {
 	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150, 1e-300, 1e300 };
-	refGroup g = { .name = "ref_sum3 scaled-u" };
+	refGroup g = { .name = "ref_sum3 scaled-u", .precision = tier };
 	refRng rng = { 6203u };
 	enum { G = 4, N = G * G };
 	double ux0[N], uy0[N], uz0[N], ux[N], uy[N], uz[N];
@@ -224,10 +236,27 @@ static void scaledParameters(void)
 int main(int argc, char **argv)
 {
 	int which = argc > 1 ? atoi(argv[1]) : 0;
+	if (argc > 2) {
+		int t = mkPrecision_Parse(argv[2]);
+		ENSURE(t >= 0);
+		if (t < 0)
+			return refTest_Result(argv[0]);
+		tier = (mkPrecision)t;
+	}
+	/* "all" as the third argument: evaluate the conditioning of every point
+	 * of group 4 too, for its statistics (twice the time; the test runs
+	 * without, its tolerances need it only where an error is large). */
+	int rangeAll = argc > 3 && strcmp(argv[3], "all") == 0;
 	if (which == 0 || which == 1)
 		validationDraws();
+	static const double E[] = { 1e-3, 0.01, 0.5, 1.0, 1.5, 1.99, 2.0 - 1e-3 };
+	/* the ends of the valid exponent range, where the powers' exponents
+	 * reach 5e-7 and 2e6 */
+	static const double R[] = { 1e-6, 1e-5, 1e-4, 1.0, 2.0 - 1e-4, 2.0 - 1e-5, 2.0 - 1e-6 };
 	if (which == 0 || which == 2)
-		extremes();
+		extremes(E, "ref_sum3 extremes", 6202u, 1);
+	if (which == 0 || which == 4)
+		extremes(R, "ref_sum3 eps-range", 6204u, rangeAll);
 	if (which == 0 || which == 3)
 		scaledParameters();
 	return refTest_Result("ref_sum3");

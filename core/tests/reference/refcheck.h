@@ -44,7 +44,9 @@ typedef struct refGroup {
 	                     that `illConditioned` counts them all; otherwise only
 	                     where an error exceeds the rounding part */
 	long illConditioned; /* points whose exact answer moves by more than
-	                        1e-9 S under rounding-size perturbations */
+	                        1e-9 S (1e-7 S for MK_PRECISION_F32) under
+	                        rounding-size perturbations */
+	mkPrecision precision; /* the tier run (DOUBLE unless set; see refcheck.c) */
 	long points;   /* reference points computed */
 	long nonfinite;
 } refGroup;

@@ -69,21 +69,21 @@ file(MAKE_DIRECTORY ${WORK})
 
 if(MODE STREQUAL "tiny")
   # 2D levels 5 and 8, 3D levels 3 and 4, 3 trials, cases EE and SQ. Rows
-  # expected, from the registry (8 methods; the geometric one needs body 2 an
-  # ellipse, edge sorting runs in 2D only):
-  #   2D EE 8 methods x 2 levels x 3 = 48, 2D SQ 7 x 2 x 3 = 42,
-  #   3D EE 7 x 2 x 3 = 42,                3D SQ 6 x 2 x 3 = 36;  168 in all.
+  # expected, from the registry (10 methods; the geometric one needs body 2
+  # an ellipse, edge sorting runs in 2D only):
+  #   2D EE 10 methods x 2 levels x 3 = 60, 2D SQ 9 x 2 x 3 = 54,
+  #   3D EE 9 x 2 x 3 = 54,                 3D SQ 8 x 2 x 3 = 48;  216 in all.
   set(args --trials 3 --seed 7 --cases EE,SQ --levels 2d=5,8 --levels 3d=3:1:4 --budget 1e6)
   mk_run(${args} --out ${WORK}/t.csv)
   mk_read_csv(${WORK}/t.csv t)
   mk_expect_eq("header" "${t_header}"
     "dim;case;method;level;points_per_body;trial;status;seconds;points_out;trials_planned;trials_run;warmup_seconds")
   list(LENGTH t_rows n)
-  mk_expect_eq("rows" ${n} 168)
+  mk_expect_eq("rows" ${n} 216)
   mk_count("${t_header}" "${t_rows}" n status ok)
-  mk_expect_eq("rows with status ok" ${n} 168)
+  mk_expect_eq("rows with status ok" ${n} 216)
   mk_count("${t_header}" "${t_rows}" n trials_run 3)
-  mk_expect_eq("rows whose cell ran all 3 trials" ${n} 168)
+  mk_expect_eq("rows whose cell ran all 3 trials" ${n} 216)
   mk_count("${t_header}" "${t_rows}" n dim 2 case SQ method geometric)
   mk_expect_eq("2D SQ geometric rows" ${n} 0)
   mk_count("${t_header}" "${t_rows}" n dim 3 method edge-sort)
@@ -102,7 +102,7 @@ if(MODE STREQUAL "tiny")
   endforeach()
   # The sidecar says what was skipped and how the clock was used.
   file(READ ${WORK}/t.csv.meta meta)
-  foreach(want "experiment: timing" "rows: 168" "rotation_draw: paper" "threads: 1"
+  foreach(want "experiment: timing" "rows: 216" "rotation_draw: paper" "threads: 1"
       "2D SQ geometric: 6 of 6 pairs not accepted" "3D EE edge-sort: 6 of 6 pairs not accepted"
       "clock: CLOCK_MONOTONIC" "capped_cells: 0" "failed_calls: 0" "levels_2d: 5,8" "levels_3d: 3,4")
     string(FIND "${meta}" "${want}" at)
@@ -118,15 +118,15 @@ if(MODE STREQUAL "tiny")
 
 elseif(MODE STREQUAL "cap")
   # No budget: every cell runs --min-trials (2) of its 5 trials. 2D SQ at
-  # two levels: 7 methods x 2 levels x 2 trials = 28 rows, trials 0 and 1.
+  # two levels: 9 methods x 2 levels x 2 trials = 36 rows, trials 0 and 1.
   mk_run(--trials 5 --min-trials 2 --budget 0 --dim 2 --cases SQ --levels 2d=10,20 --out ${WORK}/c.csv)
   mk_read_csv(${WORK}/c.csv c)
   list(LENGTH c_rows n)
-  mk_expect_eq("rows" ${n} 28)
+  mk_expect_eq("rows" ${n} 36)
   mk_count("${c_header}" "${c_rows}" n trials_planned 5 trials_run 2)
-  mk_expect_eq("rows saying 2 of 5 trials ran" ${n} 28)
+  mk_expect_eq("rows saying 2 of 5 trials ran" ${n} 36)
   mk_count("${c_header}" "${c_rows}" n trial 1)
-  mk_expect_eq("rows of trial 1" ${n} 14)
+  mk_expect_eq("rows of trial 1" ${n} 18)
   file(STRINGS ${WORK}/c.csv.meta capped REGEX "^capped_cells: ")
   mk_expect_eq("capped cells in the sidecar" "${capped}" "capped_cells: 14")
 
