@@ -128,7 +128,7 @@ elseif(MODE STREQUAL "cap")
   mk_count("${c_header}" "${c_rows}" n trial 1)
   mk_expect_eq("rows of trial 1" ${n} 18)
   file(STRINGS ${WORK}/c.csv.meta capped REGEX "^capped_cells: ")
-  mk_expect_eq("capped cells in the sidecar" "${capped}" "capped_cells: 14")
+  mk_expect_eq("capped cells in the sidecar" "${capped}" "capped_cells: 18")
 
 else()
   mk_fail("unknown MODE '${MODE}'")
