@@ -9,5 +9,6 @@
 #include "metrics.h"
 #include "spec.h"
 #include "method.h"
+#include "collision.h"
 
 #endif
