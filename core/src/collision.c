@@ -500,7 +500,7 @@ double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n)
 		- mkBody3_SupportValue(c2, mkVec3_Neg(u));
 }
 
-static void mkCollision3_Clear(mkCollision3 *out)
+void mkCollision3_Clear(mkCollision3 *out)
 {
 	mkVec3 nan3 = mkVec3_Make(NAN, NAN, NAN);
 	out->status = MK_CONTACT_UNKNOWN;
@@ -523,8 +523,10 @@ static mkPairCtx mkPairCtx_Make(mkBody3 b1, mkBody3 b2)
 	return c;
 }
 
-static mkContact mkStatusOf(double sd, double scale)
+mkContact mkContact_FromDistance(double sd, double scale)
 {
+	if (isnan(sd))
+		return MK_CONTACT_UNKNOWN;
 	if (sd > MK_COLLIDE3_TOUCH_TOL * scale)
 		return MK_CONTACT_SEPARATED;
 	if (sd < -MK_COLLIDE3_TOUCH_TOL * scale)
@@ -631,7 +633,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	}
 	if (best.f > 0.0)
 		out->gap = span - best.f;
-	out->status = mkStatusOf(best.f, c.scale);
+	out->status = mkContact_FromDistance(best.f, c.scale);
 	return MK_OK;
 }
 
@@ -818,6 +820,6 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	/* The minimum of psi is the distance from c1 to the boundary of the
 	 * contact space along u. */
 	out->directional = dl - st.H;
-	out->status = mkStatusOf(out->directional, c.scale);
+	out->status = mkContact_FromDistance(out->directional, c.scale);
 	return MK_OK;
 }

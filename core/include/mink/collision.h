@@ -86,6 +86,14 @@ typedef struct mkCollision3 {
 /* Newton iterations per start before giving up. */
 #define MK_COLLIDE3_MAX_ITER 100
 
+/* An empty answer: status unknown, NaN reals, counts 0 (iterations) and -1
+ * (restarts). out must not be NULL. */
+MK_API void mkCollision3_Clear(mkCollision3 *out);
+
+/* The status of a signed distance sd under the touching band
+ * MK_COLLIDE3_TOUCH_TOL * scale; MK_CONTACT_UNKNOWN when sd is NaN. */
+MK_API mkContact mkContact_FromDistance(double sd, double scale);
+
 /* MinkSum (Normal): signed distance, witnesses, status. Returns MK_OK, or
  * MK_ERR_CONVERGENCE when no start converged within MK_COLLIDE3_MAX_ITER
  * iterations or the iterate became non-finite (a degenerate pose; coincident
