@@ -417,9 +417,10 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			return 1;
 		}
 		mkVec3 m = mkVec3_Add(st->n, mkVec3_Add(mkVec3_Scale(st->t1, s[0]), mkVec3_Scale(st->t2, s[1])));
-		mkVec3 n1 = mkVec3_Normalize(m);
-		double f1 = mkNormal_Value(c, n1);
-		double gain = f1 - st->f;
+		/* The trial point is evaluated in full: most steps are taken. */
+		mkNormalState trial;
+		mkNormal_Eval(c, mkVec3_Normalize(m), &trial);
+		double gain = trial.f - st->f;
 		/* Within rounding of f the ratio means nothing: a step whose
 		 * predicted gain is below it is taken when it does not lose. */
 		double noise = 64.0 * DBL_EPSILON * (fabs(st->f) + c->scale);
@@ -429,7 +430,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 		else if (rho > 0.75 && slen > 0.99 * radius)
 			radius = fmin(2.0 * radius, MK_TR_MAX);
 		if (rho > 1e-4) {
-			mkNormal_Eval(c, n1, st);
+			*st = trial;
 			rejects = rho < 0.25 ? rejects + 1 : 0;
 		} else {
 			rejects += 1;
@@ -766,8 +767,9 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 			break;
 		}
 		double s_new[2] = { st.s[0] + step[0], st.s[1] + step[1] };
-		double H1 = mkRay_Value(&c, &fr, s_new);
-		double gain = st.H - H1;
+		mkRayState trial;
+		mkRay_Eval(&c, &fr, s_new, &trial);
+		double gain = st.H - trial.H;
 		double noise = 64.0 * DBL_EPSILON * (fabs(st.H) + c.scale);
 		double rho = pred > noise ? gain / pred : (gain >= -noise ? 1.0 : -1.0);
 		double rel = slen / (1.0 + sn);
@@ -776,7 +778,7 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		else if (rho > 0.75 && rel > 0.99 * radius)
 			radius = fmin(2.0 * radius, MK_TR_MAX);
 		if (rho > 1e-4) {
-			mkRay_Eval(&c, &fr, s_new, &st);
+			st = trial;
 			rejects = rho < 0.25 ? rejects + 1 : 0;
 		} else {
 			rejects += 1;
