@@ -508,7 +508,7 @@ void mkCollision3_Clear(mkCollision3 *out)
 	out->distance = out->directional = out->bound = out->gap = out->residual = NAN;
 	out->normal = out->p1 = out->p2 = nan3;
 	out->scale = NAN;
-	out->iterations = 0;
+	out->iterations = -1;
 	out->restarts = -1;
 }
 
@@ -731,6 +731,7 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		/* Coincident centres: both bodies contain the point. */
 		out->status = MK_CONTACT_OVERLAPPING;
 		out->residual = 0.0;
+		out->iterations = 0;
 		return MK_OK;
 	}
 	mkRayFrame fr;

@@ -86,8 +86,8 @@ typedef struct mkCollision3 {
 /* Newton iterations per start before giving up. */
 #define MK_COLLIDE3_MAX_ITER 100
 
-/* An empty answer: status unknown, NaN reals, counts 0 (iterations) and -1
- * (restarts). out must not be NULL. */
+/* An empty answer: status unknown, NaN reals, counts -1. out must not be
+ * NULL. */
 MK_API void mkCollision3_Clear(mkCollision3 *out);
 
 /* The status of a signed distance sd under the touching band
