@@ -3,9 +3,20 @@
 // solver, FCL's default distance tolerance 1e-6). FCL is C++ with Eigen; it
 // stays in this one file behind the C entry below. Ellipsoid pairs only
 // (FCL has no superquadric).
+//
+// Debian's libfcl is built with assertions on, and its GJK (libccd
+// extension, doSimplex2) and EPA assert on some ellipsoid pairs: abort()
+// would end the process. The call is therefore guarded: SIGABRT is caught
+// around it and the handler jumps back (sigsetjmp/siglongjmp), the pair is
+// reported as a failure (no verdict), and whatever FCL had allocated in that
+// call is leaked. Not thread safe; the assertion message still reaches
+// stderr.
 #include <fcl/fcl.h>
 
+#include <csetjmp>
+#include <csignal>
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 #include "colliders_internal.h"
@@ -38,18 +49,32 @@ bool mkIsRotation(const mkMat3 &M)
 	return mkMat3_Det(M) > 0.0;
 }
 
+sigjmp_buf mkFclJump;
+
+extern "C" void mkFclOnAbort(int)
+{
+	siglongjmp(mkFclJump, 1);
+}
+
+// The query itself; false when FCL asserted.
+bool mkFclQuery(const mkBody3 &b1, const mkBody3 &b2, fcl::DistanceResultd *res);
+
 mkResult mkRunFcl(mkBody3 b1, mkBody3 b2, mkColliderScratch *, mkCollision3 *out)
 {
 	if (!mkIsRotation(b1.M) || !mkIsRotation(b2.M))
 		return MK_ERR_UNSUPPORTED;
-	auto g1 = std::make_shared<fcl::Ellipsoidd>(b1.shape.a, b1.shape.b, b1.shape.c);
-	auto g2 = std::make_shared<fcl::Ellipsoidd>(b2.shape.a, b2.shape.b, b2.shape.c);
-	fcl::CollisionObjectd o1(g1, mkTransform(b1)), o2(g2, mkTransform(b2));
-	fcl::DistanceRequestd req;
-	req.enable_nearest_points = true;
-	req.enable_signed_distance = true;
 	fcl::DistanceResultd res;
-	fcl::distance(&o1, &o2, req, res);
+	struct sigaction act, old;
+	std::memset(&act, 0, sizeof act);
+	act.sa_handler = mkFclOnAbort;
+	sigemptyset(&act.sa_mask);
+	sigaction(SIGABRT, &act, &old);
+	bool ok = false;
+	if (sigsetjmp(mkFclJump, 1) == 0)
+		ok = mkFclQuery(b1, b2, &res);
+	sigaction(SIGABRT, &old, nullptr);
+	if (!ok)
+		return MK_ERR_CONVERGENCE;
 	double d = res.min_distance;
 	if (!std::isfinite(d))
 		return MK_ERR_CONVERGENCE;
@@ -59,6 +84,18 @@ mkResult mkRunFcl(mkBody3 b1, mkBody3 b2, mkColliderScratch *, mkCollision3 *out
 	out->p2 = mkVec3{ res.nearest_points[1](0), res.nearest_points[1](1), res.nearest_points[1](2) };
 	out->status = mkContact_FromDistance(d, out->scale);
 	return MK_OK;
+}
+
+bool mkFclQuery(const mkBody3 &b1, const mkBody3 &b2, fcl::DistanceResultd *res)
+{
+	auto g1 = std::make_shared<fcl::Ellipsoidd>(b1.shape.a, b1.shape.b, b1.shape.c);
+	auto g2 = std::make_shared<fcl::Ellipsoidd>(b2.shape.a, b2.shape.b, b2.shape.c);
+	fcl::CollisionObjectd o1(g1, mkTransform(b1)), o2(g2, mkTransform(b2));
+	fcl::DistanceRequestd req;
+	req.enable_nearest_points = true;
+	req.enable_signed_distance = true;
+	fcl::distance(&o1, &o2, req, *res);
+	return true;
 }
 
 const char *mkFclVersion() { return FCL_VERSION; }

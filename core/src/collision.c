@@ -647,43 +647,90 @@ typedef struct mkRayState {
 	mkMat3 J;
 } mkRayState;
 
-typedef struct mkRayFrame { mkVec3 u, t1, t2; } mkRayFrame;
+/* The frame of the ray, and the contact-space points seen so far (a ring):
+ * every one is a point of K, the material of the lower bound. */
+enum { MK_RAY_KEEP = 24 };
+typedef struct mkRayFrame {
+	mkVec3 u, t1, t2;
+	double p[MK_RAY_KEEP][2], r[MK_RAY_KEEP]; /* tangential coordinates, radial part */
+	int count;
+} mkRayFrame;
+
+static void mkRay_Keep(mkRayFrame *f, mkVec3 x)
+{
+	int k = f->count++ % MK_RAY_KEEP;
+	f->p[k][0] = mkVec3_Dot(f->t1, x);
+	f->p[k][1] = mkVec3_Dot(f->t2, x);
+	f->r[k] = mkVec3_Dot(f->u, x);
+}
+
+/* A lower bound of the boundary distance psi* along u: a convex combination
+ * of three kept points of K whose tangential parts surround 0 lies on the
+ * ray, at t = sum w_i r_i, so t u is in K and psi* >= t. -inf when no kept
+ * triangle surrounds 0. */
+static double mkRay_Lower(const mkRayFrame *f)
+{
+	int n = f->count < MK_RAY_KEEP ? f->count : MK_RAY_KEEP;
+	double best = -INFINITY;
+	for (int i = 0; i < n; ++i)
+		for (int j = i + 1; j < n; ++j)
+			for (int k = j + 1; k < n; ++k) {
+				const double *a = f->p[i], *b = f->p[j], *c = f->p[k];
+				double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+				if (det == 0.0)
+					continue;
+				/* barycentric weights of the origin */
+				double wb = ((-a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (-a[1])) / det;
+				double wc = ((b[0] - a[0]) * (-a[1]) - (-a[0]) * (b[1] - a[1])) / det;
+				double wa = 1.0 - wb - wc;
+				if (wa < 0.0 || wb < 0.0 || wc < 0.0)
+					continue;
+				double t = wa * f->r[i] + wb * f->r[j] + wc * f->r[k];
+				if (t > best)
+					best = t;
+			}
+	return best;
+}
 
 static mkVec3 mkRay_Point(const mkRayFrame *f, const double s[2])
 {
 	return mkVec3_Add(f->u, mkVec3_Add(mkVec3_Scale(f->t1, s[0]), mkVec3_Scale(f->t2, s[1])));
 }
 
-static void mkRay_Eval(const mkPairCtx *c, const mkRayFrame *f, const double s[2], mkRayState *st)
+static void mkRay_Eval(const mkPairCtx *c, mkRayFrame *f, const double s[2], mkRayState *st)
 {
 	st->s[0] = s[0];
 	st->s[1] = s[1];
 	st->m = mkRay_Point(f, s);
 	st->H = mkPair_Eval(c, st->m, &st->x, &st->s1, &st->s2, &st->J);
+	mkRay_Keep(f, st->x);
 	/* Gradient of -psi (the solver maximises -psi). */
 	st->g[0] = -mkVec3_Dot(f->t1, st->x);
 	st->g[1] = -mkVec3_Dot(f->t2, st->x);
 }
 
-static double mkRay_Value(const mkPairCtx *c, const mkRayFrame *f, const double s[2])
+static double mkRay_Value(const mkPairCtx *c, mkRayFrame *f, const double s[2])
 {
 	mkVec3 x, a1, a2;
-	return mkPair_Eval(c, mkRay_Point(f, s), &x, &a1, &a2, NULL);
+	double H = mkPair_Eval(c, mkRay_Point(f, s), &x, &a1, &a2, NULL);
+	mkRay_Keep(f, x);
+	return H;
 }
 
-static double mkRay_SlopeAt(const mkPairCtx *c, const mkRayFrame *f, const double base[2], const double e[2],
+static double mkRay_SlopeAt(const mkPairCtx *c, mkRayFrame *f, const double base[2], const double e[2],
 	mkVec3 ew, double t)
 {
 	double s[2] = { base[0] + t * e[0], base[1] + t * e[1] };
 	mkVec3 x, a1, a2;
 	mkPair_Eval(c, mkRay_Point(f, s), &x, &a1, &a2, NULL);
+	mkRay_Keep(f, x);
 	return mkVec3_Dot(ew, x);
 }
 
 /* psi along s + t e (e a unit vector of the plane): convex in t; minimised
  * by bisection on the sign of its slope <e, x>. Returns 1 when the bracket
  * shrank to rounding. */
-static int mkRay_LineSearch(const mkPairCtx *c, const mkRayFrame *f, mkRayState *st, const double e0[2], double h)
+static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, const double e0[2], double h)
 {
 	double e[2] = { e0[0], e0[1] };
 	mkVec3 ew = mkVec3_Add(mkVec3_Scale(f->t1, e[0]), mkVec3_Scale(f->t2, e[1]));
@@ -735,6 +782,7 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		return MK_OK;
 	}
 	mkRayFrame fr;
+	fr.count = 0;
 	fr.u = mkVec3_Scale(c.d, 1.0 / dl);
 	mkTangents(fr.u, &fr.t1, &fr.t2);
 	/* psi(s) = H(u + s t): convex in s in R^2, gradient the tangential part
@@ -818,8 +866,29 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	/* H = |m| (h1(n) + h2(-n)); f(n) = <n, d> - H / |m|. */
 	double ml = mkVec3_Length(st.m);
 	out->bound = mkVec3_Dot(n, c.d) - st.H / ml;
-	if (!ok || !isfinite(st.H) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
+	if (!isfinite(st.H) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
 		return MK_ERR_CONVERGENCE;
+	if (!ok) {
+		/* Not converged (a support function nearly kinked along a curve,
+		 * where the iterates zigzag): the status may still be certain.
+		 * H >= psi* always, and a kept triangle gives psi* >= lower. */
+		/* Probes around the last iterate in three directions, at two radii,
+		 * so that some kept points surround the ray. */
+		for (int k = 0; k < 6; ++k) {
+			double ang = 2.0 * MK_PI * (k % 3) / 3.0, rad = k < 3 ? 1e-2 : 0.3;
+			double sp[2] = { st.s[0] + rad * cos(ang), st.s[1] + rad * sin(ang) };
+			mkRay_Value(&c, &fr, sp);
+		}
+		double lower = mkRay_Lower(&fr);
+		double band = MK_COLLIDE3_TOUCH_TOL * c.scale;
+		if (st.H < dl - band || lower > dl + band) {
+			out->directional = dl - st.H;
+			out->residual = (st.H - lower) / c.scale; /* the bracket of psi*, relative */
+			out->status = st.H < dl - band ? MK_CONTACT_SEPARATED : MK_CONTACT_OVERLAPPING;
+			return MK_OK;
+		}
+		return MK_ERR_CONVERGENCE;
+	}
 	/* The minimum of psi is the distance from c1 to the boundary of the
 	 * contact space along u. */
 	out->directional = dl - st.H;
