@@ -45,6 +45,14 @@ const char *mkContact_Name(mkContact c)
 	return "unknown";
 }
 
+/* |(a, b)| for the well-scaled 2-vectors of the solver (gradients and steps
+ * far from the double range's ends): libm's hypot guards against overflow
+ * at a cost that dominated the whole query. */
+static double mkLen2(double a, double b)
+{
+	return sqrt(a * a + b * b);
+}
+
 /* ---- the support map with its Jacobian ------------------------------------ */
 
 /* The l_q norm of a pair (u, v), u, v >= 0, not both 0: the norm, the ratios
@@ -196,26 +204,43 @@ typedef struct mkPairCtx {
 	double scale;
 } mkPairCtx;
 
+/* The canonical Hessians of the two support functions at M1^T m and
+ * -M2^T m: the Jacobian of x is M1 H1 M1^T + M2 H2 M2^T, only ever needed in
+ * a tangent plane (mkPair_Tangent), so it is never formed. */
+typedef struct mkPairHess { double H1[3][3], H2[3][3]; } mkPairHess;
+
 /* Everything at one (possibly unnormalised) direction m: the contact-space
  * point x = s1(m) - s2(-m), H = <m, x> (= h1(m) + h2(-m)), and, when J is not
- * NULL, the Jacobian J1(m) + J2(-m) of x. s1, s2 receive the support points
- * (about the centres). */
-static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkVec3 *x, mkVec3 *s1, mkVec3 *s2, mkMat3 *J)
+ * NULL, the Hessians. s1, s2 receive the support points (about the
+ * centres). */
+static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkVec3 *x, mkVec3 *s1, mkVec3 *s2, mkPairHess *J)
 {
-	double H1[3][3], H2[3][3];
 	mkVec3 g1, g2;
-	mkSupport(&c->s1, mkMat3_MulTVec(c->b1.M, m), &g1, J ? H1 : NULL);
-	mkSupport(&c->s2, mkMat3_MulTVec(c->b2.M, mkVec3_Neg(m)), &g2, J ? H2 : NULL);
+	mkSupport(&c->s1, mkMat3_MulTVec(c->b1.M, m), &g1, J ? J->H1 : NULL);
+	mkSupport(&c->s2, mkMat3_MulTVec(c->b2.M, mkVec3_Neg(m)), &g2, J ? J->H2 : NULL);
 	*s1 = mkMat3_MulVec(c->b1.M, g1);
 	*s2 = mkMat3_MulVec(c->b2.M, g2);
 	*x = mkVec3_Sub(*s1, *s2);
-	if (J) {
-		mkMat3 A = mkSandwich(c->b1.M, H1), B = mkSandwich(c->b2.M, H2);
-		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j)
-				J->m[i][j] = A.m[i][j] + B.m[i][j];
-	}
 	return mkVec3_Dot(m, *x);
+}
+
+/* a^T H b for a symmetric 3 x 3 H. */
+static double mkQuadH(double H[3][3], mkVec3 a, mkVec3 b)
+{
+	double hb0 = H[0][0] * b.x + H[0][1] * b.y + H[0][2] * b.z;
+	double hb1 = H[1][0] * b.x + H[1][1] * b.y + H[1][2] * b.z;
+	double hb2 = H[2][0] * b.x + H[2][1] * b.y + H[2][2] * b.z;
+	return a.x * hb0 + a.y * hb1 + a.z * hb2;
+}
+
+/* The Jacobian of x in the plane of (t1, t2): A[i][j] = ti^T J tj. */
+static void mkPair_Tangent(const mkPairCtx *c, mkPairHess *J, mkVec3 t1, mkVec3 t2, double A[2][2])
+{
+	mkVec3 a1 = mkMat3_MulTVec(c->b1.M, t1), a2 = mkMat3_MulTVec(c->b1.M, t2);
+	mkVec3 e1 = mkMat3_MulTVec(c->b2.M, t1), e2 = mkMat3_MulTVec(c->b2.M, t2);
+	A[0][0] = mkQuadH(J->H1, a1, a1) + mkQuadH(J->H2, e1, e1);
+	A[0][1] = A[1][0] = mkQuadH(J->H1, a1, a2) + mkQuadH(J->H2, e1, e2);
+	A[1][1] = mkQuadH(J->H1, a2, a2) + mkQuadH(J->H2, e2, e2);
 }
 
 /* An orthonormal basis (t1, t2) of the plane orthogonal to the unit n
@@ -229,11 +254,6 @@ static void mkTangents(mkVec3 n, mkVec3 *t1, mkVec3 *t2)
 	*t2 = mkVec3_Make(b, sign + n.y * n.y * a, -n.y);
 }
 
-static double mkQuad(mkMat3 J, mkVec3 u, mkVec3 v)
-{
-	return mkVec3_Dot(u, mkMat3_MulVec(J, v));
-}
-
 /* The trust-region step of the model  m(s) = -g.s + 1/2 s^T A s  (A 2 x 2
  * symmetric) within |s| <= radius: the Newton step when A is positive
  * definite and it fits, else (A + mu I) s = g with mu >= max(0, -lambda_min)
@@ -245,16 +265,16 @@ static void mkEig2(double A[2][2], double lam[2], double v0[2], double v1[2])
 {
 	double a = A[0][0], b = 0.5 * (A[0][1] + A[1][0]), c = A[1][1];
 	double mean = 0.5 * (a + c), half = 0.5 * (a - c);
-	double rad = hypot(half, b);
+	double rad = mkLen2(half, b);
 	lam[0] = mean - rad;
 	lam[1] = mean + rad;
 	if (rad == 0.0) {
 		v1[0] = 1.0; v1[1] = 0.0;
 	} else if (half >= 0.0) {
-		double nx = half + rad, ny = b, nn = hypot(nx, ny);
+		double nx = half + rad, ny = b, nn = mkLen2(nx, ny);
 		v1[0] = nx / nn; v1[1] = ny / nn;
 	} else {
-		double nx = b, ny = rad - half, nn = hypot(nx, ny);
+		double nx = b, ny = rad - half, nn = mkLen2(nx, ny);
 		v1[0] = nx / nn; v1[1] = ny / nn;
 	}
 	v0[0] = -v1[1];
@@ -274,13 +294,13 @@ static double mkTrustStep(const double g[2], double A[2][2], double radius, doub
 	if (newton_ok) {
 		z[0] = g0 / l0;
 		z[1] = g1 / l1;
-		newton_ok = hypot(z[0], z[1]) <= radius;
+		newton_ok = mkLen2(z[0], z[1]) <= radius;
 	}
 	if (!newton_ok) {
 		double lo = l0 > 0.0 ? 0.0 : -l0;
 		/* Start just right of the pole; Newton on 1/|s(mu)| - 1/radius is
 		 * monotone from the left. */
-		double gn = hypot(g0, g1);
+		double gn = mkLen2(g0, g1);
 		mu = lo + 1e-14 * (fabs(l0) + fabs(l1) + gn / radius) + DBL_MIN;
 		double norm = 0.0;
 		for (int it = 0; it < 60; ++it) {
@@ -313,7 +333,7 @@ static double mkTrustStep(const double g[2], double A[2][2], double radius, doub
 /* The state at a unit normal n. */
 typedef struct mkNormalState {
 	mkVec3 n, x, s1, s2, t1, t2;
-	mkMat3 J;
+	mkPairHess J;
 	double f;        /* <n, d - x> */
 	double g[2];     /* tangential components of d - x */
 } mkNormalState;
@@ -381,12 +401,12 @@ static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, 
 	return hi - lo <= 8.0 * DBL_EPSILON * (1.0 + hi);
 }
 
-static void mkNormal_Hessian(const mkNormalState *st, double A[2][2])
+static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][2])
 {
 	/* Hessian of -f in the tangent plane: t^T J t + f I. */
-	A[0][0] = mkQuad(st->J, st->t1, st->t1) + st->f;
-	A[0][1] = A[1][0] = mkQuad(st->J, st->t1, st->t2);
-	A[1][1] = mkQuad(st->J, st->t2, st->t2) + st->f;
+	mkPair_Tangent(c, &st->J, st->t1, st->t2, A);
+	A[0][0] += st->f;
+	A[1][1] += st->f;
 }
 
 /* Maximise f from n0. Returns 1 on convergence, 0 otherwise; *iters adds
@@ -401,15 +421,15 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 	double hist[3] = { -INFINITY, -INFINITY, -INFINITY };
 	for (int it = 0; it < MK_COLLIDE3_MAX_ITER; ++it) {
 		hist[it % 3] = st->f;
-		*res = hypot(st->g[0], st->g[1]);
+		*res = mkLen2(st->g[0], st->g[1]);
 		if (*res <= tol)
 			return 1;
 		*iters += 1;
 		double A[2][2];
-		mkNormal_Hessian(st, A);
+		mkNormal_Hessian(c, st, A);
 		double s[2];
 		double pred = mkTrustStep(st->g, A, radius, s);
-		double slen = hypot(s[0], s[1]);
+		double slen = mkLen2(s[0], s[1]);
 		if (slen < radius && (slen <= 1e-14 || pred <= 1e-17 * c->scale)) {
 			/* An interior Newton step that cannot move the normal by more
 			 * than rounding, or gain more than 1e-17 of the scale: the
@@ -439,13 +459,13 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			/* The quadratic model keeps failing: solve exactly along the
 			 * stiffest direction, then check the smooth direction. */
 			double lam[2], v0[2], v1[2];
-			mkNormal_Hessian(st, A);
+			mkNormal_Hessian(c, st, A);
 			mkEig2(A, lam, v0, v1);
 			mkVec3 e = mkVec3_Add(mkVec3_Scale(st->t1, v1[0]), mkVec3_Scale(st->t2, v1[1]));
 			double before = st->f;
 			int tight = mkNormal_LineSearch(c, st, e, fmax(radius, 1e-6));
 			int moved = st->f > before;
-			mkNormal_Hessian(st, A);
+			mkNormal_Hessian(c, st, A);
 			mkEig2(A, lam, v0, v1);
 			double flat = fabs(v0[0] * st->g[0] + v0[1] * st->g[1]);
 			if (tight && flat <= tol) {
@@ -460,7 +480,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			 * well). */
 			double oldest = fmin(hist[0], fmin(hist[1], hist[2]));
 			if (tight && st->f - oldest <= 1e-13 * c->scale && radius < 1e-10) {
-				*res = hypot(st->g[0], st->g[1]);
+				*res = mkLen2(st->g[0], st->g[1]);
 				return 2;
 			}
 			rejects = 0;
@@ -468,7 +488,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 				radius = fmax(radius, 1e-3);
 		}
 	}
-	*res = hypot(st->g[0], st->g[1]);
+	*res = mkLen2(st->g[0], st->g[1]);
 	return *res <= tol;
 }
 
@@ -644,7 +664,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 typedef struct mkRayState {
 	double s[2], H, g[2];
 	mkVec3 m, x, s1, s2;
-	mkMat3 J;
+	mkPairHess J;
 } mkRayState;
 
 /* The frame of the ray, and the contact-space points seen so far (a ring):
@@ -762,7 +782,7 @@ static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, c
 	double plo = mkRay_Value(c, f, slo), phi = mkRay_Value(c, f, shi);
 	if (fmin(plo, phi) <= st->H)
 		mkRay_Eval(c, f, phi < plo ? shi : slo, st);
-	return hi - lo <= 8.0 * DBL_EPSILON * (1.0 + hi + hypot(base[0], base[1]));
+	return hi - lo <= 8.0 * DBL_EPSILON * (1.0 + hi + mkLen2(base[0], base[1]));
 }
 
 mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
@@ -797,20 +817,18 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	double hist[3] = { INFINITY, INFINITY, INFINITY };
 	for (int it = 0; it < MK_COLLIDE3_MAX_ITER && !ok; ++it) {
 		hist[it % 3] = st.H;
-		res = hypot(st.g[0], st.g[1]);
+		res = mkLen2(st.g[0], st.g[1]);
 		if (res <= tol) {
 			ok = 1;
 			break;
 		}
 		iters += 1;
 		double A[2][2];
-		A[0][0] = mkQuad(st.J, fr.t1, fr.t1);
-		A[0][1] = A[1][0] = mkQuad(st.J, fr.t1, fr.t2);
-		A[1][1] = mkQuad(st.J, fr.t2, fr.t2);
+		mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
 		double step[2];
-		double sn = hypot(st.s[0], st.s[1]);
+		double sn = mkLen2(st.s[0], st.s[1]);
 		double pred = mkTrustStep(st.g, A, radius * (1.0 + sn), step);
-		double slen = hypot(step[0], step[1]);
+		double slen = mkLen2(step[0], step[1]);
 		if (slen < radius * (1.0 + sn) && (slen <= 1e-14 * (1.0 + sn) || pred <= 1e-17 * c.scale)) {
 			ok = 1;
 			break;
@@ -834,21 +852,17 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		}
 		if (rejects >= 2 || radius < 1e-12 || (it >= MK_LINE_AFTER && rho < 0.75)) {
 			double lam[2], v0[2], v1[2];
-			A[0][0] = mkQuad(st.J, fr.t1, fr.t1);
-			A[0][1] = A[1][0] = mkQuad(st.J, fr.t1, fr.t2);
-			A[1][1] = mkQuad(st.J, fr.t2, fr.t2);
+			mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
 			mkEig2(A, lam, v0, v1);
 			double before = st.H;
 			int tight = mkRay_LineSearch(&c, &fr, &st, v1, fmax(radius, 1e-6) * (1.0 + sn));
 			int moved = st.H < before;
-			A[0][0] = mkQuad(st.J, fr.t1, fr.t1);
-			A[0][1] = A[1][0] = mkQuad(st.J, fr.t1, fr.t2);
-			A[1][1] = mkQuad(st.J, fr.t2, fr.t2);
+			mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
 			mkEig2(A, lam, v0, v1);
 			double flat = fabs(v0[0] * st.g[0] + v0[1] * st.g[1]);
 			double oldest = fmax(hist[0], fmax(hist[1], hist[2]));
 			if (tight && (flat <= tol || (oldest - st.H <= 1e-13 * c.scale && radius < 1e-10))) {
-				res = flat <= tol ? flat : hypot(st.g[0], st.g[1]);
+				res = flat <= tol ? flat : mkLen2(st.g[0], st.g[1]);
 				ok = 1;
 				break;
 			}
