@@ -567,9 +567,11 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 	return mkVec3_Add(b.t, mkVec3_Scale(mkVec3_Sub(x, b.t), 1.0 / gauge));
 }
 
-/* Extra starts for an overlap: the bodies' axis directions (both signs)
- * and the reversed centre line. */
-enum { MK_CAND = 13, MK_RESTARTS = 3 };
+/* Extra starts for an overlap: the reversed centre line, the bodies' axis
+ * directions (both signs), the diagonals of their frames and a lattice over
+ * the sphere; Newton restarts from the best MK_RESTARTS of them by f that
+ * are not close (within about 18 degrees) to the answer or to each other. */
+enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 4 };
 
 mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {
@@ -595,14 +597,27 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		cand[nc++] = mkVec3_Neg(n0);
 		for (int k = 0; k < 2; ++k) {
 			mkMat3 M = k == 0 ? b1.M : b2.M;
+			mkVec3 col[3];
 			for (int j = 0; j < 3; ++j) {
-				mkVec3 col = mkVec3_Normalize(mkVec3_Make(M.m[0][j], M.m[1][j], M.m[2][j]));
-				cand[nc++] = col;
-				cand[nc++] = mkVec3_Neg(col);
+				col[j] = mkVec3_Normalize(mkVec3_Make(M.m[0][j], M.m[1][j], M.m[2][j]));
+				cand[nc++] = col[j];
+				cand[nc++] = mkVec3_Neg(col[j]);
 			}
+			/* and the eight diagonals of the body's frame */
+			for (int q = 0; q < 8; ++q)
+				cand[nc++] = mkVec3_Normalize(mkVec3_Add(mkVec3_Scale(col[0], q & 1 ? -1.0 : 1.0),
+					mkVec3_Add(mkVec3_Scale(col[1], q & 2 ? -1.0 : 1.0), mkVec3_Scale(col[2], q & 4 ? -1.0 : 1.0))));
+		}
+		/* and a Fibonacci lattice of MK_FIB directions over the sphere */
+		for (int q = 0; q < MK_FIB; ++q) {
+			double z = 1.0 - (2.0 * q + 1.0) / MK_FIB, r = sqrt(1.0 - z * z);
+			double ang = q * 2.399963229728653; /* the golden angle */
+			cand[nc++] = mkVec3_Make(r * cos(ang), r * sin(ang), z);
 		}
 		for (int i = 0; i < nc; ++i)
 			val[i] = mkIsFinite3(cand[i]) ? mkNormal_Value(&c, cand[i]) : -INFINITY;
+		mkVec3 picked[MK_RESTARTS];
+		int npicked = 0;
 		for (int r = 0; r < MK_RESTARTS; ++r) {
 			int pick = -1;
 			for (int i = 0; i < nc; ++i) {
@@ -610,12 +625,18 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 					continue;
 				if (ok && mkVec3_Dot(cand[i], best.n) > 0.99)
 					continue;
+				int near = 0;
+				for (int q = 0; q < npicked; ++q)
+					near |= mkVec3_Dot(cand[i], picked[q]) > 0.95;
+				if (near)
+					continue;
 				if (pick < 0 || val[i] > val[pick])
 					pick = i;
 			}
 			if (pick < 0)
 				break;
 			val[pick] = -INFINITY;
+			picked[npicked++] = cand[pick];
 			mkNormalState st;
 			int ok2 = mkNormal_Solve(&c, cand[pick], &st, &iters, &res2);
 			out->restarts += 1;

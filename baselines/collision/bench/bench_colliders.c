@@ -19,7 +19,8 @@
  * entries interleaved pair by pair (A B C A B C ...), one thread.
  *
  * usage: bench_colliders [pairs per kind, default 2000] [seed, default 2022]
- *                        [entries to leave out, comma-separated, e.g. implicit] */
+ *                        [entries to leave out, comma-separated, e.g. implicit]
+ *                        [only this kind: 0 ellipsoids .. 3 deep-overlap] */
 #define _POSIX_C_SOURCE 199309L
 #include <mink/colliders.h>
 
@@ -87,6 +88,7 @@ int main(int argc, char **argv)
 	if (pairs < 1)
 		pairs = 1;
 	const char *skip = argc > 3 ? argv[3] : "";
+	int only = argc > 4 ? atoi(argv[4]) : -1;
 	int ne = mkColliders_Count();
 	double *times = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
 	double *derr = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
@@ -107,6 +109,8 @@ int main(int argc, char **argv)
 		"# entries interleaved pair by pair); errors |value - referee| / scale; status compared outside |sd| <= %g scale\n",
 		pairs, seed, margin);
 	for (int kind = 0; kind < MK_KINDS; ++kind) {
+		if (only >= 0 && kind != only)
+			continue;
 		mkState = seed * 1000003ULL + (unsigned long long)kind;
 		for (int p = 0; p < pairs; ++p) {
 			int ell = kind == 0 || (kind >= 2 && p % 2 == 0);
