@@ -283,6 +283,17 @@ static void mkEig2(double A[2][2], double lam[2], double v0[2], double v1[2])
 
 static double mkTrustStep(const double g[2], double A[2][2], double radius, double s[2])
 {
+	/* The common case first: A positive definite and the Newton step inside
+	 * the region (Cramer's rule; pred = g.s / 2 for the Newton step). */
+	double a = A[0][0], b = 0.5 * (A[0][1] + A[1][0]), c = A[1][1], det = a * c - b * b;
+	if (a > 0.0 && det > 1e-12 * (a * c)) {
+		double z0 = (c * g[0] - b * g[1]) / det, z1 = (a * g[1] - b * g[0]) / det;
+		if (z0 * z0 + z1 * z1 <= radius * radius) {
+			s[0] = z0;
+			s[1] = z1;
+			return 0.5 * (g[0] * z0 + g[1] * z1);
+		}
+	}
 	double lam2[2], v0[2], v1[2];
 	mkEig2(A, lam2, v0, v1);
 	double l0 = lam2[0], l1 = lam2[1];
