@@ -73,7 +73,10 @@ typedef struct mkCollision3 {
 	                       when no two-sided bound is known (overlap, Ray) */
 	double residual;    /* optimality residual at the answer, relative to
 	                       scale: |tangential part of d - x(n)| / scale
-	                       (Normal), |x(n) off the centre line| / scale (Ray) */
+	                       (Normal), |x(n) off the centre line| / scale (Ray);
+	                       a Ray whose iteration stalled but whose status is
+	                       certain by bounds reports the width of its bracket
+	                       of the boundary distance instead */
 	double scale;       /* |d| + r1 + r2, r the bodies' circumradius bounds */
 	int iterations;     /* Newton iterations (all restarts) */
 	int restarts;       /* extra starts tried (Normal, overlap only) */
