@@ -278,6 +278,35 @@ static void test_overlaps(void)
 	ENSURE(missed == 0);
 }
 
+/* Bodies under general linear maps (shear and uneven scaling, not only
+ * rotations): the same stationarity check against the grid search. */
+static void test_general_maps(void)
+{
+	unsigned long long seed = 31;
+	for (int trial = 0; trial < 40; ++trial) {
+		mkShape3 s1 = { mk_test_uniform(&seed, 1, 5), mk_test_uniform(&seed, 1, 5), mk_test_uniform(&seed, 1, 5),
+			mk_test_uniform(&seed, 0.3, 1.7), mk_test_uniform(&seed, 0.3, 1.7) };
+		mkShape3 s2 = { mk_test_uniform(&seed, 1, 4), mk_test_uniform(&seed, 1, 4), mk_test_uniform(&seed, 1, 4), 1, 1 };
+		mkMat3 S = mkMat3_Identity();
+		S.m[0][1] = mk_test_uniform(&seed, -0.8, 0.8);
+		S.m[1][2] = mk_test_uniform(&seed, -0.8, 0.8);
+		S.m[2][2] = mk_test_uniform(&seed, 0.5, 1.5);
+		mkBody3 b1 = mkBody3_Make(s1, mkMat3_Mul(mk_rand_rot(&seed), S), mkVec3_Make(0, 0, 0));
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9));
+		mkBody3 b2 = mkBody3_Make(s2, mkMat3_Mul(S, mk_rand_rot(&seed)), c2);
+		mkCollision3 c;
+		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		ENSURE_NEAR(mkCollide3_Bound(b1, b2, c.normal), c.distance, 1e-12 * c.scale);
+		ENSURE_LE(mk_brute(b1, b2) - c.distance, 1e-12 * c.scale);
+		ENSURE_NEAR(mk_gauge(b1, c.p1), 1.0, 1e-9);
+		ENSURE_NEAR(mk_gauge(b2, c.p2), 1.0, 1e-9);
+		mkCollision3 ray;
+		ENSURE(mkCollide3_Ray(b1, b2, &ray) == MK_OK);
+		if (fabs(c.distance) > 1e-9 * c.scale)
+			ENSURE(ray.status == c.status);
+	}
+}
+
 /* Near-touching pairs: B2 is moved along the answer's normal so that the
  * signed distance becomes delta * scale; the new distance must follow. */
 static void test_near_touching(void)
@@ -345,6 +374,7 @@ int main(void)
 	test_spheres();
 	test_random_pairs();
 	test_overlaps();
+	test_general_maps();
 	test_near_touching();
 	test_failures_reported();
 	return mk_summary("test_collision");
