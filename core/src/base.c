@@ -11,6 +11,7 @@ const char *mkResult_Name(mkResult r)
 	case MK_ERR_RANGE: return "value out of range";
 	case MK_ERR_UNSUPPORTED: return "unsupported";
 	case MK_ERR_MEMORY: return "out of memory";
+	case MK_ERR_CONVERGENCE: return "no convergence";
 	}
 	return "unknown result";
 }

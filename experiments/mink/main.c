@@ -21,6 +21,9 @@ static const mkCommand commands[] = {
 	{"methods", mkCmd_Methods, "list the registered methods (closed forms and baselines)"},
 	{"verify", mkCmd_Verify, "put a method's output through the exact (CGAL) referee"},
 #endif
+#ifdef MINK_HAVE_COLLIDE
+	{"collide", mkCmd_Collide, "collision status, distance or penetration and witnesses of two bodies"},
+#endif
 };
 
 static void usage(FILE *f)

@@ -37,7 +37,8 @@ typedef enum mkResult {
 	MK_ERR_ARGUMENT = -1, /* a documented precondition on an argument does not hold */
 	MK_ERR_RANGE = -2,    /* a numeric input lies outside its documented range */
 	MK_ERR_UNSUPPORTED = -3, /* the combination of inputs is not supported */
-	MK_ERR_MEMORY = -4    /* allocation failed (only in functions that allocate) */
+	MK_ERR_MEMORY = -4,   /* allocation failed (only in functions that allocate) */
+	MK_ERR_CONVERGENCE = -5 /* an iterative solve did not converge (no answer) */
 } mkResult;
 
 /* A short English name for a result code ("ok", "argument", ...). */

@@ -11,5 +11,6 @@
 #include "method.h"
 #include "scene.h"
 #include "cobstacle.h"
+#include "collision.h"
 
 #endif

@@ -1,0 +1,207 @@
+/* bench_colliders.c - every entry of the collider registry on the same pairs
+ * of the paper's draws (Sec. 7.2), in one process: per pair kind and entry,
+ * the median and mean time of one query, the failures, the status
+ * disagreements with the referee outside a margin, and the distribution of
+ * the distance and penetration errors against the referee, and how often an
+ * entry's signed distance lies below the referee's by more than 1e-10 of the
+ * scale ("below": the referee's value is itself a lower bound of the true
+ * signed distance, so such an answer is certainly that wrong). A benchmark that
+ * prints figures, not a test.
+ *
+ * Draws (as experiments/collision.c): B1 semi-axes U(1,11)^3, centre
+ * U(-5,5)^3; B2 semi-axes U(1,6)^3, centre U(5,15)^3; exponents U(0.1,1.9)
+ * (ellipsoids: 1); rotations from four U(0,1) quaternion components,
+ * normalised. "near" pairs: a superquadric or ellipsoid pair moved along
+ * minksum-normal's normal so that the signed distance is s * scale, s in
+ * {1e-1, ..., 1e-6}, and "deep" pairs: centres within U(-2,2)^3.
+ *
+ * Timing: CLOCK_MONOTONIC around the run call only (prepare untimed), the
+ * entries interleaved pair by pair (A B C A B C ...), one thread.
+ *
+ * usage: bench_colliders [pairs per kind, default 2000] [seed, default 2022]
+ *                        [entries to leave out, comma-separated, e.g. implicit]
+ *                        [only this kind: 0 ellipsoids .. 3 deep-overlap] */
+#define _POSIX_C_SOURCE 199309L
+#include <mink/colliders.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double mkNow(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static unsigned long long mkState;
+static double mkUnit(void)
+{
+	unsigned long long z = (mkState += 0x9E3779B97F4A7C15ULL);
+	z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+	z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+	z ^= z >> 31;
+	return (double)(z >> 11) * 0x1.0p-53;
+}
+static double mkUniform(double a, double b) { return a + (b - a) * mkUnit(); }
+
+static mkBody3 mkDraw(double amax, double clo, double chi, int ellipsoid)
+{
+	mkShape3 s = { mkUniform(1, amax), mkUniform(1, amax), mkUniform(1, amax), 1.0, 1.0 };
+	if (!ellipsoid) {
+		s.eps1 = mkUniform(0.1, 1.9);
+		s.eps2 = mkUniform(0.1, 1.9);
+	}
+	mkVec3 t = mkVec3_Make(mkUniform(clo, chi), mkUniform(clo, chi), mkUniform(clo, chi));
+	double q[4];
+	for (int i = 0; i < 4; ++i)
+		q[i] = mkUnit();
+	return mkBody3_Make(s, mkMat3_FromQuat(q[0], q[1], q[2], q[3]), t);
+}
+
+static int mkCmp(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* Quantile q of v[0..n) (sorted in place); NaN when n == 0. */
+static double mkQuantile(double *v, int n, double q)
+{
+	if (n == 0)
+		return NAN;
+	qsort(v, (size_t)n, sizeof *v, mkCmp);
+	int i = (int)ceil(q * n) - 1;
+	return v[i < 0 ? 0 : i >= n ? n - 1 : i];
+}
+
+enum { MK_KINDS = 4 };
+static const char *const mkKindNames[MK_KINDS] = { "ellipsoids", "superquadrics", "near-touching", "deep-overlap" };
+
+int main(int argc, char **argv)
+{
+	int pairs = argc > 1 ? atoi(argv[1]) : 2000;
+	unsigned long long seed = argc > 2 ? strtoull(argv[2], NULL, 0) : 2022;
+	if (pairs < 1)
+		pairs = 1;
+	const char *skip = argc > 3 ? argv[3] : "";
+	int only = argc > 4 ? atoi(argv[4]) : -1;
+	int ne = mkColliders_Count();
+	double *times = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
+	double *derr = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
+	double *perr = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
+	mkBody3 *B1 = malloc(sizeof(mkBody3) * (size_t)pairs), *B2 = malloc(sizeof(mkBody3) * (size_t)pairs);
+	mkCollision3 *ref = malloc(sizeof(mkCollision3) * (size_t)pairs);
+	if (!times || !derr || !perr || !B1 || !B2 || !ref) {
+		fprintf(stderr, "bench_colliders: out of memory\n");
+		return 1;
+	}
+	const mkCollider *referee = NULL, *normal = mkColliders_Find("minksum-normal");
+	for (int e = 0; e < ne; ++e)
+		if (mkColliders_At(e)->referee)
+			referee = mkColliders_At(e);
+	mkColliderScratch scratch;
+	const double margin = 1e-9;
+	printf("# bench_colliders: %d pairs per kind, seed %llu; times in microseconds per query (CLOCK_MONOTONIC,\n"
+		"# entries interleaved pair by pair); errors |value - referee| / scale; status compared outside |sd| <= %g scale\n",
+		pairs, seed, margin);
+	for (int kind = 0; kind < MK_KINDS; ++kind) {
+		if (only >= 0 && kind != only)
+			continue;
+		mkState = seed * 1000003ULL + (unsigned long long)kind;
+		for (int p = 0; p < pairs; ++p) {
+			int ell = kind == 0 || (kind >= 2 && p % 2 == 0);
+			if (kind == 3) {
+				B1[p] = mkDraw(11.0, -1.0, 1.0, ell);
+				B2[p] = mkDraw(6.0, -2.0, 2.0, ell);
+			} else {
+				B1[p] = mkDraw(11.0, -5.0, 5.0, ell);
+				B2[p] = mkDraw(6.0, 5.0, 15.0, ell);
+			}
+			if (kind == 2) {
+				static const double sep[6] = { 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6 };
+				mkCollision3 c;
+				if (mkCollide3_Normal(B1[p], B2[p], &c) == MK_OK)
+					B2[p].t = mkVec3_Add(B2[p].t, mkVec3_Scale(c.normal, sep[p % 6] * c.scale - c.distance));
+			}
+			mkCollider_Run(referee, B1[p], B2[p], &scratch, &ref[p]);
+		}
+		int nref_fail = 0;
+		printf("\n## %s\n%-18s %9s %9s %7s %8s %6s %10s %10s %10s %10s %10s %10s\n", mkKindNames[kind], "entry", "median_us",
+			"mean_us", "failed", "disagree", "below", "dist_med", "dist_p99", "dist_max", "pen_med", "pen_p99", "pen_max");
+		int nt[64] = { 0 }, nd[64] = { 0 }, np[64] = { 0 }, fails[64] = { 0 }, dis[64] = { 0 }, worse[64] = { 0 };
+		for (int p = 0; p < pairs; ++p) {
+			double sdr = ref[p].distance, scale = ref[p].scale;
+			if (!isfinite(sdr))
+				++nref_fail;
+			for (int e = 0; e < ne && e < 64; ++e) {
+				const mkCollider *c = mkColliders_At(e);
+				if (c->referee || !mkCollider_Accepts(c, B1[p], B2[p], NULL, 0))
+					continue;
+				size_t nl = strlen(c->name);
+				const char *hit = strstr(skip, c->name);
+				if (hit && (hit == skip || hit[-1] == ',') && (hit[nl] == '\0' || hit[nl] == ','))
+					continue;
+				mkCollision3 out;
+				mkCollision3_Clear(&out);
+				mkResult r = MK_OK;
+				if (c->prepare)
+					r = c->prepare(B1[p], B2[p], &scratch);
+				double t0 = mkNow();
+				if (r == MK_OK)
+					r = c->run(B1[p], B2[p], &scratch, &out);
+				double t1 = mkNow();
+				times[(size_t)e * (size_t)pairs + (size_t)nt[e]++] = 1e6 * (t1 - t0);
+				if (r != MK_OK) {
+					++fails[e];
+					continue;
+				}
+				if (fabs(sdr) > margin * scale) {
+					int truth = sdr > 0.0;
+					int says = out.status == MK_CONTACT_SEPARATED ? 1 : out.status == MK_CONTACT_OVERLAPPING ? 0 : -1;
+					if (says != truth)
+						++dis[e];
+				}
+				/* Below the referee by more than 1e-10 of the scale: since the
+				 * referee's value is a lower bound of sd (f at its normal),
+				 * such an answer is wrong by at least that much. */
+				if (isfinite(out.distance) && (c->gives & (MK_GIVES_DISTANCE | MK_GIVES_PENETRATION))
+					&& out.distance < sdr - 1e-10 * scale)
+					++worse[e];
+				if (isfinite(out.distance) && sdr > 0.0 && out.distance > 0.0 && (c->gives & MK_GIVES_DISTANCE))
+					derr[(size_t)e * (size_t)pairs + (size_t)nd[e]++] = fabs(out.distance - sdr) / scale;
+				if (isfinite(out.distance) && sdr < 0.0 && out.distance < 0.0 && (c->gives & MK_GIVES_PENETRATION))
+					perr[(size_t)e * (size_t)pairs + (size_t)np[e]++] = fabs(out.distance - sdr) / scale;
+			}
+		}
+		for (int e = 0; e < ne && e < 64; ++e) {
+			const mkCollider *c = mkColliders_At(e);
+			if (nt[e] == 0)
+				continue;
+			double *t = times + (size_t)e * (size_t)pairs;
+			double mean = 0.0;
+			for (int i = 0; i < nt[e]; ++i)
+				mean += t[i];
+			mean /= nt[e];
+			double *dd = derr + (size_t)e * (size_t)pairs, *pp = perr + (size_t)e * (size_t)pairs;
+			printf("%-18s %9.3f %9.3f %7d %8d %6d %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e\n", c->name, mkQuantile(t, nt[e], 0.5),
+				mean, fails[e], dis[e], worse[e], mkQuantile(dd, nd[e], 0.5), mkQuantile(dd, nd[e], 0.99), mkQuantile(dd, nd[e], 1.0),
+				mkQuantile(pp, np[e], 0.5), mkQuantile(pp, np[e], 0.99), mkQuantile(pp, np[e], 1.0));
+		}
+		int nsep = 0;
+		for (int p = 0; p < pairs; ++p)
+			nsep += ref[p].distance > 0.0;
+		printf("(referee: %d separated, %d overlapping, %d failed)\n", nsep, pairs - nsep - nref_fail, nref_fail);
+	}
+	(void)normal;
+	free(times);
+	free(derr);
+	free(perr);
+	free(B1);
+	free(B2);
+	free(ref);
+	return 0;
+}

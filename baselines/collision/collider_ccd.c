@@ -1,0 +1,105 @@
+/* collider_ccd.c - libccd on the exact smooth support functions of the two
+ * bodies (mkBody3_Support, the closed-form support point): GJK
+ * (ccdGJKIntersect), MPR (ccdMPRPenetration) and GJK+EPA
+ * (ccdGJKPenetration). libccd (Debian's build is double precision) has no
+ * distance query for separated bodies, so these give the status and, when
+ * overlapping, the penetration depth. The tolerances are libccd's defaults
+ * (CCD_INIT): epa 1e-4, mpr 1e-4, dist 1e-6; max_iterations 1000. */
+#include <ccd/ccd.h>
+#include <ccd/vec3.h>
+
+#include "colliders_internal.h"
+
+#define MK_CCD_MAX_ITER 1000
+
+static void mkSupport(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
+{
+	const mkBody3 *b = obj;
+	mkVec3 p = mkBody3_Support(*b, mkVec3_Make(ccdVec3X(dir), ccdVec3Y(dir), ccdVec3Z(dir)));
+	ccdVec3Set(out, p.x, p.y, p.z);
+}
+
+static void mkCenter(const void *obj, ccd_vec3_t *out)
+{
+	const mkBody3 *b = obj;
+	ccdVec3Set(out, b->t.x, b->t.y, b->t.z);
+}
+
+static void mkInit(ccd_t *ccd)
+{
+	CCD_INIT(ccd);
+	ccd->support1 = mkSupport;
+	ccd->support2 = mkSupport;
+	ccd->center1 = mkCenter;
+	ccd->center2 = mkCenter;
+	ccd->max_iterations = MK_CCD_MAX_ITER;
+}
+
+static mkResult mkRunGjk(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
+{
+	(void)s;
+	ccd_t ccd;
+	mkInit(&ccd);
+	int hit = ccdGJKIntersect(&b1, &b2, &ccd);
+	out->status = hit ? MK_CONTACT_OVERLAPPING : MK_CONTACT_SEPARATED;
+	return MK_OK;
+}
+
+/* MPR and EPA: 0 = intersect (depth, dir, pos filled), -1 = separated,
+ * -2 = allocation failure (EPA). dir: the direction to move B2 by depth. */
+static mkResult mkFinishPenetration(int rc, double depth, ccd_vec3_t *dir, mkCollision3 *out)
+{
+	if (rc == -1) {
+		out->status = MK_CONTACT_SEPARATED;
+		return MK_OK;
+	}
+	if (rc != 0)
+		return MK_ERR_MEMORY;
+	out->status = MK_CONTACT_OVERLAPPING;
+	out->distance = -depth;
+	out->normal = mkVec3_Make(-ccdVec3X(dir), -ccdVec3Y(dir), -ccdVec3Z(dir));
+	return MK_OK;
+}
+
+static mkResult mkRunMpr(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
+{
+	(void)s;
+	ccd_t ccd;
+	mkInit(&ccd);
+	ccd_real_t depth = 0;
+	ccd_vec3_t dir, pos;
+	int rc = ccdMPRPenetration(&b1, &b2, &ccd, &depth, &dir, &pos);
+	return mkFinishPenetration(rc, depth, &dir, out);
+}
+
+static mkResult mkRunEpa(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
+{
+	(void)s;
+	ccd_t ccd;
+	mkInit(&ccd);
+	ccd_real_t depth = 0;
+	ccd_vec3_t dir, pos;
+	int rc = ccdGJKPenetration(&b1, &b2, &ccd, &depth, &dir, &pos);
+	return mkFinishPenetration(rc, depth, &dir, out);
+}
+
+static const char *mkCcd(void) { return mkCollide_CcdVersion(); }
+
+#define MK_CCD_PARAMS "libccd on mkBody3_Support, CCD_INIT tolerances (epa 1e-4, mpr 1e-4, dist 1e-6), max_iterations 1000"
+
+const mkCollider mkCollider_CcdGjk = {
+	"ccd-gjk", "GJK intersection test on the exact smooth support functions (libccd)",
+	MK_CCD_PARAMS, MK_GIVES_STATUS, MK_PAIRS_ELLIPSOIDS | MK_PAIRS_SUPERQUADRICS, 0, NULL, mkRunGjk, mkCcd
+};
+
+const mkCollider mkCollider_CcdMpr = {
+	"ccd-mpr", "MPR status and penetration depth on the exact smooth support functions (libccd)",
+	MK_CCD_PARAMS, MK_GIVES_STATUS | MK_GIVES_PENETRATION, MK_PAIRS_ELLIPSOIDS | MK_PAIRS_SUPERQUADRICS, 0, NULL,
+	mkRunMpr, mkCcd
+};
+
+const mkCollider mkCollider_CcdGjkEpa = {
+	"ccd-gjk-epa", "GJK+EPA status and penetration depth on the exact smooth support functions (libccd)",
+	MK_CCD_PARAMS, MK_GIVES_STATUS | MK_GIVES_PENETRATION, MK_PAIRS_ELLIPSOIDS | MK_PAIRS_SUPERQUADRICS, 0, NULL,
+	mkRunEpa, mkCcd
+};

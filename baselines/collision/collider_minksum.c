@@ -1,0 +1,38 @@
+/* collider_minksum.c - the core's closed-form queries (mink/collision.h):
+ * MinkSum (Normal) and MinkSum (Ray), trust-region Newton on the support
+ * map of Theorem 1. */
+#include "colliders_internal.h"
+
+static mkResult mkRunNormal(mkBody3 b1, mkBody3 b2, mkColliderScratch *scratch, mkCollision3 *out)
+{
+	(void)scratch;
+	return mkCollide3_Normal(b1, b2, out);
+}
+
+static mkResult mkRunRay(mkBody3 b1, mkBody3 b2, mkColliderScratch *scratch, mkCollision3 *out)
+{
+	(void)scratch;
+	return mkCollide3_Ray(b1, b2, out);
+}
+
+#define MK_STR2(x) #x
+#define MK_STR(x) MK_STR2(x)
+#define MK_NEWTON_PARAMS "trust-region Newton, exact Hessian of the closed form, residual tol " \
+	MK_STR(MK_COLLIDE3_RESIDUAL_TOL) " of scale, max " MK_STR(MK_COLLIDE3_MAX_ITER) \
+	" iterations per start, touching band " MK_STR(MK_COLLIDE3_TOUCH_TOL) " of scale"
+
+const mkCollider mkCollider_MinkNormal = {
+	"minksum-normal",
+	"MinkSum (Normal): signed distance by Newton on the unit normal (core, closed form)",
+	MK_NEWTON_PARAMS "; overlap: restarts from the centre line and the body axes",
+	MK_GIVES_STATUS | MK_GIVES_DISTANCE | MK_GIVES_PENETRATION | MK_GIVES_WITNESS,
+	MK_PAIRS_ELLIPSOIDS | MK_PAIRS_SUPERQUADRICS, 0, NULL, mkRunNormal, NULL
+};
+
+const mkCollider mkCollider_MinkRay = {
+	"minksum-ray",
+	"MinkSum (Ray): contact-space boundary on the centre line by Newton (core, closed form)",
+	MK_NEWTON_PARAMS,
+	MK_GIVES_STATUS | MK_GIVES_WITNESS,
+	MK_PAIRS_ELLIPSOIDS | MK_PAIRS_SUPERQUADRICS, 0, NULL, mkRunRay, NULL
+};

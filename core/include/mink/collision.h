@@ -1,0 +1,134 @@
+/* mink/collision.h - signed distance and contact status of two placed
+ * superquadrics, solved on the closed-form support map (paper Theorem 1,
+ * Sec. 7.2): the queries MinkSum (Normal) and MinkSum (Ray).
+ *
+ * With h1, h2 the support functions of B1 - c1 and B2 - c2 (about the
+ * centres), d = c2 - c1 and K = (B1 - c1) (+) (-(B2 - c2)) the centred
+ * contact space, every unit n gives the bound
+ *     f(n) = <n, d> - h1(n) - h2(-n)  <=  sd,
+ * where sd is the signed distance: the Euclidean distance of the bodies when
+ * they are separated, minus the penetration depth (the shortest translation
+ * that separates them) when they overlap. sd = max over unit n of f(n), the
+ * signed distance of the point d from K. At the maximiser d - x(n) is
+ * parallel to n, x(n) = s1(n) - s2(-n) the contact-space point of Theorem 1.
+ *
+ *  mkCollide3_Normal  maximises f over the unit sphere by a trust-region
+ *                     Newton method with the exact Hessian of the closed
+ *                     forms (2 unknowns: a step in the tangent plane of n).
+ *                     Separated bodies: f has a single local maximum, so the
+ *                     answer is global and certified two-sided: f(n) <= sd <=
+ *                     |p2 - p1| for the witness points p1 in B1, p2 in B2.
+ *                     Overlapping bodies: the depth is the distance from d to
+ *                     the boundary of K, which can have several local optima;
+ *                     the solver restarts from a few directions (the centre
+ *                     line and the bodies' axes) and keeps the best. The
+ *                     bound f(n) <= sd still holds (the depth reported is an
+ *                     upper bound of the true one); that no smaller depth was
+ *                     missed is not certified (tested against a
+ *                     global grid search).
+ *  mkCollide3_Ray     finds the boundary point of K on the centre line (the
+ *                     paper's MinkSum (Ray)): minimises the convex function
+ *                     H(u + s) = h1(u + s) + h2(-(u + s)) over s orthogonal to
+ *                     u = d / |d| (its minimum is the distance from c1 to that
+ *                     boundary point); separated iff it is below |d|. Gives
+ *                     the status and the translation along the centre line
+ *                     that makes the bodies touch, not the Euclidean
+ *                     distance.
+ *
+ * Both work on any valid bodies (mkBody3_IsValid); ellipsoids take the
+ * ellipsoid formulas. Nothing is allocated. */
+#ifndef MINK_COLLISION_H
+#define MINK_COLLISION_H
+
+#include "body.h"
+
+MK_EXTERN_C_BEGIN
+
+typedef enum mkContact {
+	MK_CONTACT_UNKNOWN = -1,    /* no verdict (the solver did not converge) */
+	MK_CONTACT_SEPARATED = 0,
+	MK_CONTACT_TOUCHING = 1,    /* |sd| <= MK_COLLIDE3_TOUCH_TOL * scale */
+	MK_CONTACT_OVERLAPPING = 2
+} mkContact;
+
+/* "separated", "touching", "overlapping", "unknown". */
+MK_API const char *mkContact_Name(mkContact c);
+
+/* The answer of one query. Fields a query does not produce are NaN (reals)
+ * or -1 (integers). */
+typedef struct mkCollision3 {
+	mkContact status;
+	double distance;    /* signed distance sd (Normal): > 0 the Euclidean
+	                       distance, < 0 minus the penetration depth */
+	double directional; /* Ray: the translation of B2 along the centre line
+	                       c2 - c1 that makes the bodies touch (> 0 separated);
+	                       Normal: NaN */
+	mkVec3 normal;      /* unit n, pointing from B1 towards B2 */
+	mkVec3 p1, p2;      /* witness points on the boundaries of B1 and B2
+	                       (p2 - p1 = sd n at the optimum) */
+	double bound;       /* f(n) at the answer: a lower bound of sd */
+	double gap;         /* certificate width: separated (Normal), |p2 - p1| -
+	                       f(n) >= 0 (up to rounding, a few ulps of the
+	                       scale) and sd lies in [f(n), |p2 - p1|]; NaN
+	                       when no two-sided bound is known (overlap, Ray) */
+	double residual;    /* optimality residual at the answer, relative to
+	                       scale: |tangential part of d - x(n)| / scale
+	                       (Normal), |x(n) off the centre line| / scale (Ray);
+	                       a Ray whose iteration stalled but whose status is
+	                       certain by bounds reports the width of its bracket
+	                       of the boundary distance instead */
+	double scale;       /* |d| + r1 + r2, r the bodies' circumradius bounds */
+	int iterations;     /* Newton iterations (all restarts) */
+	int restarts;       /* extra starts tried (Normal, overlap only) */
+} mkCollision3;
+
+/* Status band: |sd| <= MK_COLLIDE3_TOUCH_TOL * scale is "touching". */
+#define MK_COLLIDE3_TOUCH_TOL 1e-12
+/* Converged when the residual (see mkCollision3) is at most this. */
+#define MK_COLLIDE3_RESIDUAL_TOL 1e-12
+/* Newton iterations per start before giving up. */
+#define MK_COLLIDE3_MAX_ITER 100
+
+/* An empty answer: status unknown, NaN reals, counts -1. out must not be
+ * NULL. */
+MK_API void mkCollision3_Clear(mkCollision3 *out);
+
+/* The status of a signed distance sd under the touching band
+ * MK_COLLIDE3_TOUCH_TOL * scale; MK_CONTACT_UNKNOWN when sd is NaN. */
+MK_API mkContact mkContact_FromDistance(double sd, double scale);
+
+/* MinkSum (Normal): signed distance, witnesses, status. Returns MK_OK, or
+ * MK_ERR_CONVERGENCE when no start converged within MK_COLLIDE3_MAX_ITER
+ * iterations or the iterate became non-finite (a degenerate pose; coincident
+ * centres are fine), and MK_ERR_UNSUPPORTED when the scale is not finite;
+ * the answer then has status MK_CONTACT_UNKNOWN, distance NaN, and the last
+ * iterate's numbers (bound, residual, witnesses) for diagnosis. out must not
+ * be NULL. */
+MK_API mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out);
+
+/* MinkSum (Ray): status, directional gap and witnesses. Failure as
+ * mkCollide3_Normal; coincident centres are overlapping (no solve). */
+MK_API mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out);
+
+/* f(n) = <n, c2 - c1> - h1(n) - h2(-n) for any nonzero n (normalised first):
+ * the support-function lower bound of the signed distance, evaluated with
+ * mkBody3_SupportValue. NaN for n = 0. */
+MK_API double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n);
+
+/* The scale the tolerances are relative to: |c2 - c1| + r1 + r2 with
+ * r = max(a, b, c) |M|_F, an upper bound of the body's distance from its
+ * centre. */
+MK_API double mkCollide3_Scale(mkBody3 b1, mkBody3 b2);
+
+/* The support point s(n) = argmax over B of <n, x> of the centred body B - t
+ * and its Jacobian ds/dn (the Hessian of the support function, symmetric
+ * positive semi-definite, J n = 0) for nonzero n, computed from the closed
+ * form. Returns the support point; J may be NULL. At normals where a
+ * superquadric's support function is not twice differentiable (n along a
+ * body axis with an exponent below 1) the curvature terms are clamped to
+ * large finite values. */
+MK_API mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J);
+
+MK_EXTERN_C_END
+
+#endif

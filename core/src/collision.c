@@ -1,0 +1,943 @@
+/* collision.c - mink/collision.h: MinkSum (Normal) and MinkSum (Ray) as
+ * trust-region Newton methods on the closed-form support map.
+ *
+ * The support function of the canonical superquadric is the nested dual norm
+ *   h(y) = N(p),  p = (a y1, b y2, c y3),
+ *   N(p) = | ( |(p1, p2)|_q2 , p3 ) |_q1,   q = 2 / (2 - eps)
+ * (the inner l_q2 norm over the first two components, the outer l_q1 norm of
+ * that and the third; eps = 1 gives q = 2, the ellipsoid). For an l_q norm
+ * of a pair, with r_i = |v_i| / |v|_q and w_i = r_i^(q-1):
+ *   d|v|_q / dv_i = sign(v_i) w_i,
+ *   d2|v|_q / dv_i dv_j = (q - 1) / |v|_q (delta_ij r_i^(q-2) - s_i s_j w_i w_j)
+ * and the chain rule through the inner norm gives the 3 x 3 Hessian of N;
+ * the support point is D grad N and its Jacobian D Hess N D (D = diag(a, b, c)),
+ * mapped to the placed body by s = M sigma(M^T n), J = M Hess M^T.
+ *
+ * The pair norms are evaluated from the ratio k/m of the smaller to the larger
+ * component: t = (k/m)^q, |v|_q = m (1 + t)^(1/q), r_m = (1 + t)^(-1/q),
+ * r_k = (k/m) r_m, w_m = 1 / ((1 + t) r_m), w_k = t / ((1 + t) r_k): one
+ * log, one log1p and two exp per pair, no overflow for any finite input. */
+#include <mink/collision.h>
+
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+
+/* Curvature terms r^(q-2) are clamped to this (q < 2 and r -> 0: the support
+ * function is not twice differentiable on a body axis). */
+#define MK_CURV_MAX 1e12
+/* The initial and largest trust-region radius (a step in the tangent plane
+ * of the unit normal, so roughly radians). */
+#define MK_TR_INIT 0.25
+#define MK_TR_MAX 1.0
+/* From this iteration on, a step whose model was poor (ratio below 0.75) is
+ * followed by an exact line search along the stiffest direction. */
+#define MK_LINE_AFTER 6
+
+const char *mkContact_Name(mkContact c)
+{
+	switch (c) {
+	case MK_CONTACT_SEPARATED: return "separated";
+	case MK_CONTACT_TOUCHING: return "touching";
+	case MK_CONTACT_OVERLAPPING: return "overlapping";
+	case MK_CONTACT_UNKNOWN: break;
+	}
+	return "unknown";
+}
+
+/* |(a, b)| for the well-scaled 2-vectors of the solver (gradients and steps
+ * far from the double range's ends): libm's hypot guards against overflow
+ * at a cost that dominated the whole query. */
+static double mkLen2(double a, double b)
+{
+	return sqrt(a * a + b * b);
+}
+
+/* ---- the support map with its Jacobian ------------------------------------ */
+
+/* The l_q norm of a pair (u, v), u, v >= 0, not both 0: the norm, the ratios
+ * r, the gradient weights w, and the curvature terms c = r^(q-2) (clamped). */
+typedef struct mkPairNorm { double norm, r[2], w[2], c[2]; } mkPairNorm;
+
+static double mkCurv(double w, double r, double q)
+{
+	/* r^(q-2) = w / r; on r = 0: 0 for q > 2, 1 for q = 2, clamped for q < 2. */
+	if (r > 0.0) {
+		double c = w / r;
+		return c < MK_CURV_MAX ? c : MK_CURV_MAX;
+	}
+	return q > 2.0 ? 0.0 : q == 2.0 ? 1.0 : MK_CURV_MAX;
+}
+
+static mkPairNorm mkPair(double u, double v, double q)
+{
+	mkPairNorm p;
+	int big = u >= v ? 0 : 1;
+	double m = big == 0 ? u : v, k = big == 0 ? v : u;
+	if (m == 0.0) {
+		/* Both zero (a direction along the other axis): any unit pair works
+		 * for the gradient, since the outer weight multiplies it by 0. */
+		p.norm = 0.0;
+		p.r[0] = 1.0; p.r[1] = 0.0;
+		p.w[0] = 1.0; p.w[1] = 0.0;
+		p.c[0] = mkCurv(1.0, 1.0, q); p.c[1] = mkCurv(0.0, 0.0, q);
+		return p;
+	}
+	double ratio = k / m;
+	double t = ratio > 0.0 ? exp(q * log(ratio)) : 0.0;
+	double rm = exp(-log1p(t) / q);
+	double rk = ratio * rm;
+	double wm = 1.0 / ((1.0 + t) * rm);
+	double wk = rk > 0.0 ? t / ((1.0 + t) * rk) : 0.0;
+	p.norm = m / rm;
+	p.r[big] = rm; p.r[1 - big] = rk;
+	p.w[big] = wm; p.w[1 - big] = wk;
+	p.c[big] = mkCurv(wm, rm, q); p.c[1 - big] = mkCurv(wk, rk, q);
+	return p;
+}
+
+/* A shape's constants for the loop. */
+typedef struct mkSupShape {
+	double a, b, c, q1, q2;
+	int ellipsoid;
+} mkSupShape;
+
+static mkSupShape mkSupShape_Make(mkShape3 s)
+{
+	mkSupShape k;
+	k.a = s.a; k.b = s.b; k.c = s.c;
+	k.q1 = 2.0 / (2.0 - s.eps1);
+	k.q2 = 2.0 / (2.0 - s.eps2);
+	k.ellipsoid = mkShape3_IsEllipsoid(s);
+	return k;
+}
+
+/* Canonical support point sigma(y) (y != 0) and, when H is not NULL, the
+ * Hessian of h at y. Returns h(y) = <y, sigma>. */
+static double mkSupport(const mkSupShape *s, mkVec3 y, mkVec3 *sigma, double H[3][3])
+{
+	double D[3] = { s->a, s->b, s->c };
+	double p[3] = { s->a * y.x, s->b * y.y, s->c * y.z };
+	double g[3], Hp[3][3];
+	if (s->ellipsoid) {
+		double L = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+		double inv = 1.0 / L;
+		for (int i = 0; i < 3; ++i)
+			g[i] = p[i] * inv;
+		if (H)
+			for (int i = 0; i < 3; ++i)
+				for (int j = 0; j < 3; ++j)
+					Hp[i][j] = ((i == j ? 1.0 : 0.0) - g[i] * g[j]) * inv;
+	} else {
+		double sg[3] = { p[0] < 0.0 ? -1.0 : 1.0, p[1] < 0.0 ? -1.0 : 1.0, p[2] < 0.0 ? -1.0 : 1.0 };
+		mkPairNorm in = mkPair(fabs(p[0]), fabs(p[1]), s->q2);
+		mkPairNorm out = mkPair(in.norm, fabs(p[2]), s->q1);
+		double G[2] = { sg[0] * in.w[0], sg[1] * in.w[1] };
+		g[0] = out.w[0] * G[0];
+		g[1] = out.w[0] * G[1];
+		g[2] = sg[2] * out.w[1];
+		if (H) {
+			double N = out.norm;
+			double k1 = (s->q1 - 1.0) / N;
+			/* Outer Hessian over (g, p3). */
+			double o00 = k1 * (out.c[0] - out.w[0] * out.w[0]);
+			double o01 = -k1 * out.w[0] * sg[2] * out.w[1];
+			double o11 = k1 * (out.c[1] - out.w[1] * out.w[1]);
+			/* w_g * Hess(inner) = (q2 - 1) / N * r_g^(q1 - 2) * (...): the
+			 * weight w_g = r_g^(q1-1) over the inner norm r_g N. */
+			double k2 = (s->q2 - 1.0) / N * out.c[0];
+			for (int i = 0; i < 2; ++i)
+				for (int j = 0; j < 2; ++j)
+					Hp[i][j] = o00 * G[i] * G[j]
+						+ k2 * ((i == j ? in.c[i] : 0.0) - G[i] * G[j]);
+			Hp[0][2] = Hp[2][0] = o01 * G[0];
+			Hp[1][2] = Hp[2][1] = o01 * G[1];
+			Hp[2][2] = o11;
+		}
+	}
+	*sigma = mkVec3_Make(D[0] * g[0], D[1] * g[1], D[2] * g[2]);
+	if (H)
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j)
+				H[i][j] = D[i] * Hp[i][j] * D[j];
+	return mkVec3_Dot(y, *sigma);
+}
+
+/* M A M^T for symmetric A. */
+static mkMat3 mkSandwich(mkMat3 M, double A[3][3])
+{
+	double T[3][3];
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			T[i][j] = M.m[i][0] * A[0][j] + M.m[i][1] * A[1][j] + M.m[i][2] * A[2][j];
+	mkMat3 R;
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			R.m[i][j] = T[i][0] * M.m[j][0] + T[i][1] * M.m[j][1] + T[i][2] * M.m[j][2];
+	return R;
+}
+
+mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J)
+{
+	mkSupShape s = mkSupShape_Make(b.shape);
+	mkVec3 sigma;
+	double H[3][3];
+	if (!(mkVec3_Dot(n, n) > 0.0)) {
+		if (J)
+			for (int i = 0; i < 3; ++i)
+				for (int j = 0; j < 3; ++j)
+					J->m[i][j] = NAN;
+		return mkVec3_Make(NAN, NAN, NAN);
+	}
+	mkSupport(&s, mkMat3_MulTVec(b.M, n), &sigma, J ? H : NULL);
+	if (J)
+		*J = mkSandwich(b.M, H);
+	return mkMat3_MulVec(b.M, sigma);
+}
+
+/* ---- the pair ----------------------------------------------------------- */
+
+typedef struct mkPairCtx {
+	mkBody3 b1, b2;
+	mkSupShape s1, s2;
+	mkVec3 d;
+	double scale;
+} mkPairCtx;
+
+/* The canonical Hessians of the two support functions at M1^T m and
+ * -M2^T m: the Jacobian of x is M1 H1 M1^T + M2 H2 M2^T, only ever needed in
+ * a tangent plane (mkPair_Tangent), so it is never formed. */
+typedef struct mkPairHess { double H1[3][3], H2[3][3]; } mkPairHess;
+
+/* Everything at one (possibly unnormalised) direction m: the contact-space
+ * point x = s1(m) - s2(-m), H = <m, x> (= h1(m) + h2(-m)), and, when J is not
+ * NULL, the Hessians. s1, s2 receive the support points (about the
+ * centres). */
+static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkVec3 *x, mkVec3 *s1, mkVec3 *s2, mkPairHess *J)
+{
+	mkVec3 g1, g2;
+	mkSupport(&c->s1, mkMat3_MulTVec(c->b1.M, m), &g1, J ? J->H1 : NULL);
+	mkSupport(&c->s2, mkMat3_MulTVec(c->b2.M, mkVec3_Neg(m)), &g2, J ? J->H2 : NULL);
+	*s1 = mkMat3_MulVec(c->b1.M, g1);
+	*s2 = mkMat3_MulVec(c->b2.M, g2);
+	*x = mkVec3_Sub(*s1, *s2);
+	return mkVec3_Dot(m, *x);
+}
+
+/* a^T H b for a symmetric 3 x 3 H. */
+static double mkQuadH(double H[3][3], mkVec3 a, mkVec3 b)
+{
+	double hb0 = H[0][0] * b.x + H[0][1] * b.y + H[0][2] * b.z;
+	double hb1 = H[1][0] * b.x + H[1][1] * b.y + H[1][2] * b.z;
+	double hb2 = H[2][0] * b.x + H[2][1] * b.y + H[2][2] * b.z;
+	return a.x * hb0 + a.y * hb1 + a.z * hb2;
+}
+
+/* The Jacobian of x in the plane of (t1, t2): A[i][j] = ti^T J tj. */
+static void mkPair_Tangent(const mkPairCtx *c, mkPairHess *J, mkVec3 t1, mkVec3 t2, double A[2][2])
+{
+	mkVec3 a1 = mkMat3_MulTVec(c->b1.M, t1), a2 = mkMat3_MulTVec(c->b1.M, t2);
+	mkVec3 e1 = mkMat3_MulTVec(c->b2.M, t1), e2 = mkMat3_MulTVec(c->b2.M, t2);
+	A[0][0] = mkQuadH(J->H1, a1, a1) + mkQuadH(J->H2, e1, e1);
+	A[0][1] = A[1][0] = mkQuadH(J->H1, a1, a2) + mkQuadH(J->H2, e1, e2);
+	A[1][1] = mkQuadH(J->H1, a2, a2) + mkQuadH(J->H2, e2, e2);
+}
+
+/* An orthonormal basis (t1, t2) of the plane orthogonal to the unit n
+ * (Frisvad's construction, in the branch-free form of Duff et al. 2017). */
+static void mkTangents(mkVec3 n, mkVec3 *t1, mkVec3 *t2)
+{
+	double sign = n.z >= 0.0 ? 1.0 : -1.0;
+	double a = -1.0 / (sign + n.z);
+	double b = n.x * n.y * a;
+	*t1 = mkVec3_Make(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+	*t2 = mkVec3_Make(b, sign + n.y * n.y * a, -n.y);
+}
+
+/* The trust-region step of the model  m(s) = -g.s + 1/2 s^T A s  (A 2 x 2
+ * symmetric) within |s| <= radius: the Newton step when A is positive
+ * definite and it fits, else (A + mu I) s = g with mu >= max(0, -lambda_min)
+ * on the boundary (Newton on the secular equation; the "hard case" adds the
+ * lowest eigenvector). Returns the predicted increase g.s - 1/2 s^T A s. */
+/* Eigen-decomposition of a symmetric 2 x 2 matrix: lam[0] <= lam[1] with
+ * unit eigenvectors v0, v1. */
+static void mkEig2(double A[2][2], double lam[2], double v0[2], double v1[2])
+{
+	double a = A[0][0], b = 0.5 * (A[0][1] + A[1][0]), c = A[1][1];
+	double mean = 0.5 * (a + c), half = 0.5 * (a - c);
+	double rad = mkLen2(half, b);
+	lam[0] = mean - rad;
+	lam[1] = mean + rad;
+	if (rad == 0.0) {
+		v1[0] = 1.0; v1[1] = 0.0;
+	} else if (half >= 0.0) {
+		double nx = half + rad, ny = b, nn = mkLen2(nx, ny);
+		v1[0] = nx / nn; v1[1] = ny / nn;
+	} else {
+		double nx = b, ny = rad - half, nn = mkLen2(nx, ny);
+		v1[0] = nx / nn; v1[1] = ny / nn;
+	}
+	v0[0] = -v1[1];
+	v0[1] = v1[0];
+}
+
+static double mkTrustStep(const double g[2], double A[2][2], double radius, double s[2])
+{
+	/* The common case first: A positive definite and the Newton step inside
+	 * the region (Cramer's rule; pred = g.s / 2 for the Newton step). */
+	double a = A[0][0], b = 0.5 * (A[0][1] + A[1][0]), c = A[1][1], det = a * c - b * b;
+	if (a > 0.0 && det > 1e-12 * (a * c)) {
+		double z0 = (c * g[0] - b * g[1]) / det, z1 = (a * g[1] - b * g[0]) / det;
+		if (z0 * z0 + z1 * z1 <= radius * radius) {
+			s[0] = z0;
+			s[1] = z1;
+			return 0.5 * (g[0] * z0 + g[1] * z1);
+		}
+	}
+	double lam2[2], v0[2], v1[2];
+	mkEig2(A, lam2, v0, v1);
+	double l0 = lam2[0], l1 = lam2[1];
+	double v0x = v0[0], v0y = v0[1], v1x = v1[0], v1y = v1[1];
+	double g0 = v0x * g[0] + v0y * g[1], g1 = v1x * g[0] + v1y * g[1];
+	double lam[2] = { l0, l1 }, gg[2] = { g0, g1 }, z[2];
+	double mu = 0.0;
+	int newton_ok = l0 > 0.0;
+	if (newton_ok) {
+		z[0] = g0 / l0;
+		z[1] = g1 / l1;
+		newton_ok = mkLen2(z[0], z[1]) <= radius;
+	}
+	if (!newton_ok) {
+		double lo = l0 > 0.0 ? 0.0 : -l0;
+		/* Start just right of the pole; Newton on 1/|s(mu)| - 1/radius is
+		 * monotone from the left. */
+		double gn = mkLen2(g0, g1);
+		mu = lo + 1e-14 * (fabs(l0) + fabs(l1) + gn / radius) + DBL_MIN;
+		double norm = 0.0;
+		for (int it = 0; it < 60; ++it) {
+			double n2 = 0.0, d3 = 0.0;
+			for (int i = 0; i < 2; ++i) {
+				double den = lam[i] + mu;
+				z[i] = gg[i] / den;
+				n2 += z[i] * z[i];
+				d3 += z[i] * z[i] / den;
+			}
+			norm = sqrt(n2);
+			if (norm <= radius * (1.0 + 1e-10))
+				break;
+			double step = (norm - radius) / radius * n2 / d3;
+			mu += step;
+		}
+		if (norm < radius * (1.0 - 1e-6) && l0 <= 0.0) {
+			/* Hard case: fill the step to the boundary along v0. */
+			double extra = sqrt(radius * radius - norm * norm);
+			z[0] += z[0] >= 0.0 ? extra : -extra;
+		}
+	}
+	s[0] = v0x * z[0] + v1x * z[1];
+	s[1] = v0y * z[0] + v1y * z[1];
+	return g0 * z[0] + g1 * z[1] - 0.5 * (l0 * z[0] * z[0] + l1 * z[1] * z[1]);
+}
+
+/* ---- MinkSum (Normal) --------------------------------------------------- */
+
+/* The state at a unit normal n. */
+typedef struct mkNormalState {
+	mkVec3 n, x, s1, s2, t1, t2;
+	mkPairHess J;
+	double f;        /* <n, d - x> */
+	double g[2];     /* tangential components of d - x */
+} mkNormalState;
+
+static void mkNormal_Eval(const mkPairCtx *c, mkVec3 n, mkNormalState *st)
+{
+	st->n = n;
+	double H = mkPair_Eval(c, n, &st->x, &st->s1, &st->s2, &st->J);
+	st->f = mkVec3_Dot(n, c->d) - H;
+	mkTangents(n, &st->t1, &st->t2);
+	mkVec3 r = mkVec3_Sub(c->d, st->x);
+	st->g[0] = mkVec3_Dot(st->t1, r);
+	st->g[1] = mkVec3_Dot(st->t2, r);
+}
+
+/* Value only, for the trial points of the trust region. */
+static double mkNormal_Value(const mkPairCtx *c, mkVec3 n)
+{
+	mkVec3 x, s1, s2;
+	return mkVec3_Dot(n, c->d) - mkPair_Eval(c, n, &x, &s1, &s2, NULL);
+}
+
+/* The slope of f along the great circle from n towards the unit tangent e,
+ * at m = normalize(n + t e): <P_m e, d - x(m)> (up to a positive factor). */
+static double mkNormal_Slope(const mkPairCtx *c, mkVec3 n, mkVec3 e, double t)
+{
+	mkVec3 m = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, t))), x, s1, s2;
+	mkPair_Eval(c, m, &x, &s1, &s2, NULL);
+	mkVec3 r = mkVec3_Sub(c->d, x);
+	return mkVec3_Dot(e, r) - mkVec3_Dot(e, m) * mkVec3_Dot(m, r);
+}
+
+/* Maximise f along the great circle through st->n in the tangent direction e
+ * by bisection on the sign of the slope: the safeguard where f is too far
+ * from quadratic for Newton (near an axis of a body with an exponent well
+ * below 1, where the support point crosses a nearly flat face within a tiny
+ * change of the normal). Returns 1 when the bracket shrank to rounding. */
+static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, double h)
+{
+	mkVec3 n = st->n;
+	double s0 = mkNormal_Slope(c, n, e, 0.0);
+	if (s0 < 0.0)
+		e = mkVec3_Neg(e);
+	double lo = 0.0, hi = h;
+	int k = 0;
+	while (mkNormal_Slope(c, n, e, hi) > 0.0 && hi < 1e6 && k++ < 40) {
+		lo = hi;
+		hi *= 4.0;
+	}
+	for (k = 0; k < 120; ++k) {
+		double mid = 0.5 * (lo + hi);
+		if (mid <= lo || mid >= hi)
+			break;
+		if (mkNormal_Slope(c, n, e, mid) > 0.0)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	mkVec3 nlo = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, lo)));
+	mkVec3 nhi = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, hi)));
+	double flo = mkNormal_Value(c, nlo), fhi = mkNormal_Value(c, nhi);
+	mkVec3 nb = fhi > flo ? nhi : nlo;
+	if (fmax(flo, fhi) >= st->f)
+		mkNormal_Eval(c, nb, st);
+	return hi - lo <= 8.0 * DBL_EPSILON * (1.0 + hi);
+}
+
+static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][2])
+{
+	/* Hessian of -f in the tangent plane: t^T J t + f I. */
+	mkPair_Tangent(c, &st->J, st->t1, st->t2, A);
+	A[0][0] += st->f;
+	A[1][1] += st->f;
+}
+
+/* Maximise f from n0. Returns 1 on convergence, 0 otherwise; *iters adds
+ * the iterations used; *res receives the residual that decided (the
+ * tangential gradient, or its smooth part after a line search). */
+static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int *iters, double *res)
+{
+	mkNormal_Eval(c, n0, st);
+	double radius = MK_TR_INIT;
+	double tol = MK_COLLIDE3_RESIDUAL_TOL * c->scale;
+	int rejects = 0;
+	double hist[3] = { -INFINITY, -INFINITY, -INFINITY };
+	for (int it = 0; it < MK_COLLIDE3_MAX_ITER; ++it) {
+		hist[it % 3] = st->f;
+		*res = mkLen2(st->g[0], st->g[1]);
+		if (*res <= tol)
+			return 1;
+		*iters += 1;
+		double A[2][2];
+		mkNormal_Hessian(c, st, A);
+		double s[2];
+		double pred = mkTrustStep(st->g, A, radius, s);
+		double slen = mkLen2(s[0], s[1]);
+		if (slen < radius && (slen <= 1e-14 || pred <= 1e-17 * c->scale)) {
+			/* An interior Newton step that cannot move the normal by more
+			 * than rounding, or gain more than 1e-17 of the scale: the
+			 * gradient is at its rounding floor (|Hessian| eps). */
+			return 1;
+		}
+		mkVec3 m = mkVec3_Add(st->n, mkVec3_Add(mkVec3_Scale(st->t1, s[0]), mkVec3_Scale(st->t2, s[1])));
+		/* The trial point is evaluated in full: most steps are taken. */
+		mkNormalState trial;
+		mkNormal_Eval(c, mkVec3_Normalize(m), &trial);
+		double gain = trial.f - st->f;
+		/* Within rounding of f the ratio means nothing: a step whose
+		 * predicted gain is below it is taken when it does not lose. */
+		double noise = 64.0 * DBL_EPSILON * (fabs(st->f) + c->scale);
+		double rho = pred > noise ? gain / pred : (gain >= -noise ? 1.0 : -1.0);
+		if (rho < 0.25)
+			radius = 0.25 * slen;
+		else if (rho > 0.75 && slen > 0.99 * radius)
+			radius = fmin(2.0 * radius, MK_TR_MAX);
+		if (rho > 1e-4) {
+			*st = trial;
+			rejects = rho < 0.25 ? rejects + 1 : 0;
+		} else {
+			rejects += 1;
+		}
+		if (rejects >= 2 || radius < 1e-12 || (it >= MK_LINE_AFTER && rho < 0.75)) {
+			/* The quadratic model keeps failing: solve exactly along the
+			 * stiffest direction, then check the smooth direction. */
+			double lam[2], v0[2], v1[2];
+			mkNormal_Hessian(c, st, A);
+			mkEig2(A, lam, v0, v1);
+			mkVec3 e = mkVec3_Add(mkVec3_Scale(st->t1, v1[0]), mkVec3_Scale(st->t2, v1[1]));
+			double before = st->f;
+			int tight = mkNormal_LineSearch(c, st, e, fmax(radius, 1e-6));
+			int moved = st->f > before;
+			mkNormal_Hessian(c, st, A);
+			mkEig2(A, lam, v0, v1);
+			double flat = fabs(v0[0] * st->g[0] + v0[1] * st->g[1]);
+			if (tight && flat <= tol) {
+				*res = flat;
+				return 1;
+			}
+			/* Stalled in value: no gain above rounding over the last three
+			 * iterations and the exact line search is at its optimum. The
+			 * normal is then within rounding of a kink of the support
+			 * function; f is converged, the witness points are not
+			 * resolved better than the normal (the certificate says how
+			 * well). */
+			double oldest = fmin(hist[0], fmin(hist[1], hist[2]));
+			if (tight && st->f - oldest <= 1e-13 * c->scale && radius < 1e-10) {
+				*res = mkLen2(st->g[0], st->g[1]);
+				return 2;
+			}
+			rejects = 0;
+			if (moved)
+				radius = fmax(radius, 1e-3);
+		}
+	}
+	*res = mkLen2(st->g[0], st->g[1]);
+	return *res <= tol;
+}
+
+static int mkIsFinite3(mkVec3 v)
+{
+	return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
+}
+
+double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
+{
+	double r[2];
+	const mkBody3 *b[2] = { &b1, &b2 };
+	for (int k = 0; k < 2; ++k) {
+		double fro = 0.0;
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j)
+				fro += b[k]->M.m[i][j] * b[k]->M.m[i][j];
+		mkShape3 s = b[k]->shape;
+		r[k] = fmax(s.a, fmax(s.b, s.c)) * sqrt(fro);
+	}
+	return mkVec3_Length(mkVec3_Sub(b2.t, b1.t)) + r[0] + r[1];
+}
+
+double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n)
+{
+	mkVec3 u = mkVec3_Normalize(n);
+	mkBody3 c1 = b1, c2 = b2;
+	c1.t = c2.t = mkVec3_Make(0.0, 0.0, 0.0);
+	return mkVec3_Dot(u, mkVec3_Sub(b2.t, b1.t)) - mkBody3_SupportValue(c1, u)
+		- mkBody3_SupportValue(c2, mkVec3_Neg(u));
+}
+
+void mkCollision3_Clear(mkCollision3 *out)
+{
+	mkVec3 nan3 = mkVec3_Make(NAN, NAN, NAN);
+	out->status = MK_CONTACT_UNKNOWN;
+	out->distance = out->directional = out->bound = out->gap = out->residual = NAN;
+	out->normal = out->p1 = out->p2 = nan3;
+	out->scale = NAN;
+	out->iterations = -1;
+	out->restarts = -1;
+}
+
+static mkPairCtx mkPairCtx_Make(mkBody3 b1, mkBody3 b2)
+{
+	mkPairCtx c;
+	c.b1 = b1;
+	c.b2 = b2;
+	c.s1 = mkSupShape_Make(b1.shape);
+	c.s2 = mkSupShape_Make(b2.shape);
+	c.d = mkVec3_Sub(b2.t, b1.t);
+	c.scale = mkCollide3_Scale(b1, b2);
+	return c;
+}
+
+mkContact mkContact_FromDistance(double sd, double scale)
+{
+	if (isnan(sd))
+		return MK_CONTACT_UNKNOWN;
+	if (sd > MK_COLLIDE3_TOUCH_TOL * scale)
+		return MK_CONTACT_SEPARATED;
+	if (sd < -MK_COLLIDE3_TOUCH_TOL * scale)
+		return MK_CONTACT_OVERLAPPING;
+	return MK_CONTACT_TOUCHING;
+}
+
+/* The point where the segment from b's centre to x crosses b's boundary:
+ * t + (x - t) / gauge(x), the gauge Psi^(eps1/2) (homogeneous of degree 1
+ * in the body frame). x itself when x is the centre. */
+static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
+{
+	double psi = mkBody3_Implicit(b, x);
+	if (!(psi > 0.0))
+		return x;
+	double gauge = pow(psi, 0.5 * b.shape.eps1);
+	return mkVec3_Add(b.t, mkVec3_Scale(mkVec3_Sub(x, b.t), 1.0 / gauge));
+}
+
+/* Extra starts for an overlap: the reversed centre line, the bodies' axis
+ * directions (both signs), the diagonals of their frames and a lattice over
+ * the sphere; Newton restarts from the best MK_RESTARTS of them by f that
+ * are not close (within about 18 degrees) to the answer or to each other. */
+enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 4 };
+
+mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
+{
+	mkCollision3_Clear(out);
+	mkPairCtx c = mkPairCtx_Make(b1, b2);
+	out->scale = c.scale;
+	if (!isfinite(c.scale))
+		return MK_ERR_UNSUPPORTED;
+	double dl = mkVec3_Length(c.d);
+	mkVec3 n0 = dl > 0.0 ? mkVec3_Scale(c.d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);
+	mkNormalState best;
+	int iters = 0;
+	double res = NAN, res2 = NAN;
+	int ok = mkNormal_Solve(&c, n0, &best, &iters, &res);
+	out->restarts = 0;
+	if (!(ok && best.f > 0.0)) {
+		/* Overlap (or a failed start): f may have several local maxima on the
+		 * sphere. Evaluate f at the candidate directions, restart from the
+		 * best few not already near the answer, keep the best converged. */
+		mkVec3 cand[MK_CAND];
+		double val[MK_CAND];
+		int nc = 0;
+		cand[nc++] = mkVec3_Neg(n0);
+		for (int k = 0; k < 2; ++k) {
+			mkMat3 M = k == 0 ? b1.M : b2.M;
+			mkVec3 col[3];
+			for (int j = 0; j < 3; ++j) {
+				col[j] = mkVec3_Normalize(mkVec3_Make(M.m[0][j], M.m[1][j], M.m[2][j]));
+				cand[nc++] = col[j];
+				cand[nc++] = mkVec3_Neg(col[j]);
+			}
+			/* and the eight diagonals of the body's frame */
+			for (int q = 0; q < 8; ++q)
+				cand[nc++] = mkVec3_Normalize(mkVec3_Add(mkVec3_Scale(col[0], q & 1 ? -1.0 : 1.0),
+					mkVec3_Add(mkVec3_Scale(col[1], q & 2 ? -1.0 : 1.0), mkVec3_Scale(col[2], q & 4 ? -1.0 : 1.0))));
+		}
+		/* and a Fibonacci lattice of MK_FIB directions over the sphere */
+		for (int q = 0; q < MK_FIB; ++q) {
+			double z = 1.0 - (2.0 * q + 1.0) / MK_FIB, r = sqrt(1.0 - z * z);
+			double ang = q * 2.399963229728653; /* the golden angle */
+			cand[nc++] = mkVec3_Make(r * cos(ang), r * sin(ang), z);
+		}
+		for (int i = 0; i < nc; ++i)
+			val[i] = mkIsFinite3(cand[i]) ? mkNormal_Value(&c, cand[i]) : -INFINITY;
+		mkVec3 picked[MK_RESTARTS];
+		int npicked = 0;
+		for (int r = 0; r < MK_RESTARTS; ++r) {
+			int pick = -1;
+			for (int i = 0; i < nc; ++i) {
+				if (!(val[i] > -INFINITY))
+					continue;
+				if (ok && mkVec3_Dot(cand[i], best.n) > 0.99)
+					continue;
+				int near = 0;
+				for (int q = 0; q < npicked; ++q)
+					near |= mkVec3_Dot(cand[i], picked[q]) > 0.95;
+				if (near)
+					continue;
+				if (pick < 0 || val[i] > val[pick])
+					pick = i;
+			}
+			if (pick < 0)
+				break;
+			val[pick] = -INFINITY;
+			picked[npicked++] = cand[pick];
+			mkNormalState st;
+			int ok2 = mkNormal_Solve(&c, cand[pick], &st, &iters, &res2);
+			out->restarts += 1;
+			if (ok2 && (!ok || st.f > best.f)) {
+				best = st;
+				res = res2;
+				ok = 1;
+			}
+		}
+	}
+	out->iterations = iters;
+	out->normal = best.n;
+	out->bound = best.f;
+	out->p1 = mkVec3_Add(b1.t, best.s1);
+	out->p2 = mkVec3_Add(b2.t, best.s2);
+	out->residual = res / c.scale;
+	if (!ok || !isfinite(best.f) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
+		return MK_ERR_CONVERGENCE;
+	out->distance = best.f;
+	double span = mkVec3_Length(mkVec3_Sub(out->p2, out->p1));
+	if (best.f > 0.0 && span - best.f > MK_COLLIDE3_TOUCH_TOL * c.scale) {
+		/* Near a kink the support points are not resolved by the normal
+		 * (a nearly flat face is crossed within rounding of n). Tighter
+		 * witnesses: each support point moved by -/+ f n to the other
+		 * body's supporting plane, then radially onto that body. */
+		mkVec3 q1 = mkRadial(b1, mkVec3_Sub(out->p2, mkVec3_Scale(best.n, best.f)));
+		mkVec3 q2 = mkRadial(b2, mkVec3_Add(out->p1, mkVec3_Scale(best.n, best.f)));
+		double s1 = mkVec3_Length(mkVec3_Sub(out->p2, q1)), s2 = mkVec3_Length(mkVec3_Sub(q2, out->p1));
+		if (s1 < span && s1 <= s2) {
+			out->p1 = q1;
+			span = s1;
+		} else if (s2 < span) {
+			out->p2 = q2;
+			span = s2;
+		}
+	}
+	if (best.f > 0.0)
+		out->gap = span - best.f;
+	out->status = mkContact_FromDistance(best.f, c.scale);
+	return MK_OK;
+}
+
+/* ---- MinkSum (Ray) ------------------------------------------------------ */
+
+/* psi(s) = H(u + s1 t1 + s2 t2) and its pieces at s. */
+typedef struct mkRayState {
+	double s[2], H, g[2];
+	mkVec3 m, x, s1, s2;
+	mkPairHess J;
+} mkRayState;
+
+/* The frame of the ray, and the contact-space points seen so far (a ring):
+ * every one is a point of K, the material of the lower bound. */
+enum { MK_RAY_KEEP = 24 };
+typedef struct mkRayFrame {
+	mkVec3 u, t1, t2;
+	double p[MK_RAY_KEEP][2], r[MK_RAY_KEEP]; /* tangential coordinates, radial part */
+	int count;
+} mkRayFrame;
+
+static void mkRay_Keep(mkRayFrame *f, mkVec3 x)
+{
+	int k = f->count++ % MK_RAY_KEEP;
+	f->p[k][0] = mkVec3_Dot(f->t1, x);
+	f->p[k][1] = mkVec3_Dot(f->t2, x);
+	f->r[k] = mkVec3_Dot(f->u, x);
+}
+
+/* A lower bound of the boundary distance psi* along u: a convex combination
+ * of three kept points of K whose tangential parts surround 0 lies on the
+ * ray, at t = sum w_i r_i, so t u is in K and psi* >= t. -inf when no kept
+ * triangle surrounds 0. */
+static double mkRay_Lower(const mkRayFrame *f)
+{
+	int n = f->count < MK_RAY_KEEP ? f->count : MK_RAY_KEEP;
+	double best = -INFINITY;
+	for (int i = 0; i < n; ++i)
+		for (int j = i + 1; j < n; ++j)
+			for (int k = j + 1; k < n; ++k) {
+				const double *a = f->p[i], *b = f->p[j], *c = f->p[k];
+				double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+				if (det == 0.0)
+					continue;
+				/* barycentric weights of the origin */
+				double wb = ((-a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (-a[1])) / det;
+				double wc = ((b[0] - a[0]) * (-a[1]) - (-a[0]) * (b[1] - a[1])) / det;
+				double wa = 1.0 - wb - wc;
+				if (wa < 0.0 || wb < 0.0 || wc < 0.0)
+					continue;
+				double t = wa * f->r[i] + wb * f->r[j] + wc * f->r[k];
+				if (t > best)
+					best = t;
+			}
+	return best;
+}
+
+static mkVec3 mkRay_Point(const mkRayFrame *f, const double s[2])
+{
+	return mkVec3_Add(f->u, mkVec3_Add(mkVec3_Scale(f->t1, s[0]), mkVec3_Scale(f->t2, s[1])));
+}
+
+static void mkRay_Eval(const mkPairCtx *c, mkRayFrame *f, const double s[2], mkRayState *st)
+{
+	st->s[0] = s[0];
+	st->s[1] = s[1];
+	st->m = mkRay_Point(f, s);
+	st->H = mkPair_Eval(c, st->m, &st->x, &st->s1, &st->s2, &st->J);
+	mkRay_Keep(f, st->x);
+	/* Gradient of -psi (the solver maximises -psi). */
+	st->g[0] = -mkVec3_Dot(f->t1, st->x);
+	st->g[1] = -mkVec3_Dot(f->t2, st->x);
+}
+
+static double mkRay_Value(const mkPairCtx *c, mkRayFrame *f, const double s[2])
+{
+	mkVec3 x, a1, a2;
+	double H = mkPair_Eval(c, mkRay_Point(f, s), &x, &a1, &a2, NULL);
+	mkRay_Keep(f, x);
+	return H;
+}
+
+static double mkRay_SlopeAt(const mkPairCtx *c, mkRayFrame *f, const double base[2], const double e[2],
+	mkVec3 ew, double t)
+{
+	double s[2] = { base[0] + t * e[0], base[1] + t * e[1] };
+	mkVec3 x, a1, a2;
+	mkPair_Eval(c, mkRay_Point(f, s), &x, &a1, &a2, NULL);
+	mkRay_Keep(f, x);
+	return mkVec3_Dot(ew, x);
+}
+
+/* psi along s + t e (e a unit vector of the plane): convex in t; minimised
+ * by bisection on the sign of its slope <e, x>. Returns 1 when the bracket
+ * shrank to rounding. */
+static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, const double e0[2], double h)
+{
+	double e[2] = { e0[0], e0[1] };
+	mkVec3 ew = mkVec3_Add(mkVec3_Scale(f->t1, e[0]), mkVec3_Scale(f->t2, e[1]));
+	double base[2] = { st->s[0], st->s[1] };
+#define MK_RAY_SLOPE(t) mkRay_SlopeAt(c, f, base, e, ew, (t))
+	if (mkVec3_Dot(ew, st->x) > 0.0) {
+		e[0] = -e[0];
+		e[1] = -e[1];
+		ew = mkVec3_Neg(ew);
+	}
+	double lo = 0.0, hi = h;
+	int k = 0;
+	while (MK_RAY_SLOPE(hi) < 0.0 && hi < 1e8 && k++ < 40) {
+		lo = hi;
+		hi *= 4.0;
+	}
+	for (k = 0; k < 120; ++k) {
+		double mid = 0.5 * (lo + hi);
+		if (mid <= lo || mid >= hi)
+			break;
+		if (MK_RAY_SLOPE(mid) < 0.0)
+			lo = mid;
+		else
+			hi = mid;
+	}
+#undef MK_RAY_SLOPE
+	double slo[2] = { base[0] + lo * e[0], base[1] + lo * e[1] };
+	double shi[2] = { base[0] + hi * e[0], base[1] + hi * e[1] };
+	double plo = mkRay_Value(c, f, slo), phi = mkRay_Value(c, f, shi);
+	if (fmin(plo, phi) <= st->H)
+		mkRay_Eval(c, f, phi < plo ? shi : slo, st);
+	return hi - lo <= 8.0 * DBL_EPSILON * (1.0 + hi + mkLen2(base[0], base[1]));
+}
+
+mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
+{
+	mkCollision3_Clear(out);
+	mkPairCtx c = mkPairCtx_Make(b1, b2);
+	out->scale = c.scale;
+	if (!isfinite(c.scale))
+		return MK_ERR_UNSUPPORTED;
+	double dl = mkVec3_Length(c.d);
+	out->restarts = 0;
+	if (dl == 0.0) {
+		/* Coincident centres: both bodies contain the point. */
+		out->status = MK_CONTACT_OVERLAPPING;
+		out->residual = 0.0;
+		out->iterations = 0;
+		return MK_OK;
+	}
+	mkRayFrame fr;
+	fr.count = 0;
+	fr.u = mkVec3_Scale(c.d, 1.0 / dl);
+	mkTangents(fr.u, &fr.t1, &fr.t2);
+	/* psi(s) = H(u + s t): convex in s in R^2, gradient the tangential part
+	 * of x(u + s t), Hessian t^T J t (J homogeneous of degree -1 in m).
+	 * The trust region maximises -psi. */
+	double zero[2] = { 0.0, 0.0 };
+	mkRayState st;
+	mkRay_Eval(&c, &fr, zero, &st);
+	double radius = MK_TR_INIT, tol = MK_COLLIDE3_RESIDUAL_TOL * c.scale;
+	double res = NAN;
+	int ok = 0, iters = 0, rejects = 0;
+	double hist[3] = { INFINITY, INFINITY, INFINITY };
+	for (int it = 0; it < MK_COLLIDE3_MAX_ITER && !ok; ++it) {
+		hist[it % 3] = st.H;
+		res = mkLen2(st.g[0], st.g[1]);
+		if (res <= tol) {
+			ok = 1;
+			break;
+		}
+		iters += 1;
+		double A[2][2];
+		mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
+		double step[2];
+		double sn = mkLen2(st.s[0], st.s[1]);
+		double pred = mkTrustStep(st.g, A, radius * (1.0 + sn), step);
+		double slen = mkLen2(step[0], step[1]);
+		if (slen < radius * (1.0 + sn) && (slen <= 1e-14 * (1.0 + sn) || pred <= 1e-17 * c.scale)) {
+			ok = 1;
+			break;
+		}
+		double s_new[2] = { st.s[0] + step[0], st.s[1] + step[1] };
+		mkRayState trial;
+		mkRay_Eval(&c, &fr, s_new, &trial);
+		double gain = st.H - trial.H;
+		double noise = 64.0 * DBL_EPSILON * (fabs(st.H) + c.scale);
+		double rho = pred > noise ? gain / pred : (gain >= -noise ? 1.0 : -1.0);
+		double rel = slen / (1.0 + sn);
+		if (rho < 0.25)
+			radius = 0.25 * rel;
+		else if (rho > 0.75 && rel > 0.99 * radius)
+			radius = fmin(2.0 * radius, MK_TR_MAX);
+		if (rho > 1e-4) {
+			st = trial;
+			rejects = rho < 0.25 ? rejects + 1 : 0;
+		} else {
+			rejects += 1;
+		}
+		if (rejects >= 2 || radius < 1e-12 || (it >= MK_LINE_AFTER && rho < 0.75)) {
+			double lam[2], v0[2], v1[2];
+			mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
+			mkEig2(A, lam, v0, v1);
+			double before = st.H;
+			int tight = mkRay_LineSearch(&c, &fr, &st, v1, fmax(radius, 1e-6) * (1.0 + sn));
+			int moved = st.H < before;
+			mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
+			mkEig2(A, lam, v0, v1);
+			double flat = fabs(v0[0] * st.g[0] + v0[1] * st.g[1]);
+			double oldest = fmax(hist[0], fmax(hist[1], hist[2]));
+			if (tight && (flat <= tol || (oldest - st.H <= 1e-13 * c.scale && radius < 1e-10))) {
+				res = flat <= tol ? flat : mkLen2(st.g[0], st.g[1]);
+				ok = 1;
+				break;
+			}
+			rejects = 0;
+			if (moved)
+				radius = fmax(radius, 1e-3);
+		}
+	}
+	out->iterations = iters;
+	mkVec3 n = mkVec3_Normalize(st.m);
+	out->normal = n;
+	out->p1 = mkVec3_Add(b1.t, st.s1);
+	out->p2 = mkVec3_Add(b2.t, st.s2);
+	out->residual = res / c.scale;
+	/* H = |m| (h1(n) + h2(-n)); f(n) = <n, d> - H / |m|. */
+	double ml = mkVec3_Length(st.m);
+	out->bound = mkVec3_Dot(n, c.d) - st.H / ml;
+	if (!isfinite(st.H) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
+		return MK_ERR_CONVERGENCE;
+	if (!ok) {
+		/* Not converged (a support function nearly kinked along a curve,
+		 * where the iterates zigzag): the status may still be certain.
+		 * H >= psi* always, and a kept triangle gives psi* >= lower. */
+		/* Probes around the last iterate in three directions, at two radii,
+		 * so that some kept points surround the ray. */
+		for (int k = 0; k < 6; ++k) {
+			double ang = 2.0 * MK_PI * (k % 3) / 3.0, rad = k < 3 ? 1e-2 : 0.3;
+			double sp[2] = { st.s[0] + rad * cos(ang), st.s[1] + rad * sin(ang) };
+			mkRay_Value(&c, &fr, sp);
+		}
+		double lower = mkRay_Lower(&fr);
+		double band = MK_COLLIDE3_TOUCH_TOL * c.scale;
+		if (st.H < dl - band || lower > dl + band) {
+			out->directional = dl - st.H;
+			out->residual = (st.H - lower) / c.scale; /* the bracket of psi*, relative */
+			out->status = st.H < dl - band ? MK_CONTACT_SEPARATED : MK_CONTACT_OVERLAPPING;
+			return MK_OK;
+		}
+		return MK_ERR_CONVERGENCE;
+	}
+	/* The minimum of psi is the distance from c1 to the boundary of the
+	 * contact space along u. */
+	out->directional = dl - st.H;
+	out->status = mkContact_FromDistance(out->directional, c.scale);
+	return MK_OK;
+}

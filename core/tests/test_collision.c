@@ -1,0 +1,381 @@
+/* test_collision.c - mink/collision.h: the support Jacobian, MinkSum (Normal)
+ * and MinkSum (Ray).
+ *
+ * References, none of them sharing code with the solver:
+ *  - the support point and its Jacobian against mkBody3_Support (the sum
+ *    kernel's dual-norm code) and central differences of it;
+ *  - FCL's ellipsoid test cases (semi-axes (20, 40, 50) and (10, 10, 10),
+ *    the second moved along x): with axis-aligned bodies the signed distance
+ *    is x - 30 exactly (the support values along x are 20 and 10), and a
+ *    common rotation of the pair about the origin does not change it;
+ *  - two spheres: sd = |c2 - c1| - r1 - r2;
+ *  - random paper-draw pairs: the answer must be stationary (no direction
+ *    found by a grid and a pattern search over mkCollide3_Bound, which is
+ *    built on mkBody3_SupportValue, beats it by more than 1e-12 of the
+ *    scale), its witness points must lie on the bodies (gauge from
+ *    mkBody3_Implicit within 1e-9), and the two-sided certificate must hold. */
+#include <mink/mink.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "ensure.h"
+
+static mkMat3 mk_rand_rot(unsigned long long *seed)
+{
+	double q[4];
+	for (int i = 0; i < 4; ++i)
+		q[i] = mk_test_uniform(seed, -1.0, 1.0);
+	return mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+}
+
+/* The gauge of a placed body at x: Psi^(eps1/2), 1 on the boundary. */
+static double mk_gauge(mkBody3 b, mkVec3 x)
+{
+	return pow(mkBody3_Implicit(b, x), 0.5 * b.shape.eps1);
+}
+
+static void test_jacobian(void)
+{
+	unsigned long long seed = 11;
+	for (int trial = 0; trial < 200; ++trial) {
+		mkShape3 s = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11),
+			trial % 4 == 0 ? 1.0 : mk_test_uniform(&seed, 0.1, 1.9), trial % 4 == 0 ? 1.0 : mk_test_uniform(&seed, 0.1, 1.9) };
+		mkBody3 b = mkBody3_Make(s, mk_rand_rot(&seed), mkVec3_Make(1, 2, 3));
+		mkVec3 n = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
+			mk_test_uniform(&seed, -1, 1)));
+		mkMat3 J;
+		mkVec3 p = mkBody3_SupportJacobian(b, n, &J);
+		mkVec3 ref = mkVec3_Sub(mkBody3_Support(b, n), b.t);
+		/* Two dual-norm evaluations of the same point: a few ulps of the size. */
+		ENSURE_NEAR(mkVec3_Length(mkVec3_Sub(p, ref)), 0.0, 1e-12 * 11.0);
+		/* Central differences of mkBody3_Support with step h: truncation
+		 * O(h^2 |s'''|) and rounding eps |s| / h; h = 1e-5 keeps both
+		 * below 1e-6 relative for these exponents away from the axes, so
+		 * the check uses 1e-4 of the Jacobian's size. */
+		double h = 1e-5, jmax = 0.0, emax = 0.0;
+		mkVec3 e[3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+		for (int j = 0; j < 3; ++j) {
+			mkVec3 sp = mkBody3_Support(b, mkVec3_Add(n, mkVec3_Scale(e[j], h)));
+			mkVec3 sm = mkBody3_Support(b, mkVec3_Sub(n, mkVec3_Scale(e[j], h)));
+			mkVec3 col = mkVec3_Scale(mkVec3_Sub(sp, sm), 0.5 / h);
+			double c[3] = { col.x, col.y, col.z };
+			for (int i = 0; i < 3; ++i) {
+				jmax = fmax(jmax, fabs(J.m[i][j]));
+				emax = fmax(emax, fabs(J.m[i][j] - c[i]));
+			}
+		}
+		ENSURE_LE(emax, 1e-4 * jmax + 1e-9);
+		/* J n = 0 (the support point depends on the direction only), up to
+		 * rounding of the size of the body and of J. */
+		ENSURE_LE(mkVec3_Length(mkMat3_MulVec(J, n)), 1e-12 * (jmax + 11.0));
+	}
+}
+
+/* FCL's ellipsoid cases. */
+static void test_fcl_cases(void)
+{
+	const double xs[] = { 40.0, 30.1, 30.0, 29.9, 29.99, 0.0 };
+	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
+	unsigned long long seed = 5;
+	for (int rot = 0; rot < 6; ++rot) {
+		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_rand_rot(&seed);
+		for (int k = 0; k < (int)(sizeof xs / sizeof xs[0]); ++k) {
+			double want = xs[k] - 30.0;
+			mkVec3 c2 = mkMat3_MulVec(R, mkVec3_Make(xs[k], 0, 0));
+			mkBody3 A = mkBody3_Make(s1, R, mkVec3_Make(0, 0, 0));
+			mkBody3 B = mkBody3_Make(s2, R, c2);
+			for (int order = 0; order < 2; ++order) {
+				mkBody3 b1 = order ? B : A, b2 = order ? A : B;
+				mkCollision3 c;
+				mkResult r = mkCollide3_Normal(b1, b2, &c);
+				ENSURE(r == MK_OK);
+				/* Rounding of the rotated poses: a few ulps of the scale (~100). */
+				ENSURE_NEAR(c.distance, want, 1e-12 * c.scale);
+				mkContact st = xs[k] > 30.0 ? MK_CONTACT_SEPARATED : xs[k] == 30.0 ? MK_CONTACT_TOUCHING
+					: MK_CONTACT_OVERLAPPING;
+				ENSURE(c.status == st);
+				if (r == MK_OK && c.status == MK_CONTACT_SEPARATED) {
+					ENSURE_NEAR(mkVec3_Length(mkVec3_Sub(c.p2, c.p1)), want, 1e-12 * c.scale);
+					ENSURE_LE(c.gap, 1e-12 * c.scale);
+				}
+				if (r == MK_OK) {
+					ENSURE_NEAR(mk_gauge(b1, c.p1), 1.0, 1e-12);
+					ENSURE_NEAR(mk_gauge(b2, c.p2), 1.0, 1e-12);
+				}
+				mkCollision3 ray;
+				r = mkCollide3_Ray(b1, b2, &ray);
+				ENSURE(r == MK_OK);
+				if (xs[k] != 0.0) {
+					/* Along x the boundary of the contact space is at 30. */
+					ENSURE_NEAR(ray.directional, want, 1e-12 * ray.scale);
+					ENSURE(ray.status == st);
+				} else {
+					ENSURE(ray.status == MK_CONTACT_OVERLAPPING);
+				}
+			}
+		}
+	}
+}
+
+static void test_spheres(void)
+{
+	unsigned long long seed = 99;
+	for (int k = 0; k < 50; ++k) {
+		double r1 = mk_test_uniform(&seed, 0.5, 5), r2 = mk_test_uniform(&seed, 0.5, 5);
+		mkShape3 s1 = { r1, r1, r1, 1, 1 }, s2 = { r2, r2, r2, 1, 1 };
+		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
+		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		double dist = mkVec3_Length(mkVec3_Sub(c2, c1));
+		mkCollision3 c;
+		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		/* A sphere containing the other's centre: the depth is still
+		 * r1 + r2 - |d| (translate along the centre line). */
+		ENSURE_NEAR(c.distance, dist - r1 - r2, 1e-12 * c.scale);
+	}
+}
+
+/* The best f over a 30 x 60 grid of directions, refined by a pattern search
+ * (steps that gain more than 1e-15 relative, at most 20000 evaluations):
+ * a global estimate of sd from mkCollide3_Bound only. */
+static double mk_brute(mkBody3 b1, mkBody3 b2)
+{
+	double best = -INFINITY;
+	mkVec3 bn = mkVec3_Make(0, 0, 1);
+	for (int i = 0; i < 30; ++i)
+		for (int j = 0; j < 60; ++j) {
+			double eta = -MK_PI / 2 + MK_PI * (i + 0.5) / 30, om = 2 * MK_PI * j / 60;
+			mkVec3 n = mkVec3_Make(cos(eta) * cos(om), cos(eta) * sin(om), sin(eta));
+			double v = mkCollide3_Bound(b1, b2, n);
+			if (v > best) {
+				best = v;
+				bn = n;
+			}
+		}
+	double step = 0.1;
+	int evals = 0;
+	while (step > 1e-12 && evals < 20000) {
+		mkVec3 a = fabs(bn.x) < 0.6 ? mkVec3_Make(1, 0, 0) : mkVec3_Make(0, 1, 0);
+		mkVec3 t1 = mkVec3_Normalize(mkVec3_Cross(bn, a)), t2 = mkVec3_Cross(bn, t1);
+		int moved = 0;
+		for (int k = 0; k < 4 && !moved; ++k) {
+			mkVec3 t = k < 2 ? t1 : t2;
+			mkVec3 c = mkVec3_Normalize(mkVec3_Add(bn, mkVec3_Scale(t, k % 2 ? -step : step)));
+			double v = mkCollide3_Bound(b1, b2, c);
+			++evals;
+			if (v > best + 1e-15 * (1.0 + fabs(best))) {
+				best = v;
+				bn = c;
+				moved = 1;
+			}
+		}
+		if (!moved)
+			step *= 0.5;
+	}
+	return best;
+}
+
+static void test_random_pairs(void)
+{
+	unsigned long long seed = 2022;
+	int sep = 0, ovl = 0, fails = 0, wrong = 0;
+	for (int trial = 0; trial < 300; ++trial) {
+		int ell = trial % 2 == 0;
+		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
+		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
+		if (!ell) {
+			s1.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
+			s1.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
+			s2.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
+			s2.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
+		}
+		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15));
+		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkCollision3 c;
+		mkResult r = mkCollide3_Normal(b1, b2, &c);
+		if (r != MK_OK) {
+			++fails;
+			fprintf(stderr, "trial %d: %s (residual %g, iterations %d)\n", trial, mkResult_Name(r), c.residual, c.iterations);
+			continue;
+		}
+		double ref = mk_brute(b1, b2);
+		/* The solver's direction is a true bound (independent evaluation). */
+		ENSURE_NEAR(mkCollide3_Bound(b1, b2, c.normal), c.distance, 1e-12 * c.scale);
+		/* Nobody finds a better direction. */
+		ENSURE_LE(ref - c.distance, 1e-12 * c.scale);
+		if (c.distance - ref > 1e-9 * c.scale) {
+			/* The solver's f is a proven lower bound of sd, so this is
+			 * the brute force missing the optimum: reported, not failed. */
+			++wrong;
+			fprintf(stderr, "trial %d (%s): distance %.17g, brute force %.17g\n", trial, ell ? "ellipsoids" : "superquadrics",
+				c.distance, ref);
+		}
+		ENSURE_NEAR(mk_gauge(b1, c.p1), 1.0, 1e-9);
+		ENSURE_NEAR(mk_gauge(b2, c.p2), 1.0, 1e-9);
+		if (c.status == MK_CONTACT_SEPARATED) {
+			++sep;
+			/* The gap is >= 0 up to the rounding of |p2 - p1| and f. */
+			ENSURE_LE(-1e-14 * c.scale, c.gap);
+			ENSURE_LE(c.gap, 1e-10 * c.scale);
+		} else if (c.status == MK_CONTACT_OVERLAPPING) {
+			++ovl;
+		}
+		mkCollision3 ray;
+		r = mkCollide3_Ray(b1, b2, &ray);
+		ENSURE(r == MK_OK);
+		if (r != MK_OK)
+			fprintf(stderr, "trial %d: ray %s (residual %g, iterations %d)\n", trial, mkResult_Name(r), ray.residual, ray.iterations);
+		if (fabs(c.distance) > 1e-9 * c.scale)
+			ENSURE(ray.status == c.status);
+	}
+	printf("random pairs: %d separated, %d overlapping, %d failed, %d below the brute force\n", sep, ovl, fails, wrong);
+	ENSURE(fails == 0);
+}
+
+/* Overlapping pairs (centres within 3 of each other): the penetration
+ * depth has several local optima; the answer must match the global grid
+ * search within 1e-9 of the scale (the pattern search itself stops at
+ * steps of 1e-12, so it resolves f to about 1e-12 of the scale on smooth
+ * optima). */
+static void test_overlaps(void)
+{
+	unsigned long long seed = 4242;
+	int missed = 0, count = 0;
+	for (int trial = 0; trial < 100; ++trial) {
+		int ell = trial % 2 == 0;
+		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
+		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
+		if (!ell) {
+			s1.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
+			s1.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
+			s2.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
+			s2.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
+		}
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3));
+		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0)), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkCollision3 c;
+		mkResult r = mkCollide3_Normal(b1, b2, &c);
+		ENSURE(r == MK_OK);
+		if (r != MK_OK)
+			continue;
+		++count;
+		ENSURE(c.status == MK_CONTACT_OVERLAPPING);
+		ENSURE_NEAR(mkCollide3_Bound(b1, b2, c.normal), c.distance, 1e-12 * c.scale);
+		double ref = mk_brute(b1, b2);
+		if (ref - c.distance > 1e-9 * c.scale) {
+			++missed;
+			fprintf(stderr, "overlap trial %d (%s): depth %.17g, grid search %.17g\n", trial, ell ? "ellipsoids" : "superquadrics",
+				-c.distance, -ref);
+		}
+		mkCollision3 ray;
+		ENSURE(mkCollide3_Ray(b1, b2, &ray) == MK_OK && ray.status == MK_CONTACT_OVERLAPPING);
+	}
+	printf("overlaps: %d solved, %d where the grid search found a smaller depth\n", count, missed);
+	ENSURE(missed == 0);
+}
+
+/* Bodies under general linear maps (shear and uneven scaling, not only
+ * rotations): the same stationarity check against the grid search. */
+static void test_general_maps(void)
+{
+	unsigned long long seed = 31;
+	for (int trial = 0; trial < 40; ++trial) {
+		mkShape3 s1 = { mk_test_uniform(&seed, 1, 5), mk_test_uniform(&seed, 1, 5), mk_test_uniform(&seed, 1, 5),
+			mk_test_uniform(&seed, 0.3, 1.7), mk_test_uniform(&seed, 0.3, 1.7) };
+		mkShape3 s2 = { mk_test_uniform(&seed, 1, 4), mk_test_uniform(&seed, 1, 4), mk_test_uniform(&seed, 1, 4), 1, 1 };
+		mkMat3 S = mkMat3_Identity();
+		S.m[0][1] = mk_test_uniform(&seed, -0.8, 0.8);
+		S.m[1][2] = mk_test_uniform(&seed, -0.8, 0.8);
+		S.m[2][2] = mk_test_uniform(&seed, 0.5, 1.5);
+		mkBody3 b1 = mkBody3_Make(s1, mkMat3_Mul(mk_rand_rot(&seed), S), mkVec3_Make(0, 0, 0));
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9));
+		mkBody3 b2 = mkBody3_Make(s2, mkMat3_Mul(S, mk_rand_rot(&seed)), c2);
+		mkCollision3 c;
+		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		ENSURE_NEAR(mkCollide3_Bound(b1, b2, c.normal), c.distance, 1e-12 * c.scale);
+		ENSURE_LE(mk_brute(b1, b2) - c.distance, 1e-12 * c.scale);
+		ENSURE_NEAR(mk_gauge(b1, c.p1), 1.0, 1e-9);
+		ENSURE_NEAR(mk_gauge(b2, c.p2), 1.0, 1e-9);
+		mkCollision3 ray;
+		ENSURE(mkCollide3_Ray(b1, b2, &ray) == MK_OK);
+		if (fabs(c.distance) > 1e-9 * c.scale)
+			ENSURE(ray.status == c.status);
+	}
+}
+
+/* Near-touching pairs: B2 is moved along the answer's normal so that the
+ * signed distance becomes delta * scale; the new distance must follow. */
+static void test_near_touching(void)
+{
+	unsigned long long seed = 77;
+	const double deltas[] = { 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-8, 1e-10, -1e-8, -1e-10 };
+	for (int trial = 0; trial < 40; ++trial) {
+		int ell = trial % 2 == 0;
+		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
+		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
+		if (!ell) {
+			s1.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
+			s1.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
+			s2.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
+			s2.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
+		}
+		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0));
+		mkVec3 dir = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)));
+		mkBody3 b2 = mkBody3_Make(s2, mk_rand_rot(&seed), mkVec3_Scale(dir, 30.0));
+		mkCollision3 c;
+		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k) {
+			/* Translating B2 by t n changes sd by exactly t when n stays
+			 * the optimal normal, which it does (f(n) shifts by t for
+			 * every n by <n, t n> only at n itself, and the optimum of a
+			 * separated pair moves continuously; here the witnesses stay). */
+			double want = deltas[k] * c.scale;
+			mkBody3 b3 = b2;
+			b3.t = mkVec3_Add(b2.t, mkVec3_Scale(c.normal, want - c.distance));
+			mkCollision3 e;
+			mkResult r = mkCollide3_Normal(b1, b3, &e);
+			ENSURE(r == MK_OK);
+			ENSURE_NEAR(e.distance, want, 1e-12 * e.scale);
+			ENSURE(e.status == (want > 0 ? MK_CONTACT_SEPARATED : MK_CONTACT_OVERLAPPING));
+		}
+	}
+}
+
+static void test_failures_reported(void)
+{
+	mkShape3 s = { 1, 1, 1, 1, 1 };
+	mkMat3 M = mkMat3_Identity();
+	mkBody3 b1 = mkBody3_Make(s, M, mkVec3_Make(0, 0, 0));
+	mkBody3 b2 = mkBody3_Make(s, M, mkVec3_Make(NAN, 0, 0));
+	mkCollision3 c;
+	mkResult r = mkCollide3_Normal(b1, b2, &c);
+	ENSURE(r != MK_OK);
+	ENSURE(c.status == MK_CONTACT_UNKNOWN);
+	ENSURE(isnan(c.distance));
+	r = mkCollide3_Ray(b1, b2, &c);
+	ENSURE(r != MK_OK);
+	ENSURE(c.status == MK_CONTACT_UNKNOWN);
+	/* Coincident centres: a deep overlap, answered. */
+	b2.t = mkVec3_Make(0, 0, 0);
+	ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+	ENSURE_NEAR(c.distance, -2.0, 1e-12);
+	ENSURE(mkCollide3_Ray(b1, b2, &c) == MK_OK && c.status == MK_CONTACT_OVERLAPPING);
+	ENSURE(strcmp(mkContact_Name(MK_CONTACT_TOUCHING), "touching") == 0);
+}
+
+int main(void)
+{
+	test_jacobian();
+	test_fcl_cases();
+	test_spheres();
+	test_random_pairs();
+	test_overlaps();
+	test_general_maps();
+	test_near_touching();
+	test_failures_reported();
+	return mk_summary("test_collision");
+}
