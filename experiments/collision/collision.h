@@ -23,8 +23,8 @@
  * GJK runs on the 10 x 10 grid vertex sets of both bodies (100 vertices
  * each); the vertex sets are built before its timer starts, as the
  * reference code builds its surfaces outside the timed call. */
-#ifndef MINK_COLLISION_H
-#define MINK_COLLISION_H
+#ifndef MINK_EXP_COLLISION_H
+#define MINK_EXP_COLLISION_H
 
 #include <mink/collide.h>
 #include <mink/mink.h>

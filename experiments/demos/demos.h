@@ -38,8 +38,8 @@
  *
  * Options: which figures (all by default), the samples of a drawn 2D
  * outline (not of the sums, which use the paper's N) and the kernel. */
-#ifndef MINK_DEMOS_H
-#define MINK_DEMOS_H
+#ifndef MINK_EXP_DEMOS_H
+#define MINK_EXP_DEMOS_H
 
 #include <mink/mink.h>
 #include <mink_exp/exp.h>

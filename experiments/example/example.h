@@ -1,7 +1,7 @@
 /* example.h - the smallest experiment: the roundoff of the closed form on
  * random pairs of superellipses. Copy this folder to start a new one. */
-#ifndef MINK_EXAMPLE_H
-#define MINK_EXAMPLE_H
+#ifndef MINK_EXP_EXAMPLE_H
+#define MINK_EXP_EXAMPLE_H
 
 #include <mink_exp/exp.h>
 

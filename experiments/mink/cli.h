@@ -1,8 +1,8 @@
 /* cli.h - the option parsing of the `mink` subcommands: the flag parser of
  * the experiment drivers (mink_exp/driver.h), with the messages prefixed by
  * "mink <command>: ". */
-#ifndef MINK_CLI_H
-#define MINK_CLI_H
+#ifndef MINK_EXP_CLI_H
+#define MINK_EXP_CLI_H
 
 #include <stdio.h>
 

@@ -1,8 +1,8 @@
 /* commands.h - the subcommands of the `mink` binary. Each takes the
  * arguments after its name (argv[0] is the subcommand name), prints its own
  * --help, and returns the process exit status. */
-#ifndef MINK_COMMANDS_H
-#define MINK_COMMANDS_H
+#ifndef MINK_EXP_COMMANDS_H
+#define MINK_EXP_COMMANDS_H
 
 int mkCmd_Sum(int argc, char **argv);
 int mkCmd_Bench(int argc, char **argv);

@@ -54,8 +54,8 @@
  * The run's units are cells in the order dim, case, level, method; --shard
  * splits the cells, and the shards' rows, concatenated in order, are the
  * unsplit run's rows. */
-#ifndef MINK_TIMING_H
-#define MINK_TIMING_H
+#ifndef MINK_EXP_TIMING_H
+#define MINK_EXP_TIMING_H
 
 #include <mink/mink.h>
 #include <mink/registry.h>

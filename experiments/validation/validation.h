@@ -21,8 +21,8 @@
  * probability about 1e-10) is drawn again from the same stream and counted
  * in the row's `redraws`. Means and maxima are over the points whose
  * metrics are all finite; the others are counted in nonfinite_count. */
-#ifndef MINK_VALIDATION_H
-#define MINK_VALIDATION_H
+#ifndef MINK_EXP_VALIDATION_H
+#define MINK_EXP_VALIDATION_H
 
 #include <mink/mink.h>
 #include <mink_exp/exp.h>
