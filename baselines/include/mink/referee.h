@@ -141,11 +141,6 @@ MK_API mkResult mkReferee3_Hull(mkBody3 b1, mkBody3 b2, mkSet set, int n, const 
 MK_API mkVec2 mkReferee2_Point(mkBody2 b, mkVec2 u, mkVec2 *normal);
 MK_API mkVec3 mkReferee3_Point(mkBody3 b, mkVec3 u, mkVec3 *normal);
 
-/* TRANSITION ONLY: the names before the dimension-digit rename, for the
- * code not renamed yet (experiments/). Delete once nothing uses them. */
-#define mkReferee_Check2 mkReferee2_Check
-#define mkReferee_Check3 mkReferee3_Check
-
 MK_EXTERN_C_END
 
 #endif

@@ -97,11 +97,6 @@ MK_API extern const mkMethod mkMethod_HullCgalEpeck;
 MK_API extern const mkMethod mkMethod_HullQhull;
 MK_API extern const mkMethod mkMethod_EdgeSort;
 
-/* TRANSITION ONLY: the names before the dimension-digit rename, for the
- * code not renamed yet (experiments/). Delete once nothing uses them. */
-#define mkMethod_Accepts2 mkMethod2_Accepts
-#define mkMethod_Accepts3 mkMethod3_Accepts
-
 MK_EXTERN_C_END
 
 #endif
