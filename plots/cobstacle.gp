@@ -14,7 +14,6 @@
 #
 #   gnuplot plots/cobstacle.gp                          (results/cobstacle.csv -> plots/)
 #   gnuplot -e "results='results/quick/cobstacle.csv'; outdir='plots/quick'" plots/cobstacle.gp
-#   gnuplot -e "table='results/summary/cobstacle.md'" plots/cobstacle.gp   (summary table only)
 #
 # Run from the top of the project.
 
@@ -79,26 +78,6 @@ do for [l = 1:nlvl] {
 	pu[l] = STATS_max > 0 ? STATS_max : NaN
 }
 
-if (exists("table")) {
-	set print table
-	print sprintf("C-obstacle generation (paper Sec. 7.1, Table 2), from %s.", results)
-	print "Measured: one thread, CLOCK_MONOTONIC around the closed-form batch calls (and turning the"
-	print "robot); per level the mean over the trials, with the fastest and the slowest trial, and the"
-	print "thread's CPU time (CLOCK_THREAD_CPUTIME_ID; below the wall time when the machine was shared)."
-	print "Published: the paper's MATLAB figures (Xeon 2.8 GHz, one core)."
-	print "Speed-up = published total / measured mean total."
-	print ""
-	print "| dim | obstacles | points | orientations | trials | total (s) mean | min | max | CPU (s) mean | per point (us) | published total (s) | published per point (us) | speed-up | non-finite points |"
-	print "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-	do for [l = 1:nlvl] {
-		print sprintf("| %dD | %d | %d | %d | %d | %.4g | %.4g | %.4g | %.4g | %.4f | %s | %s | %s | %d |", \
-			lvl_dim[l], lvl_obs[l], np[l], no[l], nt[l], tm[l], tmin[l], tmax[l], cm[l], um[l], \
-			pt[l] == pt[l] ? sprintf("%.2f", pt[l]) : "-", pu[l] == pu[l] ? sprintf("%.3f", pu[l]) : "-", \
-			pt[l] == pt[l] ? sprintf("%.0fx", pt[l] / tm[l]) : "-", nf[l])
-	}
-	unset print
-	exit
-}
 
 # ---- figure ------------------------------------------------------------
 # The drawn headings, for the labels of panel (b).
