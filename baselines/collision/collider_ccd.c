@@ -61,26 +61,30 @@ static mkResult mkFinishPenetration(int rc, double depth, ccd_vec3_t *dir, mkCol
 	return MK_OK;
 }
 
-static mkResult mkRunMpr(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
+typedef int (*mkCcdPenetration)(const void *, const void *, const ccd_t *, ccd_real_t *, ccd_vec3_t *,
+	ccd_vec3_t *);
+
+/* A libccd penetration query (MPR or GJK+EPA) on the two bodies. */
+static mkResult mkRunPenetration(mkCcdPenetration query, mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {
-	(void)s;
 	ccd_t ccd;
 	mkInit(&ccd);
 	ccd_real_t depth = 0;
 	ccd_vec3_t dir, pos;
-	int rc = ccdMPRPenetration(&b1, &b2, &ccd, &depth, &dir, &pos);
+	int rc = query(&b1, &b2, &ccd, &depth, &dir, &pos);
 	return mkFinishPenetration(rc, depth, &dir, out);
+}
+
+static mkResult mkRunMpr(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
+{
+	(void)s;
+	return mkRunPenetration(ccdMPRPenetration, b1, b2, out);
 }
 
 static mkResult mkRunEpa(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
 {
 	(void)s;
-	ccd_t ccd;
-	mkInit(&ccd);
-	ccd_real_t depth = 0;
-	ccd_vec3_t dir, pos;
-	int rc = ccdGJKPenetration(&b1, &b2, &ccd, &depth, &dir, &pos);
-	return mkFinishPenetration(rc, depth, &dir, out);
+	return mkRunPenetration(ccdGJKPenetration, b1, b2, out);
 }
 
 static const char *mkCcd(void) { return mkCollide_CcdVersion(); }

@@ -622,6 +622,25 @@ static void finish(mkError *e, const char *what)
 		e->area_bound);
 }
 
+/* The true area / volume from the options, when the caller gives it: 1,
+ * else 0 (the caller computes it). */
+static int take_truth(const mkErrorOptions *opt, mkError *out)
+{
+	if (!opt || !(opt->truth > 0))
+		return 0;
+	out->area_k = opt->truth;
+	out->area_bound = opt->truth_bound;
+	return 1;
+}
+
+/* The result when no point is finite: nothing to measure. */
+static void no_points(mkError *out, const char *what)
+{
+	out->hausdorff_abs = out->off_boundary_max = HUGE_VAL;
+	out->area_rel = -1.0;
+	finish(out, what);
+}
+
 static void error_init(mkError *e, int points, double scale)
 {
 	memset(e, 0, sizeof *e);
@@ -658,17 +677,10 @@ mkResult mkError2_Measure(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *p
 			xy[2 * nf + 1] = py;
 			idx[nf++] = k;
 		}
-	if (r == MK_OK) {
-		if (opt && opt->truth > 0) {
-			out->area_k = opt->truth;
-			out->area_bound = opt->truth_bound;
-		} else
-			r = area2(&P, &out->area_k, &out->area_bound);
-	}
+	if (r == MK_OK && !take_truth(opt, out))
+		r = area2(&P, &out->area_k, &out->area_bound);
 	if (r == MK_OK && nf == 0) {
-		out->hausdorff_abs = out->off_boundary_max = HUGE_VAL;
-		out->area_rel = -1.0;
-		finish(out, "area");
+		no_points(out, "area");
 	} else if (r == MK_OK) {
 		/* The points' signed distances: gap_out and off_boundary. */
 		table2_init(&P, T);
@@ -1351,17 +1363,10 @@ mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *p
 			memcpy(xyz + 3 * nf, p, sizeof p);
 			idx[nf++] = k;
 		}
-	if (r == MK_OK) {
-		if (opt && opt->truth > 0) {
-			out->area_k = opt->truth;
-			out->area_bound = opt->truth_bound;
-		} else
-			r = volume3(&P, &out->area_k, &out->area_bound);
-	}
+	if (r == MK_OK && !take_truth(opt, out))
+		r = volume3(&P, &out->area_k, &out->area_bound);
 	if (r == MK_OK && nf == 0) {
-		out->hausdorff_abs = out->off_boundary_max = HUGE_VAL;
-		out->area_rel = -1.0;
-		finish(out, "volume");
+		no_points(out, "volume");
 		goto done;
 	}
 	if (r != MK_OK) goto done;

@@ -95,30 +95,41 @@ static void mkTestSpheres(void)
 	}
 }
 
+/* Two bodies of shapes a1 and a2 (a, b, c, eps1, eps2) turned alike (the
+ * identity, then the tilt), B2's centre at c1 + Q (d dir) for each offset d:
+ * every query's verdict against expect (mkCheckAll's gjk and residuals
+ * flags), the referee's signed gap against touch - d. */
+static void mkCheckOffsets(const char *name, const double *a1, const double *a2, mkVec3 c1, mkVec3 dir,
+	const double *dd, const int *expect, int count, double touch, int gjk, int residuals)
+{
+	mkMat3 R = mkTilt();
+	for (int k = 0; k < count; ++k) {
+		for (int rot = 0; rot < 2; ++rot) {
+			mkMat3 Q = rot ? R : mkMat3_Identity();
+			mkVec3 o = mkMul(Q, mkVec3_Scale(dir, dd[k]));
+			mkVec3 c2 = { c1.x + o.x, c1.y + o.y, c1.z + o.z };
+			mkBody3 b1 = mkPlace(a1[0], a1[1], a1[2], a1[3], a1[4], Q, c1);
+			mkBody3 b2 = mkPlace(a2[0], a2[1], a2[2], a2[3], a2[4], Q, c2);
+			char what[64];
+			snprintf(what, sizeof what, "%s |d| = %.3f rot %d", name, dd[k], rot);
+			mkCheckAll(what, b1, b2, expect[k], gjk, residuals);
+			ENSURE_NEAR(mkCollide_Referee(b1, b2, 24, NULL), touch - dd[k], 1e-9);
+		}
+	}
+}
+
 /* Axis-aligned ellipsoids (3,2,1) and (2,1,1.5) along the x axis touch at
  * |d| = 3 + 2 = 5 (the extreme points (3,0,0) and (-2,0,0)); the whole
  * configuration is then rotated, which changes no answer. */
 static void mkTestEllipsoids(void)
 {
-	mkMat3 R = mkTilt();
 	/* 0.01 from touching: beyond Implicit's distance threshold 1e-3 */
 	const double dd[] = { 4.95, 5.05, 4.99, 5.01 };
 	const int expect[] = { 1, 0, 1, 0 };
-	for (int k = 0; k < 4; ++k) {
-		for (int rot = 0; rot < 2; ++rot) {
-			mkMat3 Q = rot ? R : mkMat3_Identity();
-			mkVec3 c1 = { 1.0, 2.0, -1.0 }, off = { dd[k], 0.0, 0.0 };
-			mkVec3 o = mkMul(Q, off);
-			mkVec3 c2 = { c1.x + o.x, c1.y + o.y, c1.z + o.z };
-			mkBody3 b1 = mkPlace(3, 2, 1, 1, 1, Q, c1), b2 = mkPlace(2, 1, 1.5, 1, 1, Q, c2);
-			char what[64];
-			snprintf(what, sizeof what, "ellipsoids |d| = %.3f rot %d", dd[k], rot);
-			/* GJK: (3,0,0) is no grid vertex; its polytope is checked on
-			 * the spheres and in the random test. */
-			mkCheckAll(what, b1, b2, expect[k], 0, 1);
-			ENSURE_NEAR(mkCollide_Referee(b1, b2, 24, NULL), 5.0 - dd[k], 1e-9);
-		}
-	}
+	const double a1[5] = { 3, 2, 1, 1, 1 }, a2[5] = { 2, 1, 1.5, 1, 1 };
+	/* GJK: (3,0,0) is no grid vertex; its polytope is checked on the spheres
+	 * and in the random test. */
+	mkCheckOffsets("ellipsoids", a1, a2, (mkVec3){ 1.0, 2.0, -1.0 }, (mkVec3){ 1, 0, 0 }, dd, expect, 4, 5.0, 0, 1);
 }
 
 /* Superquadrics eps = (0.5, 1.5) and (1.2, 0.3), stacked along z: the top
@@ -131,22 +142,10 @@ static void mkTestEllipsoids(void)
  * a regular point). */
 static void mkTestSuperquadrics(void)
 {
-	mkMat3 R = mkTilt();
 	const double dd[] = { 3.45, 3.55 };
 	const int expect[] = { 1, 0 };
-	for (int k = 0; k < 2; ++k) {
-		for (int rot = 0; rot < 2; ++rot) {
-			mkMat3 Q = rot ? R : mkMat3_Identity();
-			mkVec3 c1 = { -0.5, 0.3, 0.2 }, off = { 0.0, 0.0, dd[k] };
-			mkVec3 o = mkMul(Q, off);
-			mkVec3 c2 = { c1.x + o.x, c1.y + o.y, c1.z + o.z };
-			mkBody3 b1 = mkPlace(2, 3, 1.5, 0.5, 1.5, Q, c1), b2 = mkPlace(1, 1.3, 2, 1.2, 0.3, Q, c2);
-			char what[64];
-			snprintf(what, sizeof what, "superquadrics |d| = %.2f rot %d", dd[k], rot);
-			mkCheckAll(what, b1, b2, expect[k], 1, 0);
-			ENSURE_NEAR(mkCollide_Referee(b1, b2, 24, NULL), 3.5 - dd[k], 1e-9);
-		}
-	}
+	const double a1[5] = { 2, 3, 1.5, 0.5, 1.5 }, a2[5] = { 1, 1.3, 2, 1.2, 0.3 };
+	mkCheckOffsets("superquadrics", a1, a2, (mkVec3){ -0.5, 0.3, 0.2 }, (mkVec3){ 0, 0, 1 }, dd, expect, 2, 3.5, 1, 0);
 }
 
 /* A superquadric and a sphere of radius r at a regular point p = f1(u) of
