@@ -12,14 +12,15 @@
 #include <mink_exp/outfile.h>
 #include <mink_exp/shard.h>
 
+#include "cli.h"
 #include "commands.h"
 
 #define SCENE_FILE_MAX (1L << 30)
 #define THREADS_MAX 256
 
-static void help(void)
+static void help(FILE *fp)
 {
-	printf(
+	fprintf(fp,
 		"usage: mink scene FILE --tol T --out PATH [options]\n"
 		"\n"
 		"Configuration-space obstacles of the scene in FILE: for every robot orientation\n"
@@ -27,19 +28,6 @@ static void help(void)
 		"one (enclosing it), each within Hausdorff distance T of the C-obstacle of the\n"
 		"declared shapes (model error of boxes and cylinders included), with normals\n"
 		"placed adaptively where the curvature needs them. See docs/scene.md.\n"
-		"\n"
-		"  --tol T          the tolerance, in the scene's length unit, in [1e-12, 1e12]\n"
-		"  --out PATH       CSV obstacle,orientation,kind,k,x,y[,z] (kind inner or outer; 2D\n"
-		"                   counter-clockwise); 3D faces go to PATH with .csv replaced by\n"
-		"                   .faces.csv: obstacle,orientation,kind,f,i,j,k. Written\n"
-		"                   atomically: nothing on any error\n"
-		"  --report PATH    CSV per obstacle: model, model error, points, certified error,\n"
-		"                   seconds (and a robot row)\n"
-		"  --outer          also the outer boundaries\n"
-		"  --threads K      worker threads, 1..%d (default 1); the output does not depend on K\n"
-		"  --shard I/N      only block I (0-based) of N of the orientations; the shards'\n"
-		"                   rows concatenated in order (one header) equal the whole run's\n"
-		"  --impl auto|scalar|avx2|avx512   kernel (default auto)\n"
 		"\n"
 		"Scene file:\n"
 		"  # comment\n"
@@ -53,8 +41,7 @@ static void help(void)
 		"SPEC as in 'mink sum' (circle, ellipse, superellipse, sphere, ellipsoid,\n"
 		"superquadric) plus 'box size=l,w[,h]' and 'cylinder r=R h=H' (axis z), with the\n"
 		"pose keys rot, shear (2D), quat (3D), M, at. The robot at heading a (rotation R)\n"
-		"is the body with map R M.\n",
-		THREADS_MAX);
+		"is the body with map R M.\n\n");
 }
 
 static char *read_file(const char *path, long *len, char *msg, size_t msglen)
@@ -99,180 +86,247 @@ typedef struct ObstacleSum {
 	char model[128];
 } ObstacleSum;
 
-int mkCmd_Scene(int argc, char **argv)
-{
-	static const mkOption opts[] = {
-		{"--tol", 1}, {"--out", 1}, {"--report", 1}, {"--outer", 0}, {"--threads", 1}, {"--shard", 1}, {"--impl", 1},
-	};
-	const char *file = NULL, *out = NULL, *report = NULL;
-	double tol = 0.0;
-	int have_tol = 0, outer = 0, impl = MK_IMPL_AUTO;
-	long threads = 1;
-	mkShard shard = mkShard_All();
-	char msg[2048];
-	int first = 1;
-	if (argc > 1 && strncmp(argv[1], "--", 2) != 0 && strcmp(argv[1], "-h") != 0) {
-		file = argv[1];
-		first = 2;
-	}
-	mkArgs a;
-	mkArgs_Begin(&a, argc - first + 1, argv + first - 1);
-	const char *name, *value;
-	mkArgsStep step;
-	while ((step = mkArgs_Step(&a, opts, MK_COUNT(opts), &name, &value, msg, sizeof msg)) == MK_ARGS_OPTION) {
-		int bad = 0;
-		if (strcmp(name, "--tol") == 0) { bad = mkArg_Double(name, value, 1e-12, 1e12, "a number", &tol, msg, sizeof msg); have_tol = 1; }
-		else if (strcmp(name, "--out") == 0) bad = mkArg_Path(name, value, &out, msg, sizeof msg);
-		else if (strcmp(name, "--report") == 0) bad = mkArg_Path(name, value, &report, msg, sizeof msg);
-		else if (strcmp(name, "--outer") == 0) outer = 1;
-		else if (strcmp(name, "--threads") == 0) bad = mkArg_Long(name, value, 1, THREADS_MAX, &threads, msg, sizeof msg);
-		else if (strcmp(name, "--shard") == 0) bad = mkShard_Parse(value, name, &shard, msg, sizeof msg);
-		else if (strcmp(name, "--impl") == 0) bad = mkArg_Impl(name, value, &impl, msg, sizeof msg);
-		if (bad) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
-	}
-	if (step == MK_ARGS_HELP) { help(); return 0; }
-	if (step == MK_ARGS_ERROR) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
-	if (!file) { fprintf(stderr, "mink scene: no scene FILE given (usage: mink scene FILE --tol T --out PATH)\n"); return 2; }
-	if (!have_tol) { fprintf(stderr, "mink scene: --tol is required: a number in [1e-12, 1e+12]\n"); return 2; }
-	if (!out) { fprintf(stderr, "mink scene: --out is required\n"); return 2; }
-
-	long len = 0;
-	char *text = read_file(file, &len, msg, sizeof msg);
-	if (!text) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
+/* The run: the scene, its options and the open output files. */
+typedef struct SceneRun {
+	const char *file, *out, *report;
+	double tol;
+	int outer;
 	mkScene scene;
-	mkResult r = mkScene_Parse(text, &scene, msg, sizeof msg);
-	free(text);
-	if (r != MK_OK) { fprintf(stderr, "mink scene: %s: %s\n", file, msg); return 2; }
-	int rc = 2;
-	mkOutFile fo, ff, fr;
-	memset(&fo, 0, sizeof fo); memset(&ff, 0, sizeof ff); memset(&fr, 0, sizeof fr);
-	fo.slot = ff.slot = fr.slot = -1;
-	int open_o = 0, open_f = 0, open_r = 0;
-	ObstacleSum *sum = NULL;
-	if (scene.rotations_file[0]) {
-		char path[MK_PATH_MAX];
-		const char *slash = strrchr(file, '/');
-		if (scene.rotations_file[0] != '/' && slash)
-			snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, scene.rotations_file);
-		else
-			snprintf(path, sizeof path, "%s", scene.rotations_file);
-		char *rt = read_file(path, &len, msg, sizeof msg);
-		if (!rt) { fprintf(stderr, "mink scene: %s: line %d: rotations: %s\n", file, scene.rotations_line, msg); goto done; }
-		r = mkScene_SetRotations(&scene, rt, path, msg, sizeof msg);
-		free(rt);
-		if (r != MK_OK) { fprintf(stderr, "mink scene: %s: line %d: rotations: %s\n", file, scene.rotations_line, msg); goto done; }
-	}
-	mkCSpaceOptions o = mkCSpaceOptions_Default();
-	o.tol = tol;
-	o.outer = outer;
-	o.threads = (int)threads;
-	o.impl = (mkImpl)impl;
-	long begin, end;
-	mkShard_Range(shard, scene.orientation_count, &begin, &end);
-	/* validate the models (a tolerance too small for a box) before any file */
-	mkCSpaceResult res;
-	r = mkCSpace_Run(&scene, &o, (int)begin, (int)begin, &res, msg, sizeof msg);
-	if (r != MK_OK) { fprintf(stderr, "mink scene: %s: %s\n", file, msg); goto done; }
-	int nob = scene.obstacle_count;
-	sum = calloc((size_t)nob + 1, sizeof *sum);
-	if (!sum) { fprintf(stderr, "mink scene: out of memory\n"); rc = 1; mkCSpaceResult_Free(&res); goto done; }
-	for (int i = 0; i < nob; ++i) snprintf(sum[i].model, sizeof sum[i].model, "%s", res.model_name[i]);
-	mkCSpaceResult_Free(&res);
+	mkCSpaceOptions o;
+	mkOutFile f[3];   /* points, faces (3D), report */
+	int open[3];
+	ObstacleSum *sum;
+	int short_of_tol;
+} SceneRun;
 
-	rc = 1;
-	char fpath[MK_PATH_MAX];
-	faces_path(out, fpath, sizeof fpath);
-	if (mkOutFile_Open(&fo, out, msg, sizeof msg)) { fprintf(stderr, "mink scene: --out %s: %s\n", out, msg); goto done; }
-	open_o = 1;
-	if (scene.dim == 3) {
-		if (mkOutFile_Open(&ff, fpath, msg, sizeof msg)) { fprintf(stderr, "mink scene: %s: %s\n", fpath, msg); goto done; }
-		open_f = 1;
+/* Parse the scene file and, for 3D, its rotations file (relative to the
+ * scene's folder). Returns 0, or 2 after printing why. */
+static int load_scene(SceneRun *s)
+{
+	char msg[2048];
+	long len = 0;
+	char *text = read_file(s->file, &len, msg, sizeof msg);
+	if (!text) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
+	mkResult r = mkScene_Parse(text, &s->scene, msg, sizeof msg);
+	free(text);
+	if (r != MK_OK) { fprintf(stderr, "mink scene: %s: %s\n", s->file, msg); return 2; }
+	if (!s->scene.rotations_file[0])
+		return 0;
+	char path[MK_PATH_MAX];
+	const char *slash = strrchr(s->file, '/');
+	if (s->scene.rotations_file[0] != '/' && slash)
+		snprintf(path, sizeof path, "%.*s/%s", (int)(slash - s->file), s->file, s->scene.rotations_file);
+	else
+		snprintf(path, sizeof path, "%s", s->scene.rotations_file);
+	char *rt = read_file(path, &len, msg, sizeof msg);
+	r = rt ? mkScene_SetRotations(&s->scene, rt, path, msg, sizeof msg) : MK_ERR_ARGUMENT;
+	free(rt);
+	if (r != MK_OK) {
+		fprintf(stderr, "mink scene: %s: line %d: rotations: %s\n", s->file, s->scene.rotations_line, msg);
+		return 2;
 	}
-	if (report) {
-		if (mkOutFile_Open(&fr, report, msg, sizeof msg)) { fprintf(stderr, "mink scene: --report %s: %s\n", report, msg); goto done; }
-		open_r = 1;
+	return 0;
+}
+
+/* Check the models (a tolerance too small for a box) on no orientation,
+ * before any file exists, and take their names for the report. */
+static int check_models(SceneRun *s)
+{
+	char msg[2048];
+	mkCSpaceResult res;
+	if (mkCSpace_Run(&s->scene, &s->o, 0, 0, &res, msg, sizeof msg) != MK_OK) {
+		fprintf(stderr, "mink scene: %s: %s\n", s->file, msg);
+		return 2;
 	}
-	fprintf(fo.fp, "obstacle,orientation,kind,k,x,y%s\n", scene.dim == 3 ? ",z" : "");
-	if (open_f) fprintf(ff.fp, "obstacle,orientation,kind,f,i,j,k\n");
+	s->sum = calloc((size_t)s->scene.obstacle_count + 1, sizeof *s->sum);
+	for (int i = 0; s->sum && i < s->scene.obstacle_count; ++i)
+		snprintf(s->sum[i].model, sizeof s->sum[i].model, "%s", res.model_name[i]);
+	mkCSpaceResult_Free(&res);
+	if (!s->sum) { fprintf(stderr, "mink scene: out of memory\n"); return 1; }
+	return 0;
+}
+
+static int open_outputs(SceneRun *s)
+{
+	char msg[2048], fpath[MK_PATH_MAX];
+	faces_path(s->out, fpath, sizeof fpath);
+	const char *paths[3] = { s->out, s->scene.dim == 3 ? fpath : NULL, s->report };
+	for (int k = 0; k < 3; ++k) {
+		if (!paths[k])
+			continue;
+		if (mkOutFile_Open(&s->f[k], paths[k], msg, sizeof msg)) {
+			fprintf(stderr, "mink scene: %s: %s\n", paths[k], msg);
+			return 1;
+		}
+		s->open[k] = 1;
+	}
+	fprintf(s->f[0].fp, "obstacle,orientation,kind,k,x,y%s\n", s->scene.dim == 3 ? ",z" : "");
+	if (s->open[1])
+		fprintf(s->f[1].fp, "obstacle,orientation,kind,f,i,j,k\n");
+	return 0;
+}
+
+/* The rows of one computed chunk of orientations starting at c0. */
+static void write_chunk(SceneRun *s, const mkCSpaceResult *res, long c0)
+{
 	static const char *const kinds[] = {"inner", "outer"};
-	/* orientations in chunks, so that memory stays bounded; every boundary is
-	 * computed alone, so the chunking changes nothing in the output */
-	long budget = scene.dim == 2 ? 20000 : 2000; /* (orientation, obstacle) tasks per chunk */
-	long chunk = nob > 0 ? budget / nob : (long)scene.orientation_count + 1;
-	if (chunk < 1) chunk = 1;
-	int short_of_tol = 0;
+	int nob = s->scene.obstacle_count;
+	FILE *fo = s->f[0].fp, *ff = s->open[1] ? s->f[1].fp : NULL;
+	for (int orel = 0; orel < res->orientations; ++orel)
+		for (int i = 0; i < nob; ++i)
+			for (int k = 0; k < res->bounds; ++k) {
+				long b = ((long)orel * nob + i) * res->bounds + k, ori = c0 + orel;
+				for (int j = 0; j < res->count[b]; ++j) {
+					long q = res->first[b] + j;
+					if (s->scene.dim == 2)
+						fprintf(fo, "%d,%ld,%s,%d,%.17g,%.17g\n", i, ori, kinds[k], j, res->x[q], res->y[q]);
+					else
+						fprintf(fo, "%d,%ld,%s,%d,%.17g,%.17g,%.17g\n", i, ori, kinds[k], j, res->x[q], res->y[q],
+							res->z[q]);
+				}
+				for (long f = ff ? res->face_first[b] : 0; ff && f < res->face_first[b + 1]; ++f)
+					fprintf(ff, "%d,%ld,%s,%ld,%d,%d,%d\n", i, ori, kinds[k], f - res->face_first[b],
+						res->faces[3 * f], res->faces[3 * f + 1], res->faces[3 * f + 2]);
+				ObstacleSum *sum = &s->sum[i];
+				sum->points += res->count[b];
+				sum->error = fmax(sum->error, res->error[b]);
+				sum->model_error = fmax(sum->model_error, res->model_error[b]);
+				sum->seconds += res->seconds[b];
+				if (!(res->error[b] <= s->tol))
+					++s->short_of_tol;
+			}
+}
+
+/* The robot's model(s) as text for the report. */
+static void robot_model(const SceneRun *s, int k, char *buf, size_t len)
+{
+	char msg[512];
+	double e = 0.0;
+	const mkSceneBody *robot = &s->scene.robot;
+	if (robot->kind == MK_SCENE_SMOOTH) {
+		snprintf(buf, len, "%s", mkSceneBody_KindName(robot));
+	} else if (s->scene.dim == 2) {
+		mkBody2 m;
+		mkSceneBody2_Model(robot, 0.25 * s->tol, (mkBound)k, &m, &e, msg, sizeof msg);
+		snprintf(buf, len, "%s eps=%.6g", mkShape2_IsEllipse(m.shape) ? "ellipse" : "superellipse", m.shape.eps);
+	} else {
+		mkBody3 m;
+		mkSceneBody3_Model(robot, 0.25 * s->tol, (mkBound)k, &m, &e, msg, sizeof msg);
+		snprintf(buf, len, "%s eps1=%.6g eps2=%.6g", mkShape3_IsEllipsoid(m.shape) ? "ellipsoid" : "superquadric",
+			m.shape.eps1, m.shape.eps2);
+	}
+}
+
+static void write_report(const SceneRun *s)
+{
+	FILE *fr = s->f[2].fp;
+	char rm[2][96], both[256];
+	for (int k = 0; k < 1 + s->outer; ++k)
+		robot_model(s, k, rm[k], sizeof rm[k]);
+	fprintf(fr, "obstacle,declared,model,model_error,points,certified_error,seconds\n");
+	if (s->outer && s->scene.robot.kind != MK_SCENE_SMOOTH)
+		snprintf(both, sizeof both, "inner %s; outer %s", rm[0], rm[1]);
+	else
+		snprintf(both, sizeof both, "%s", rm[0]);
+	fprintf(fr, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&s->scene.robot), both);
+	for (int i = 0; i < s->scene.obstacle_count; ++i)
+		fprintf(fr, "%d,%s,\"%s\",%.6g,%ld,%.6g,%.6f\n", i, mkSceneBody_KindName(&s->scene.obstacles[i]),
+			s->sum[i].model, s->sum[i].model_error, s->sum[i].points, s->sum[i].error, s->sum[i].seconds);
+}
+
+/* Compute the orientations [begin, end) in chunks, so that memory stays
+ * bounded (every boundary is computed alone: the chunking changes nothing
+ * in the output), and write everything. Returns 0, or 1 after printing. */
+static int compute(SceneRun *s, long begin, long end)
+{
+	char msg[2048];
+	int nob = s->scene.obstacle_count;
+	long budget = s->scene.dim == 2 ? 20000 : 2000; /* (orientation, obstacle) tasks per chunk */
+	long chunk = nob > 0 ? budget / nob : (long)s->scene.orientation_count + 1;
+	if (chunk < 1)
+		chunk = 1;
 	for (long c0 = begin; c0 < end; c0 += chunk) {
 		long c1 = c0 + chunk < end ? c0 + chunk : end;
-		r = mkCSpace_Run(&scene, &o, (int)c0, (int)c1, &res, msg, sizeof msg);
-		if (r != MK_OK) { fprintf(stderr, "mink scene: %s\n", msg); goto done; }
-		for (int orel = 0; orel < res.orientations; ++orel)
-			for (int i = 0; i < nob; ++i)
-				for (int k = 0; k < res.bounds; ++k) {
-					long b = ((long)orel * nob + i) * res.bounds + k;
-					long ori = c0 + orel;
-					for (int j = 0; j < res.count[b]; ++j) {
-						long q = res.first[b] + j;
-						if (scene.dim == 2)
-							fprintf(fo.fp, "%d,%ld,%s,%d,%.17g,%.17g\n", i, ori, kinds[k], j, res.x[q], res.y[q]);
-						else
-							fprintf(fo.fp, "%d,%ld,%s,%d,%.17g,%.17g,%.17g\n", i, ori, kinds[k], j, res.x[q], res.y[q], res.z[q]);
-					}
-					if (open_f)
-						for (long f = res.face_first[b]; f < res.face_first[b + 1]; ++f)
-							fprintf(ff.fp, "%d,%ld,%s,%ld,%d,%d,%d\n", i, ori, kinds[k], f - res.face_first[b],
-								res.faces[3 * f], res.faces[3 * f + 1], res.faces[3 * f + 2]);
-					sum[i].points += res.count[b];
-					if (res.error[b] > sum[i].error) sum[i].error = res.error[b];
-					if (res.model_error[b] > sum[i].model_error) sum[i].model_error = res.model_error[b];
-					sum[i].seconds += res.seconds[b];
-					if (!(res.error[b] <= tol)) ++short_of_tol;
-				}
+		mkCSpaceResult res;
+		if (mkCSpace_Run(&s->scene, &s->o, (int)c0, (int)c1, &res, msg, sizeof msg) != MK_OK) {
+			fprintf(stderr, "mink scene: %s\n", msg);
+			return 1;
+		}
+		write_chunk(s, &res, c0);
 		mkCSpaceResult_Free(&res);
 	}
-	if (open_r) {
-		char rm[2][96];
-		for (int k = 0; k < 1 + outer; ++k) {
-			double e = 0.0;
-			if (scene.dim == 2) {
-				mkBody2 m;
-				mkSceneBody2_Model(&scene.robot, 0.25 * tol, (mkBound)k, &m, &e, msg, sizeof msg);
-				if (scene.robot.kind == MK_SCENE_SMOOTH) snprintf(rm[k], sizeof rm[k], "%s", mkSceneBody_KindName(&scene.robot));
-				else snprintf(rm[k], sizeof rm[k], "%s eps=%.6g", mkShape2_IsEllipse(m.shape) ? "ellipse" : "superellipse", m.shape.eps);
-			} else {
-				mkBody3 m;
-				mkSceneBody3_Model(&scene.robot, 0.25 * tol, (mkBound)k, &m, &e, msg, sizeof msg);
-				if (scene.robot.kind == MK_SCENE_SMOOTH) snprintf(rm[k], sizeof rm[k], "%s", mkSceneBody_KindName(&scene.robot));
-				else snprintf(rm[k], sizeof rm[k], "%s eps1=%.6g eps2=%.6g", mkShape3_IsEllipsoid(m.shape) ? "ellipsoid" : "superquadric",
-					m.shape.eps1, m.shape.eps2);
-			}
-		}
-		fprintf(fr.fp, "obstacle,declared,model,model_error,points,certified_error,seconds\n");
-		char both[256];
-		if (outer && scene.robot.kind != MK_SCENE_SMOOTH) snprintf(both, sizeof both, "inner %s; outer %s", rm[0], rm[1]);
-		else snprintf(both, sizeof both, "%s", rm[0]);
-		fprintf(fr.fp, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&scene.robot), both);
-		for (int i = 0; i < nob; ++i)
-			fprintf(fr.fp, "%d,%s,\"%s\",%.6g,%ld,%.6g,%.6f\n", i, mkSceneBody_KindName(&scene.obstacles[i]),
-				sum[i].model, sum[i].model_error, sum[i].points, sum[i].error, sum[i].seconds);
-	}
+	if (s->open[2])
+		write_report(s);
 	mkOutFile *all[3];
 	int na = 0;
-	all[na++] = &fo;
-	if (open_f) all[na++] = &ff;
-	if (open_r) all[na++] = &fr;
-	if (mkOutFile_CommitAll(all, na, msg, sizeof msg)) { fprintf(stderr, "mink scene: %s\n", msg); open_o = open_f = open_r = 0; goto done; }
-	open_o = open_f = open_r = 0;
-	rc = 0;
-	if (short_of_tol) {
+	for (int k = 0; k < 3; ++k)
+		if (s->open[k])
+			all[na++] = &s->f[k];
+	int failed = mkOutFile_CommitAll(all, na, msg, sizeof msg) != 0;
+	s->open[0] = s->open[1] = s->open[2] = 0;
+	if (failed) {
+		fprintf(stderr, "mink scene: %s\n", msg);
+		return 1;
+	}
+	return 0;
+}
+
+int mkCmd_Scene(int argc, char **argv)
+{
+	SceneRun s;
+	memset(&s, 0, sizeof s);
+	for (int k = 0; k < 3; ++k)
+		s.f[k].slot = -1;
+	long threads = 1;
+	int impl = MK_IMPL_AUTO;
+	mkShard shard = mkShard_All();
+	/* FILE comes first; the options after it */
+	int first = argc > 1 && strncmp(argv[1], "--", 2) != 0 && strcmp(argv[1], "-h") != 0;
+	s.file = first ? argv[1] : NULL;
+	mkFlag flags[] = {
+		MK_FLAG_DOUBLE("--tol", "T", "the tolerance, in the scene's length unit (required)", &s.tol, 1e-12, 1e12),
+		MK_FLAG_PATH("--out", "PATH", "CSV obstacle,orientation,kind,k,x,y[,z] (kind inner or outer; 2D\n"
+			"counter-clockwise); 3D faces go to PATH with .csv replaced by .faces.csv:\n"
+			"obstacle,orientation,kind,f,i,j,k. Written atomically (required)", &s.out),
+		MK_FLAG_PATH("--report", "PATH", "CSV per obstacle: model, model error, points, certified error,\n"
+			"seconds (and a robot row)", &s.report),
+		MK_FLAG_SWITCH("--outer", "also the outer boundaries", &s.outer),
+		MK_FLAG_LONG("--threads", "K", "worker threads (default 1); the output does not depend on K", &threads, 1,
+			THREADS_MAX),
+		MK_FLAG_TEXT("--shard", "I/N", "only block I (0-based) of N of the orientations; the shards'\n"
+			"rows concatenated in order (one header) equal the whole run's", &shard, mkShard_ParseFlag),
+		MK_FLAG_IMPL("--impl", "kernel (default auto)", &impl),
+	};
+	int rc = mkCli_Parse("scene", flags, MK_COUNT(flags), argc - first, argv + first, help);
+	if (rc != MK_CLI_GO)
+		return rc;
+	if (!s.file) { fprintf(stderr, "mink scene: no scene FILE given (usage: mink scene FILE --tol T --out PATH)\n"); return 2; }
+	if ((rc = mkCli_Require("scene", &flags[0])) != MK_CLI_GO || (rc = mkCli_Require("scene", &flags[1])) != MK_CLI_GO)
+		return rc;
+	rc = load_scene(&s);
+	if (rc == 0) {
+		s.o = mkCSpaceOptions_Default();
+		s.o.tol = s.tol;
+		s.o.outer = s.outer;
+		s.o.threads = (int)threads;
+		s.o.impl = (mkImpl)impl;
+		long begin, end;
+		mkShard_Range(shard, s.scene.orientation_count, &begin, &end);
+		rc = check_models(&s);
+		if (rc == 0)
+			rc = open_outputs(&s);
+		if (rc == 0)
+			rc = compute(&s, begin, end);
+	}
+	if (rc == 0 && s.short_of_tol) {
 		fprintf(stderr, "mink scene: warning: %d boundaries are not certified within --tol %g (point cap or "
-			"normals closer than 1e-12 rad): see their certified_error in the report\n", short_of_tol, tol);
+			"normals closer than 1e-12 rad): see their certified_error in the report\n", s.short_of_tol, s.tol);
 		rc = 1;
 	}
-done:
-	if (open_o) mkOutFile_Discard(&fo);
-	if (open_f) mkOutFile_Discard(&ff);
-	if (open_r) mkOutFile_Discard(&fr);
-	free(sum);
-	mkScene_Free(&scene);
+	for (int k = 0; k < 3; ++k)
+		if (s.open[k])
+			mkOutFile_Discard(&s.f[k]);
+	free(s.sum);
+	mkScene_Free(&s.scene);
 	return rc;
 }

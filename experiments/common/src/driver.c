@@ -110,7 +110,7 @@ void mkFlags_Print(FILE *fp, const mkFlag *flags, int count)
 
 /* ---- runs ---------------------------------------------------------------- */
 
-static int mkShard_ParseFlag(void *context, const char *text, char *msg, size_t msglen)
+int mkShard_ParseFlag(void *context, const char *text, char *msg, size_t msglen)
 {
 	char why[512];
 	if (mkShard_Parse(text, "--shard", (mkShard *)context, why, sizeof why) == 0)

@@ -87,6 +87,10 @@ typedef struct mkFlag {
 #define MK_FLAG_TEXT(name, arg, help, ptr, fn) { name, arg, help, MK_FLAG_TEXT, ptr, 0, 0, NULL, 0, fn, 0 }
 #define MK_FLAG_REPEAT(name, arg, help, ptr, fn) { name, arg, help, MK_FLAG_REPEAT, ptr, 0, 0, NULL, 0, fn, 0 }
 
+/* The parse function of a MK_FLAG_TEXT flag "I/N" that splits a run
+ * (mink_exp/shard.h); context is an mkShard *. */
+int mkShard_ParseFlag(void *context, const char *text, char *msg, size_t msglen);
+
 /* Parse argv against `flags` (and --help). Returns 0 to go on, 1 when --help
  * was asked for, -1 on an error (msg holds "<flag>: <why>"). Exposed for the
  * `mink` subcommands, which have no CSV of their own. */
