@@ -135,7 +135,7 @@ static mkBody2 takeBody2(fuzzReader *r)
 	s.b = takeAxis(r);
 	mkMat2 M;
 	if (takeByte(r) % 2)
-		M = mkMat2_Mul(mkMat2_Rotation(2.0 * 3.141592653589793 * takeUnit(r)),
+		M = mkMat2_Mul(mkMat2_Rotation(2.0 * MK_PI * takeUnit(r)),
 			mkMat2_Shear(-10.0 + 20.0 * takeUnit(r)));
 	else
 		for (int i = 0; i < 2; ++i)

@@ -11,7 +11,6 @@
 
 enum { CASE1_POINTS = 100, CYLINDER_RING = 30, ELLIPSOID_GRID = 9 };
 
-static const double PI = 3.14159265358979323846;
 
 uint64_t mkFitStream(int caseId, int level, int trial)
 {
@@ -157,9 +156,9 @@ void mkFitSample3_PaperGrid(int n, double *ux, double *uy, double *uz)
 	/* eta = -pi/2 : pi/(n-1) : pi/2 and omega = -pi-1e-6 : 2pi/(n-1) : pi+1e-6,
 	 * the published code's meshgrid; both ranges hold exactly n values. */
 	for (int i = 0; i < n; ++i) {
-		double eta = -PI / 2.0 + PI * i / (n - 1);
+		double eta = -MK_PI / 2.0 + MK_PI * i / (n - 1);
 		for (int j = 0; j < n; ++j) {
-			double omega = -PI - 1e-6 + 2.0 * PI * j / (n - 1);
+			double omega = -MK_PI - 1e-6 + 2.0 * MK_PI * j / (n - 1);
 			ux[i * n + j] = cos(eta) * cos(omega);
 			uy[i * n + j] = cos(eta) * sin(omega);
 			uz[i * n + j] = sin(eta);
@@ -345,7 +344,7 @@ int mkFitCase3_Trial(uint64_t seed, int trial, mkFitRow *rows)
 	/* ellipsoid of semi-axes size: the superquadric eps = (1,1) is exact;
 	 * polyhedra from 9 x 9 grids of both samplings */
 	drawSize(seed, 2, trial, size);
-	double vEll = 4.0 / 3.0 * PI * size[0] * size[1] * size[2];
+	double vEll = 4.0 / 3.0 * MK_PI * size[0] * size[1] * size[2];
 	mkShape3 ell = { size[0], size[1], size[2], 1.0, 1.0 };
 	r = &rows[count++];
 	*r = primitiveRow(trial, "ellipsoid", size, vEll);
@@ -367,7 +366,7 @@ int mkFitCase3_Trial(uint64_t seed, int trial, mkFitRow *rows)
 	 * size_z: superquadric (size_x, size_y, size_z/2), eps = (0.1, 1);
 	 * polyhedra of two rings of 30 points at z = +-size_z/2 */
 	drawSize(seed, 3, trial, size);
-	double vCyl = PI * size[0] * size[1] * size[2];
+	double vCyl = MK_PI * size[0] * size[1] * size[2];
 	r = &rows[count++];
 	*r = primitiveRow(trial, "cylinder", size, vCyl);
 	superquadricModel(r, (mkShape3){ size[0], size[1], size[2] / 2, 0.1, 1.0 });
@@ -376,8 +375,8 @@ int mkFitCase3_Trial(uint64_t seed, int trial, mkFitRow *rows)
 		for (int j = 0; j < CYLINDER_RING; ++j) {
 			/* paper: -pi : 2pi/29 : pi, its ends coinciding; distinct:
 			 * 30 angles 2pi/30 apart */
-			double th = paper ? -PI + 2.0 * PI * j / (CYLINDER_RING - 1)
-				: -PI + 2.0 * PI * j / CYLINDER_RING;
+			double th = paper ? -MK_PI + 2.0 * MK_PI * j / (CYLINDER_RING - 1)
+				: -MK_PI + 2.0 * MK_PI * j / CYLINDER_RING;
 			for (int ring = 0; ring < 2; ++ring) {
 				int k = ring * CYLINDER_RING + j;
 				x[k] = size[0] * cos(th);

@@ -16,12 +16,13 @@
 #include "ensure.h"
 #include "exp_testing.h"
 
+#include <mink/geom.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
 
 /* The q-norms below are pnorm2 (exp_testing.h), scaled by the larger
  * entry (q reaches 2e6). */
@@ -59,7 +60,7 @@ static double minGap(const Body *O, const Body *R, double x, double y, double *m
 	double best = INFINITY, bth = 0.0;
 	*most_negative = INFINITY;
 	for (int k = 0; k < M; ++k) {
-		double th = 2.0 * PI * k / M;
+		double th = 2.0 * MK_PI * k / M;
 		double g = gap(O, R, x, y, th);
 		*most_negative = fmin(*most_negative, g);
 		if (g < best) {
@@ -69,7 +70,7 @@ static double minGap(const Body *O, const Body *R, double x, double y, double *m
 	}
 	/* Golden section on one step either side: g is unimodal there for
 	 * these smooth, strictly convex bodies. */
-	double lo = bth - 2.0 * PI / M, hi = bth + 2.0 * PI / M;
+	double lo = bth - 2.0 * MK_PI / M, hi = bth + 2.0 * MK_PI / M;
 	const double r = 0.6180339887498949;
 	double c = hi - r * (hi - lo), d = lo + r * (hi - lo);
 	double gc = gap(O, R, x, y, c), gd = gap(O, R, x, y, d);
@@ -162,7 +163,7 @@ static void checkFigure(const char *dir)
 		 * [-200, 200), angles in [0, pi). */
 		ENSURE(O[j].a > 0 && O[j].a <= 10 && O[j].b > 0 && O[j].b <= 10);
 		ENSURE(O[j].eps >= 1e-6 && O[j].eps <= 2.0 - 1e-6);
-		ENSURE(fabs(O[j].cx) <= 200 && fabs(O[j].cy) <= 200 && O[j].angle >= 0 && O[j].angle < PI);
+		ENSURE(fabs(O[j].cx) <= 200 && fabs(O[j].cy) <= 200 && O[j].angle >= 0 && O[j].angle < MK_PI);
 	}
 	/* Gauges of outline points: positions near 200 carry rounding of a few
 	 * 1e-14; divided by semi-axes that may be small (an obstacle's a can

@@ -26,7 +26,6 @@
 #include <string.h>
 
 #define TOL 1e-9
-#define PI 3.14159265358979323846
 
 /* ---- gauges from the definitions ----------------------------------------- */
 
@@ -444,7 +443,7 @@ static void checkFigure4(const mkTable *ix)
 				if (i < 0 || i == 50) {
 					u[0] = 0.0; u[1] = 0.0; u[2] = i < 0 ? -1.0 : 1.0;
 				} else {
-					double eta = -PI / 2 + PI * i / 49.0, om = -PI + 2 * PI * (j % 50) / 50.0;
+					double eta = -MK_PI / 2 + MK_PI * i / 49.0, om = -MK_PI + 2 * MK_PI * (j % 50) / 50.0;
 					u[0] = cos(eta) * cos(om); u[1] = cos(eta) * sin(om); u[2] = sin(eta);
 				}
 				double p1[3], n[3], nl[3], n2l[3], x[3];

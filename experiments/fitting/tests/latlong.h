@@ -9,14 +9,15 @@
 
 #include <math.h>
 
+#include <mink/geom.h>
+
 static double latLongVolume(int rings, int lon)
 {
-	const double pi = 3.14159265358979323846;
 	double vol = 0.0;
 	for (int i = 0; i + 1 < rings; ++i) {
-		double e0 = -pi / 2 + pi * i / (rings - 1), e1 = -pi / 2 + pi * (i + 1) / (rings - 1);
+		double e0 = -MK_PI / 2 + MK_PI * i / (rings - 1), e1 = -MK_PI / 2 + MK_PI * (i + 1) / (rings - 1);
 		for (int j = 0; j < lon; ++j) {
-			double w0 = 2 * pi * j / lon, w1 = 2 * pi * (j + 1) / lon;
+			double w0 = 2 * MK_PI * j / lon, w1 = 2 * MK_PI * (j + 1) / lon;
 			double p[4][3] = {
 				{ cos(e0) * cos(w0), cos(e0) * sin(w0), sin(e0) },
 				{ cos(e0) * cos(w1), cos(e0) * sin(w1), sin(e0) },

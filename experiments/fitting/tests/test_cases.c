@@ -9,7 +9,6 @@
 
 #include <mink/sum.h>
 
-static const double PI = 3.14159265358979323846;
 
 static double betaFn(double x, double y)
 {
@@ -51,10 +50,10 @@ static void testCase3(void)
 {
 	double cubeSq = 1.0 - 2.0 * 0.01 * betaFn(1.05, 0.1) * betaFn(0.05, 0.05) / 8.0;
 	double cylSq = 1.0 - 0.1 * betaFn(1.05, 0.1);
-	double cylPaper = 1.0 - 29.0 * sin(2.0 * PI / 29.0) / (2.0 * PI);
-	double cylDistinct = 1.0 - 30.0 * sin(2.0 * PI / 30.0) / (2.0 * PI);
-	double ellPaper = 1.0 - latLongVolume(9, 8) / (4.0 / 3.0 * PI);
-	double ellDistinct = 1.0 - latLongVolume(9, 9) / (4.0 / 3.0 * PI);
+	double cylPaper = 1.0 - 29.0 * sin(2.0 * MK_PI / 29.0) / (2.0 * MK_PI);
+	double cylDistinct = 1.0 - 30.0 * sin(2.0 * MK_PI / 30.0) / (2.0 * MK_PI);
+	double ellPaper = 1.0 - latLongVolume(9, 8) / (4.0 / 3.0 * MK_PI);
+	double ellDistinct = 1.0 - latLongVolume(9, 9) / (4.0 / 3.0 * MK_PI);
 	printf("case 3 closed forms: cube sq %.6f, cylinder sq %.6f, cylinder poly %.6f / %.6f, "
 		"ellipsoid poly %.6f / %.6f\n", cubeSq, cylSq, cylPaper, cylDistinct, ellPaper, ellDistinct);
 	ENSURE_NEAR(cubeSq, 0.0112, 5.5e-5);
@@ -96,7 +95,7 @@ static void testPaperGrid(void)
 	for (int i = 0; i < N; ++i) {
 		ENSURE_NEAR(ux[i * N], ux[i * N + N - 1], 1e-15);
 		ENSURE_NEAR(uy[i * N], uy[i * N + N - 1], 1e-15);
-		ENSURE_NEAR(uz[i * N + 2], sin(-PI / 2 + PI * i / (N - 1)), 0.0);
+		ENSURE_NEAR(uz[i * N + 2], sin(-MK_PI / 2 + MK_PI * i / (N - 1)), 0.0);
 	}
 }
 

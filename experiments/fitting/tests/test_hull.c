@@ -5,7 +5,6 @@
 
 #include <stdlib.h>
 
-static const double PI = 3.14159265358979323846;
 
 static double sphereGridHull(double r, int n, int *vertices)
 {
@@ -13,9 +12,9 @@ static double sphereGridHull(double r, int n, int *vertices)
 	double *x = malloc(sizeof(double) * 3 * (size_t)count);
 	double *y = x + count, *z = y + count;
 	for (int i = 0; i < n; ++i) {
-		double e = -PI / 2 + PI * i / (n - 1);
+		double e = -MK_PI / 2 + MK_PI * i / (n - 1);
 		for (int j = 0; j < n; ++j) {
-			double w = 2 * PI * j / n;
+			double w = 2 * MK_PI * j / n;
 			x[i * n + j] = r * cos(e) * cos(w);
 			y[i * n + j] = r * cos(e) * sin(w);
 			z[i * n + j] = r * sin(e);
@@ -81,7 +80,7 @@ int main(void)
 	 * 4.026 (32 -> 64): accept 3.8 .. 4.2, which a first-order (ratio 2)
 	 * or third-order (ratio 8) defect would fail. */
 	{
-		const double r = 2.0, exact = 4.0 / 3.0 * PI * r * r * r;
+		const double r = 2.0, exact = 4.0 / 3.0 * MK_PI * r * r * r;
 		double defect[3];
 		int ns[3] = { 16, 32, 64 };
 		for (int i = 0; i < 3; ++i) {
