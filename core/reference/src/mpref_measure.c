@@ -31,8 +31,8 @@
 #define RND MPFR_RNDN
 #define MEAS_PI 3.14159265358979323846
 #define FD_STEP 1e-30      /* step of the second differences, radian */
-#define NEWTON_ITERS 60
-#define NM_EVALS 1500      /* Nelder-Mead budget per point */
+#define NEWTON_ITERS 16
+#define NM_EVALS 300       /* Nelder-Mead budget per point */
 
 /* ---- double-precision helpers ------------------------------------------ */
 
@@ -259,11 +259,75 @@ static void coarseNormal(const refBody *b1, const refBody *b2, int plus, const d
 
 /* ---- the 256-bit search ------------------------------------------------- */
 
+/* The boundary point of K with outward normal n, as refSum_Point with
+ * normal parameters, except that a component of a body's canonical direction
+ * below 2^-200 of the largest is taken as zero. Such components come from
+ * rounding the round trip M^T (M^-T w) at 256 bits when the exact direction
+ * has a zero there (the normal of a point in the middle of an edge or face
+ * of an eps -> 0 body): the support point would jump from that middle to the
+ * rim, where the face is flat to 1e-600000, and the bound |p - x| would
+ * measure the face's size instead of the point's error. Both points lie on
+ * the boundary; the support value moves by 2^-200 of the body's size. */
+static void snapDirection(refVec *w, int dim)
+{
+	mpfr_t m, t;
+	mpfr_inits2(REF_PREC, m, t, (mpfr_ptr)0);
+	mpfr_set_zero(m, 1);
+	for (int i = 0; i < dim; ++i) {
+		mpfr_abs(t, w->c[i], RND);
+		if (mpfr_greater_p(t, m))
+			mpfr_set(m, t, RND);
+	}
+	mpfr_mul_2si(m, m, -200, RND);
+	for (int i = 0; i < dim; ++i) {
+		mpfr_abs(t, w->c[i], RND);
+		if (mpfr_less_p(t, m))
+			mpfr_set_zero(w->c[i], 1);
+	}
+	mpfr_clears(m, t, (mpfr_ptr)0);
+}
+
+/* x = x_K(n) and k = B1's part (t1 + M1 s1), n unit. */
+static void sumSupport(const refBody *b1, const refBody *b2, int plus, const refVec *n, refVec *x, refVec *k)
+{
+	int dim = b1->s.dim;
+	refVec w, sp, q;
+	refVec_Init(&w);
+	refVec_Init(&sp);
+	refVec_Init(&q);
+	refMat_MulTVec(&b1->M, dim, n, &w);
+	snapDirection(&w, dim);
+	refShape_Support(b1->s, &w, &sp);
+	refMat_MulVec(&b1->M, dim, &sp, k);
+	for (int i = 0; i < dim; ++i)
+		mpfr_add_d(k->c[i], k->c[i], b1->t[i], RND);
+	refMat_MulTVec(&b2->M, dim, n, &w);
+	if (!plus)
+		for (int i = 0; i < dim; ++i)
+			mpfr_neg(w.c[i], w.c[i], RND);
+	snapDirection(&w, dim);
+	refShape_Support(b2->s, &w, &sp);
+	refMat_MulVec(&b2->M, dim, &sp, &q);
+	for (int i = 0; i < dim; ++i) {
+		if (plus) {
+			mpfr_add(x->c[i], k->c[i], q.c[i], RND);
+			mpfr_add_d(x->c[i], x->c[i], b2->t[i], RND);
+		} else {
+			mpfr_sub(x->c[i], k->c[i], q.c[i], RND);
+		}
+	}
+	for (int i = dim; i < 3; ++i)
+		mpfr_set_zero(x->c[i], 1);
+	refVec_Clear(&w);
+	refVec_Clear(&sp);
+	refVec_Clear(&q);
+}
+
 typedef struct refSearch {
 	const refBody *b1, *b2;
 	int plus, dim, k;
 	refVec p, n0, T[2];
-	refVec m, n, x, v; /* workspace of searchEval */
+	refVec m, n, x, kk, v; /* workspace of searchEval */
 	mpfr_t t, len;
 	int evals;
 } refSearch;
@@ -282,6 +346,7 @@ static void searchInit(refSearch *S, const refBody *b1, const refBody *b2, int p
 	refVec_Init(&S->m);
 	refVec_Init(&S->n);
 	refVec_Init(&S->x);
+	refVec_Init(&S->kk);
 	refVec_Init(&S->v);
 	mpfr_init2(S->t, REF_PREC);
 	mpfr_init2(S->len, REF_PREC);
@@ -298,6 +363,7 @@ static void searchClear(refSearch *S)
 	refVec_Clear(&S->m);
 	refVec_Clear(&S->n);
 	refVec_Clear(&S->x);
+	refVec_Clear(&S->kk);
 	refVec_Clear(&S->v);
 	mpfr_clear(S->t);
 	mpfr_clear(S->len);
@@ -331,7 +397,7 @@ static void searchEval(refSearch *S, const double *s, mpfr_t phi, mpfr_t *g, dou
 	mpfr_sqrt(S->len, S->len, RND);
 	for (int i = 0; i < dim; ++i)
 		mpfr_div(S->n.c[i], S->m.c[i], S->len, RND);
-	refSum_Point(S->b1, S->b2, S->plus, 0, &S->n, &S->x, NULL, NULL);
+	sumSupport(S->b1, S->b2, S->plus, &S->n, &S->x, &S->kk);
 	for (int i = 0; i < dim; ++i)
 		mpfr_sub(S->v.c[i], S->p.c[i], S->x.c[i], RND);
 	refVec_Dot(phi, &S->n, &S->v, dim);
@@ -410,7 +476,7 @@ static int searchNewton(refSearch *S, double scale, mpfr_t phi, double *acc)
 		}
 		/* Halving line search on phi itself. */
 		int accepted = 0;
-		for (int ls = 0; ls < 40; ++ls) {
+		for (int ls = 0; ls < 24; ++ls) {
 			searchEval(S, delta, ph, NULL, NULL);
 			if (mpfr_greater_p(ph, phi)) {
 				accepted = 1;
@@ -440,7 +506,7 @@ static void searchSimplex(refSearch *S, double scale, mpfr_t phi, double *acc)
 	refVec bestN;
 	refVec_Init(&bestN);
 	mpfr_inits2(REF_PREC, f[0], f[1], f[2], fr, fe, gb[0], gb[1], (mpfr_ptr)0);
-	double r = 1e-6; /* Nelder-Mead grows it by expansions where needed */
+	double r = 1e-8; /* Nelder-Mead grows it by expansions where needed */
 	int budget = S->evals + NM_EVALS;
 	*acc = INFINITY;
 	while (S->evals < budget) {
@@ -547,12 +613,76 @@ static int finite3(const double *v, int dim)
 	return 1;
 }
 
+/* The face certificate. Bodies with eps -> 0 have faces that are flat to
+ * 1e-600000, far below 256 bits: every representable normal near the face
+ * normal n has its support point at the face's centre or at its rim, and phi
+ * has a kink at n at every scale the search can resolve. There the answer
+ * is known directly: y = p - phi(n) n lies on the supporting plane of K at
+ * n; if y belongs to K it lies on the boundary, so |d(p)| <= |phi(n)|, and
+ * with d(p) >= phi(n) that gives d(p) = phi(n) when phi(n) >= 0 (exact), and
+ * d(p) in [phi(n), -phi(n)] otherwise (|d| <= |phi| is then a bound, equal
+ * to the distance to that face unless another face is nearer). y belongs to
+ * K when y minus the other body's support point at n lies in one body: one
+ * evaluation of that body's implicit function (<= 1 + 2^-200: the face is
+ * flat to that precision in this model). Returns 1 when certified. */
+static int faceCertificate(refSearch *S, const mpfr_t phi)
+{
+	int dim = S->dim, ok = 0;
+	refVec x, k, y, z, c;
+	refMat Mt;
+	mpfr_t t, psi;
+	refVec_Init(&x);
+	refVec_Init(&k);
+	refVec_Init(&y);
+	refVec_Init(&z);
+	refVec_Init(&c);
+	mpfr_inits2(REF_PREC, t, psi, (mpfr_ptr)0);
+	sumSupport(S->b1, S->b2, S->plus, &S->n0, &x, &k);
+	for (int i = 0; i < dim; ++i) {
+		mpfr_mul(t, phi, S->n0.c[i], RND);
+		mpfr_sub(y.c[i], S->p.c[i], t, RND);
+	}
+	for (int which = 0; which < 2 && !ok; ++which) {
+		const refBody *b = which == 0 ? S->b1 : S->b2;
+		/* which 0: y - (x - k) in B1; which 1: y - k in B2 (plus) or
+		 * k - y in M2 B2 (contact, no t2) */
+		for (int i = 0; i < dim; ++i) {
+			if (which == 0) {
+				mpfr_sub(t, x.c[i], k.c[i], RND);
+				mpfr_sub(z.c[i], y.c[i], t, RND);
+				mpfr_sub_d(z.c[i], z.c[i], b->t[i], RND);
+			} else if (S->plus) {
+				mpfr_sub(z.c[i], y.c[i], k.c[i], RND);
+				mpfr_sub_d(z.c[i], z.c[i], b->t[i], RND);
+			} else {
+				mpfr_sub(z.c[i], k.c[i], y.c[i], RND);
+			}
+		}
+		/* canonical point M^-1 z = (M^T)^-T z */
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j)
+				Mt.m[i][j] = b->M.m[j][i];
+		refMat_InvTVec(&Mt, dim, &z, &c);
+		refShape_Implicit(b->s, &c, psi);
+		mpfr_sub_ui(psi, psi, 1, RND);
+		mpfr_set_ui_2exp(t, 1, -200, RND);
+		ok = mpfr_lessequal_p(psi, t);
+	}
+	refVec_Clear(&x);
+	refVec_Clear(&k);
+	refVec_Clear(&y);
+	refVec_Clear(&z);
+	refVec_Clear(&c);
+	mpfr_clears(t, psi, (mpfr_ptr)0);
+	return ok;
+}
+
 /* The search from start normal n0 (double, nonzero). With newtonOnly the
  * derivative-free stage is skipped; returns 1 when the search reached its
  * target (out->accuracy is then the estimate), 0 otherwise (out->dist is
  * still a lower bound of d(p) and out->upper an upper bound of |d(p)|). */
 static int distanceFrom(const refBody *b1, const refBody *b2, int plus, const double *p,
-	const double *n0, double S, int newtonOnly, refDistance *out)
+	const double *n0, const refVec *n0m, double S, int newtonOnly, refDistance *out)
 {
 	int dim = b1->s.dim;
 	refSearch st;
@@ -562,10 +692,28 @@ static int distanceFrom(const refBody *b1, const refBody *b2, int plus, const do
 	refVec_Init(&base);
 	mpfr_init2(phi, REF_PREC);
 	mpfr_init2(fin, REF_PREC);
-	refVec_FromD(&base, dim, n0);
+	/* An exact start normal is kept at 256 bits: near the corners of
+	 * eps -> 0 bodies its small components (1e-35 and less) decide where the
+	 * support point is, and a double would round them away. */
+	if (n0m)
+		refVec_Set(&base, n0m);
+	else
+		refVec_FromD(&base, dim, n0);
 	searchSetBase(&st, &base);
 	double zero[2] = { 0.0, 0.0 }, vlen, acc = INFINITY;
-	int done = searchNewton(&st, S, phi, &acc);
+	/* A face: certified at the start normal itself (Newton would only
+	 * wander along the kink). */
+	searchEval(&st, zero, phi, NULL, &vlen);
+	double vStart = vlen;
+	int done = faceCertificate(&st, phi);
+	if (done)
+		acc = 0.0;
+	else
+		done = searchNewton(&st, S, phi, &acc);
+	if (!done && faceCertificate(&st, phi)) {
+		done = 1;
+		acc = 0.0;
+	}
 	if (!done && !newtonOnly) {
 		searchSimplex(&st, S, phi, &acc);
 		done = acc <= searchTol(S, phi);
@@ -575,7 +723,10 @@ static int distanceFrom(const refBody *b1, const refBody *b2, int plus, const do
 	if (mpfr_greater_p(fin, phi))
 		mpfr_set(phi, fin, RND);
 	out->dist = mpfr_get_d(phi, RND);
-	out->upper = vlen;
+	/* both |v| at the start and at the end bound |d| (x_K(n) lies on the
+	 * boundary for any n); the start's is the tight one for an exact hint
+	 * whose search wandered along a kink */
+	out->upper = vStart < vlen ? vStart : vlen;
 	out->accuracy = acc;
 	out->normal[0] = out->normal[1] = out->normal[2] = 0.0;
 	refVec_ToD(&st.n, dim, out->normal);
@@ -594,14 +745,18 @@ int refSum_Distance(const refBody *b1, const refBody *b2, int plus,
 	double n0[3] = { 0.0, 0.0, 0.0 };
 	if (!finite3(p, dim))
 		return -1;
+	if (hint && (!finite3(hint, dim) || !(dNorm(hint, dim) > 0.0)))
+		return -1;
+	/* The scan, and the hint where it does better in double precision. */
+	coarseNormal(b1, b2, plus, p, n0);
 	if (hint) {
-		if (!finite3(hint, dim) || !(dNorm(hint, dim) > 0.0))
-			return -1;
-		memcpy(n0, hint, sizeof(double) * (size_t)dim);
-	} else {
-		coarseNormal(b1, b2, plus, p, n0);
+		double h[3] = { 0.0, 0.0, 0.0 }, l = dNorm(hint, dim);
+		for (int i = 0; i < dim; ++i)
+			h[i] = hint[i] / l;
+		if (dPhi(b1, b2, plus, p, h) >= dPhi(b1, b2, plus, p, n0))
+			memcpy(n0, h, sizeof h);
 	}
-	distanceFrom(b1, b2, plus, p, n0, refSum_Scale(b1, b2, plus), 0, out);
+	distanceFrom(b1, b2, plus, p, n0, NULL, refSum_Scale(b1, b2, plus), 0, out);
 	return 0;
 }
 
@@ -667,7 +822,7 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 			coarseNormal(b1, b2, plus, p, n0);
 		}
 		refDistance d;
-		if (distanceFrom(b1, b2, plus, p, n0, out->scale, 1, &d)) {
+		if (distanceFrom(b1, b2, plus, p, n0, hints ? &nn : NULL, out->scale, 1, &d)) {
 			scoreTake(out, i, &d);
 			if (d.accuracy > accMax)
 				accMax = d.accuracy;
@@ -687,7 +842,7 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 		int j = cand[i].index;
 		double p[3] = { x[j], y[j], dim == 3 ? z[j] : 0.0 };
 		refDistance d;
-		distanceFrom(b1, b2, plus, p, cand[i].n0, out->scale, 0, &d);
+		distanceFrom(b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d);
 		out->refined++;
 		scoreTake(out, j, &d);
 		if (d.accuracy > accMax)

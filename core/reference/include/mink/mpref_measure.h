@@ -43,7 +43,8 @@ double refSum_Scale(const refBody *b1, const refBody *b2, int plus);
 /* The result of one distance evaluation. */
 typedef struct refDistance {
 	double dist;      /* signed distance d(p), positive outside (rounded) */
-	double upper;     /* |p - x_K(n)| at the final normal: d(p) <= upper */
+	double upper;     /* |p - x_K(n)| at the start or the final normal,
+	                     whichever is smaller: |d(p)| <= upper */
 	double accuracy;  /* estimated |d(p) - dist|: the gain still predicted by
 	                     the search when it stopped (0 means not estimated
 	                     because phi reached zero to 256 bits) */
@@ -52,8 +53,8 @@ typedef struct refDistance {
 } refDistance;
 
 /* Signed distance of p (dim doubles, dim = b1->s.dim) from the boundary of K.
- * hint: a start normal (any length; NULL to scan the sphere in double
- * precision first). Returns 0, or -1 when p has a non-finite coordinate or
+ * hint: a start normal (any length) or NULL; the search starts from the
+ * better (in double precision) of the hint and a scan of the sphere. Returns 0, or -1 when p has a non-finite coordinate or
  * the hint is zero or non-finite (out is then left untouched). */
 int refSum_Distance(const refBody *b1, const refBody *b2, int plus,
 	const double *p, const double *hint, refDistance *out);
