@@ -15,7 +15,8 @@
  *     representable scale: this is the case that needs the derivative-free
  *     fallback.
  *  4. The score of a planted set: the largest |d| and its index, non-finite
- *     points counted, found with and without start normals.
+ *     points counted, found with and without start normals; and on the
+ *     edges of a near-cube, where only the derivative-free stage finds it.
  *  5. The condition on a translation-dominated pair, worked by hand: the
  *     boundary moves exactly with t1, by one ulp of each coordinate.
  * Tolerances: the rounding of p itself (2^-53 |p| per coordinate, so
@@ -283,6 +284,58 @@ static void checkScore(void)
 			/* a smooth pair: Newton settles every point */
 			ENSURE(sc.refined == 0);
 		}
+	}
+	/* Edges of a near-cube (eps 1e-6) summed with an ellipsoid: parameters
+	 * with an exact zero component put B1's point in the middle of an edge,
+	 * where phi has a ridge at every representable scale, Newton stops and
+	 * no face certificate applies, so the derivative-free stage must find
+	 * the planted maximum. Points moved outwards along the exact normal are
+	 * at exactly that distance. */
+	{
+		double t1[3] = { 0.3, -0.2, 0.1 };
+		refBody b1 = makeBody(3, 1.0, 0.4, 0.7, 1e-6, 1e-6, 0.4, t1);
+		refBody b2 = makeBody(3, 0.6, 0.9, 0.3, 1.0, 1.0, 1.3, NULL);
+		double S = refSum_Scale(&b1, &b2, 0), ux[12], uy[12], uz[12], x[12], y[12], z[12], pmax = 0.0;
+		int count = 12, planted = 7;
+		for (int k = 0; k < count; ++k) {
+			double a = 0.3 + 0.5 * k;
+			ux[k] = k % 3 == 0 ? 0.0 : cos(a);
+			uy[k] = k % 3 == 1 ? 0.0 : sin(a);
+			uz[k] = k % 3 == 2 ? 0.0 : (k % 2 ? 0.6 : -0.6);
+			refVec u, xv, nv;
+			refVec_Init(&u);
+			refVec_Init(&xv);
+			refVec_Init(&nv);
+			double ud[3] = { ux[k], uy[k], uz[k] }, p[3];
+			refVec_FromD(&u, 3, ud);
+			refSum_Point(&b1, &b2, 0, 1, &u, &xv, NULL, &nv);
+			double delta = (k == planted ? 5e-12 : 1e-12 * (k % 4)) * S;
+			for (int i = 0; i < 3; ++i) {
+				mpfr_t t;
+				mpfr_init2(t, REF_PREC);
+				mpfr_mul_d(t, nv.c[i], delta, MPFR_RNDN);
+				mpfr_add(t, t, xv.c[i], MPFR_RNDN);
+				p[i] = mpfr_get_d(t, MPFR_RNDN);
+				mpfr_clear(t);
+			}
+			x[k] = p[0];
+			y[k] = p[1];
+			z[k] = p[2];
+			if (dnorm(p, 3) > pmax)
+				pmax = dnorm(p, 3);
+			refVec_Clear(&u);
+			refVec_Clear(&xv);
+			refVec_Clear(&nv);
+		}
+		refScore sc;
+		ENSURE(refSum_Score(&b1, &b2, 0, x, y, z, count, ux, uy, uz, &sc) == 0);
+		/* rounding of p, plus the accuracy the search reports for itself */
+		double tol = 0x1p-52 * sqrt(3.0) * pmax / S + 4.0 * sc.accuracy + 4e-5 * 5e-12;
+		ENSURE_MSG(sc.worst == planted, "near-cube edges: worst %d", sc.worst);
+		ENSURE_LE(fabs(sc.errorRel - 5e-12), tol, "near-cube edges: error_rel %.17g", sc.errorRel);
+		ENSURE_LE(sc.accuracy, 1e-16, "near-cube edges: accuracy");
+		printf("score near-cube edges: error_rel %.6e (planted 5e-12), %ld of %ld points searched by "
+			"Nelder-Mead, accuracy %.1e\n", sc.errorRel, sc.refined, sc.points, sc.accuracy);
 	}
 	refScore sc;
 	ENSURE(refSum_Score(NULL, NULL, 0, NULL, NULL, NULL, 0, NULL, NULL, NULL, NULL) == -1);
