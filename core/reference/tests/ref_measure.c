@@ -279,10 +279,15 @@ static void checkScore(void)
 			ENSURE_LE(fabs(sc.errorRel - 3e-9), 1e-15, "%dD hint %d: error_rel %.17g", dim, h, sc.errorRel);
 			ENSURE(sc.worstDist > 0.0);
 			ENSURE(sc.scale == S);
-			printf("score %dD hint %d: error_rel %.6e (planted 3e-9), %ld of %ld points searched, accuracy %.1e\n",
-				dim, h, sc.errorRel, sc.refined, sc.points, sc.accuracy);
+			printf("score %dD hint %d: error_rel %.6e (planted 3e-9), %ld of %ld points searched at 256 bits "
+				"(%ld by Nelder-Mead), accuracy %.1e\n", dim, h, sc.errorRel, sc.searched, sc.points, sc.refined,
+				sc.accuracy);
 			/* a smooth pair: Newton settles every point */
 			ENSURE(sc.refined == 0);
+			/* without parameters the double-precision bound (|phi| + 1e-9 S)
+			 * leaves only the planted point above the others (<= 1e-10 S) */
+			if (!h)
+				ENSURE_MSG(sc.searched == 1, "%dD: %ld points searched", dim, sc.searched);
 		}
 	}
 	/* Edges of a near-cube (eps 1e-6) summed with an ellipsoid: parameters

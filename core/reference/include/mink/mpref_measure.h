@@ -70,20 +70,23 @@ typedef struct refScore {
 	double worstDist; /* its signed distance (so the side is known) */
 	long points;      /* finite points scored */
 	long nonfinite;   /* points with a NaN or Inf coordinate (not scored) */
-	long refined;     /* points that needed the derivative-free search (a
-	                     kink of phi); the others converged under Newton or
-	                     were bounded below the maximum by |v| */
+	long searched;    /* points whose distance was searched at 256 bits */
+	long refined;     /* of those, the points that needed the
+	                     derivative-free search (a kink of phi) */
 } refScore;
 
 /* Score count points (x, y, z; z NULL in 2D). ux, uy, uz (optional, NULL for
  * none; uz NULL in 2D) are the surface parameters of body 1 the points belong
  * to: then each point starts from the exact normal of B1 at u (closed forms);
  * otherwise from a scan (sampled hulls, whose vertices are sums of two
- * boundary points and lie inside K). Every point gets the Newton stage
- * (typically 2 to 8 support evaluations); the points where it stops at a
- * kink keep their bound |d| <= |v| and get the derivative-free search in
- * decreasing order of that bound, until it falls below the largest distance
- * known (branch and bound: the maximum is still exact). Returns 0, or -1 on
+ * boundary points and lie inside K). With parameters every point gets the
+ * Newton stage (typically 2 to 8 support evaluations); the points where it
+ * stops at a kink keep their bound |d| <= |v| and get the derivative-free
+ * search in decreasing order of that bound, until it falls below the largest
+ * distance known. Without parameters the scan's phi in double bounds |d|
+ * to within 1e-9 S (+ 1e-6 |phi|) and only the points whose bound exceeds
+ * the largest distance known are searched at 256 bits. Both are branch and
+ * bound: the maximum is exact, the other points are only bounded. Returns 0, or -1 on
  * count < 0, NULL bodies or a NULL array that is needed (out is zeroed
  * first, worst = -1). */
 int refSum_Score(const refBody *b1, const refBody *b2, int plus,
