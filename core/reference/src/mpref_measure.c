@@ -233,6 +233,8 @@ static double coarseNormal(const refBody *b1, const refBody *b2, int plus, const
 	/* Pattern search: steps along +-T_k (and the diagonals in 3D),
 	 * halved when none improves. */
 	double step = dim == 2 ? 2.0 * MEAS_PI / count : 0.2;
+	int moves = 0; /* at most 40 moves per step size: phi can rise along a
+	                  ridge by steps too small to end the walk */
 	while (step > 1e-12) {
 		double T[2][3], cand[3], s[2];
 		int improved = 0;
@@ -252,8 +254,10 @@ static double coarseNormal(const refBody *b1, const refBody *b2, int plus, const
 				break;
 			}
 		}
-		if (!improved)
+		if (!improved || ++moves >= 40) {
 			step *= 0.5;
+			moves = 0;
+		}
 	}
 	return bestPhi;
 }
