@@ -32,7 +32,7 @@
 #define MEAS_PI 3.14159265358979323846
 #define FD_STEP 1e-30      /* step of the second differences, radian */
 #define NEWTON_ITERS 16
-#define NM_EVALS 300       /* Nelder-Mead budget per point */
+#define NM_EVALS 1000      /* Nelder-Mead budget per point */
 
 /* ---- double-precision helpers ------------------------------------------ */
 
