@@ -66,7 +66,7 @@ int main(int argc, char **argv)
 		mkSample3_Grid(n, ux, uy, uz);
 	static const char *formName[3] = { "closed-normal", "closed-gradient", "closed-paper" };
 	double worst[3] = { 0, 0, 0 };
-	char worstCell[3][256] = { "", "", "" };
+	char worstCell[3][3 * REF_SPEC_MAX] = { "", "", "" };
 	double tScore = 0.0, tCond = 0.0, tCore = 0.0, tBlind = 0.0, blindDiff = 0.0, tHull = 0.0;
 	long scored = 0, blindScored = 0, hullSearched = 0, refinedAll = 0, nonfiniteAll[3] = { 0, 0, 0 }, errors[3] = { 0, 0, 0 };
 	int cells = refGrid_Count(kind, dim);
