@@ -1,7 +1,7 @@
 /* test_sum.c - the batch closed forms against hand-worked cases, against
  * each other (Theorem 1 vs Theorem 2, vector vs scalar, contact vs plus),
  * and at the extremes of the parameter ranges (never NaN or Inf).
- * MPFR recomputations live in tests/reference. */
+ * MPFR recomputations live in core/reference/tests. */
 #include <stdlib.h>
 #include <string.h>
 

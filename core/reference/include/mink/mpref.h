@@ -26,8 +26,8 @@
  *    solved for the direction of u.
  *
  * A placed body is B = t + M B_canonical, M invertible. */
-#ifndef MINK_TEST_MPREF_H
-#define MINK_TEST_MPREF_H
+#ifndef MINK_MPREF_H
+#define MINK_MPREF_H
 
 #include <mpfr.h>
 

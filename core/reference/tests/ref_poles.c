@@ -23,7 +23,7 @@
  * is B1's parameter), B2 the superquadric, the contact space at normals
  * delta from B2's pole, MK_FORM_PAPER against MK_FORM_GRADIENT (surface
  * parameters, scalar kernel). */
-#include "mpref.h"
+#include <mink/mpref.h>
 #include "refcheck.h"
 #include "reftest.h"
 

@@ -16,7 +16,7 @@
 
 #include <mink/mink.h>
 
-#include "mpref.h"
+#include <mink/mpref.h>
 #include "reftest.h"
 
 /* One pair of bodies and the parameter vectors (structure of arrays; uz is

@@ -19,7 +19,7 @@
  * the semi-axis ratios used here (at most 1e4) once more, so 1e-50 relative
  * leaves more than 20 orders of magnitude of room while staying 30 orders
  * below anything a double can see. */
-#include "mpref.h"
+#include <mink/mpref.h>
 #include "reftest.h"
 
 #include <math.h>

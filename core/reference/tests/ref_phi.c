@@ -16,7 +16,7 @@
  * 32 u (2 + 1/(2 - e1) + 1/(2 - e2)). (In exact arithmetic the powers undo
  * each other, so the measured error is much smaller; the bound holds for any
  * order of evaluation.) */
-#include "mpref.h"
+#include <mink/mpref.h>
 #include "reftest.h"
 
 #include <mink/mink.h>

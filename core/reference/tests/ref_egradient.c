@@ -27,7 +27,7 @@
  * the floor on these draws lies above 1e-14: a target below it cannot be met
  * by any double output. It also prints the median, where the floor is at
  * rounding level. */
-#include "mpref.h"
+#include <mink/mpref.h>
 #include "refcheck.h"
 #include "reftest.h"
 

@@ -26,7 +26,7 @@
  * and u3 = K^(1/(2-e1)) sp(c m3, 1/(2-e1)). The common factor K^(1/(2-e1))
  * drops out when (r, u3) is scaled to unit length. 2D: u_i is along
  * sp(a_i m_i, 1/(2-eps)). */
-#include "mpref.h"
+#include <mink/mpref.h>
 
 #include <assert.h>
 
