@@ -15,7 +15,8 @@ static void help(FILE *fp)
 		"forms and the baselines of the paper's Table 1. Each runs with\n"
 		"  mink sum --method NAME --dim 2|3 --body1 SPEC --body2 SPEC --n N\n"
 		"and its output is checked with 'mink verify'.\n"
-		"  exact    its points lie on the smooth boundary (to rounding)\n"
+		"  exact    its points lie on the smooth boundary (to rounding); approx: within\n"
+		"           the accuracy the method states (mkMethod_Tolerance)\n"
 		"  sampled  N is samples per body (3D: an N x N grid per body) and the output\n"
 		"           is the vertices of the hull of all pairwise sums\n"
 		"With --csv, one row per method: name,dims,exact,sampled,n2,n3,summary,reference\n\n");
@@ -64,13 +65,13 @@ int mkCmd_Methods(int argc, char **argv)
 		return rc;
 	int count = mkRegistry_Count();
 	if (csv) printf("name,dims,exact,sampled,n2,n3,summary,reference\n");
-	else printf("%-16s %-6s %-5s %-7s %-16s %-11s %s\n", "name", "dims", "exact", "sampled", "n (2D)", "n (3D)", "summary");
+	else printf("%-19s %-6s %-6s %-7s %-16s %-11s %s\n", "name", "dims", "exact", "sampled", "n (2D)", "n (3D)", "summary");
 	for (int i = 0; i < count; ++i) {
 		const mkMethod *m = mkRegistry_At(i);
 		char r2[64], r3[64];
 		range(m, 2, r2, sizeof r2);
 		range(m, 3, r3, sizeof r3);
-		const char *exact = (m->flags & MK_METHOD_EXACT) ? "yes" : "no";
+		const char *exact = (m->flags & MK_METHOD_EXACT) ? "yes" : (m->flags & MK_METHOD_APPROX) ? "approx" : "no";
 		const char *sampled = (m->flags & MK_METHOD_SAMPLED) ? "yes" : "no";
 		if (csv) {
 			csv_field(m->name);
@@ -86,11 +87,11 @@ int mkCmd_Methods(int argc, char **argv)
 			csv_field(m->reference);
 			putchar('\n');
 		} else
-			printf("%-16s %-6s %-5s %-7s %-16s %-11s %s\n", m->name, dims(m), exact, sampled, r2, r3, m->summary);
+			printf("%-19s %-6s %-6s %-7s %-16s %-11s %s\n", m->name, dims(m), exact, sampled, r2, r3, m->summary);
 	}
 	if (!csv) {
 		printf("\nreferences:\n");
-		for (int i = 0; i < count; ++i) printf("  %-16s %s\n", mkRegistry_At(i)->name, mkRegistry_At(i)->reference);
+		for (int i = 0; i < count; ++i) printf("  %-19s %s\n", mkRegistry_At(i)->name, mkRegistry_At(i)->reference);
 	}
 	if (fflush(stdout)) {
 		fprintf(stderr, "mink methods: writing to standard output failed\n");

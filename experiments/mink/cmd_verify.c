@@ -1,6 +1,7 @@
 /* cmd_verify.c - `mink verify`: put a method's output (a CSV of points, as
  * `mink sum` writes it) through the referee and print the verdict. */
 #include <ctype.h>
+#include <float.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -254,6 +255,10 @@ int mkCmd_Verify(int argc, char **argv)
 	}
 
 	mkRefereeOptions opt = {(int)dense, 0, 0};
+	/* An approximate tier is held to the accuracy it states (relative to the
+	 * scale), not to the rounding allowance of the exact methods. */
+	if (m->flags & MK_METHOD_APPROX)
+		opt.tol_factor = mkMethod_Tolerance(m) / (MK_REFEREE_ULPS * DBL_EPSILON / 2);
 	mkVerdict v;
 	mkResult r = dim == 2 ? mkReferee2_Check(m, s1.body2, s2.body2, set, (int)n, &pts, &opt, &v)
 		: mkReferee3_Check(m, s1.body3, s2.body3, set, (int)n, &pts, &opt, &v);
