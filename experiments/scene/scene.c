@@ -1,0 +1,342 @@
+/* scene.c - the `scene` experiment (scene.h): the draws, Part A, Part B. */
+#define _POSIX_C_SOURCE 200809L
+#include "scene.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+const char *const mkSceneX_Columns[] = { "part", "dim", "obstacles", "boxes", "orientations", "tol", "mode",
+	"threads", "param", "points", "seconds", "cpu_seconds", "error", "target", "capped", "factor", "checksum",
+	"efficiency", "paper_s", "load", NULL };
+
+static int mkSceneXList_Parse(mkSceneXList *l, const char *text, double lo, double hi, int integer,
+	char *msg, size_t msglen)
+{
+	const char *p = text;
+	l->n = 0;
+	while (*p) {
+		char *end;
+		double v = strtod(p, &end);
+		if (end == p || (*end && *end != ',') || l->n == MK_SCENEX_MAX || !(v >= lo && v <= hi)
+			|| (integer && v != floor(v))) {
+			snprintf(msg, msglen, "is not allowed: must be up to %d comma-separated %s in [%g, %g]", MK_SCENEX_MAX,
+				integer ? "integers" : "numbers", lo, hi);
+			return -1;
+		}
+		l->v[l->n++] = v;
+		p = *end ? end + 1 : end;
+	}
+	if (l->n == 0) {
+		snprintf(msg, msglen, "is not allowed: must be up to %d comma-separated %s in [%g, %g]", MK_SCENEX_MAX,
+			integer ? "integers" : "numbers", lo, hi);
+		return -1;
+	}
+	return 0;
+}
+
+int mkSceneXList_ParseCounts(void *list, const char *text, char *msg, size_t msglen)
+{
+	return mkSceneXList_Parse(list, text, 1, 100000, 1, msg, msglen);
+}
+
+int mkSceneXList_ParseTols(void *list, const char *text, char *msg, size_t msglen)
+{
+	return mkSceneXList_Parse(list, text, 1e-6, 10, 0, msg, msglen);
+}
+
+/* ---- draws ---------------------------------------------------------------- */
+
+static double mkClampAxis(double a) { return a < MK_AXIS_MIN ? MK_AXIS_MIN : a; }
+static double mkClampEps(double e) { return e < MK_EPS_MIN ? MK_EPS_MIN : e > MK_EPS_MAX ? MK_EPS_MAX : e; }
+
+static mkMat3 mkPaperRotation3(mkRng *r)
+{
+	double q[4], n = 0.0;
+	for (int k = 0; k < 4; ++k) {
+		q[k] = MK_PI * mkRng_Unit(r);
+		n += q[k] * q[k];
+	}
+	n = sqrt(n);
+	return mkMat3_FromQuat(q[0] / n, q[1] / n, q[2] / n, q[3] / n);
+}
+
+static void mkDrawBody2(mkRng *r, mkSceneBody *b, int box)
+{
+	memset(b, 0, sizeof *b);
+	b->dim = 2;
+	b->spec.dim = 2;
+	b->spec.kind = MK_KIND_SUPERELLIPSE;
+	mkShape2 sh = { mkClampAxis(mkRng_Uniform(r, 0, 10)), mkClampAxis(mkRng_Uniform(r, 0, 10)),
+		mkClampEps(mkRng_Uniform(r, 0, 2)) };
+	mkVec2 t = { mkRng_Uniform(r, -200, 200), mkRng_Uniform(r, -200, 200) };
+	b->spec.body2 = mkBody2_Make(sh, mkMat2_Rotation(mkRng_Uniform(r, 0, MK_PI)), t);
+	b->kind = MK_SCENE_SMOOTH;
+	if (box) {
+		b->kind = MK_SCENE_BOX;
+		b->size[0] = mkRng_Uniform(r, 1, 20);
+		b->size[1] = mkRng_Uniform(r, 1, 20);
+	}
+}
+
+static void mkDrawBody3(mkRng *r, mkSceneBody *b, int box)
+{
+	memset(b, 0, sizeof *b);
+	b->dim = 3;
+	b->spec.dim = 3;
+	b->spec.kind = MK_KIND_SUPERQUADRIC;
+	mkShape3 sh = { mkClampAxis(mkRng_Uniform(r, 0, 10)), mkClampAxis(mkRng_Uniform(r, 0, 10)),
+		mkClampAxis(mkRng_Uniform(r, 0, 10)), mkClampEps(mkRng_Uniform(r, 0, 2)), mkClampEps(mkRng_Uniform(r, 0, 2)) };
+	mkVec3 t = { mkRng_Uniform(r, -200, 200), mkRng_Uniform(r, -200, 200), mkRng_Uniform(r, -200, 200) };
+	b->spec.body3 = mkBody3_Make(sh, mkPaperRotation3(r), t);
+	b->kind = MK_SCENE_SMOOTH;
+	if (box == 1) {
+		b->kind = MK_SCENE_BOX;
+		for (int k = 0; k < 3; ++k)
+			b->size[k] = mkRng_Uniform(r, 1, 20);
+	} else if (box == 2) {
+		b->kind = MK_SCENE_CYLINDER;
+		b->size[0] = mkRng_Uniform(r, 0.5, 10);
+		b->size[1] = mkRng_Uniform(r, 1, 20);
+	}
+}
+
+mkResult mkSceneX_Draw(mkScene *s, uint64_t seed, int dim, long obstacles, int boxes, long orientations,
+	const mkRotations *rot)
+{
+	memset(s, 0, sizeof *s);
+	mkRng r;
+	mkRng_Seed(&r, seed, ((uint64_t)dim << 56) | (uint64_t)obstacles);
+	s->dim = dim;
+	s->obstacles = calloc((size_t)obstacles, sizeof *s->obstacles);
+	if (dim == 2)
+		s->headings = malloc((size_t)orientations * sizeof *s->headings);
+	else
+		s->rotations = malloc((size_t)orientations * sizeof *s->rotations);
+	if (!s->obstacles || (dim == 2 ? !s->headings : !s->rotations) || (dim == 3 && (!rot || rot->count < orientations))) {
+		mkScene_Free(s);
+		return MK_ERR_MEMORY;
+	}
+	s->obstacle_count = (int)obstacles;
+	s->orientation_count = (int)orientations;
+	if (dim == 2) {
+		mkDrawBody2(&r, &s->robot, 0);
+		s->robot.spec.body2.shape = (mkShape2){ mkClampAxis(mkRng_Uniform(&r, 0, 5)),
+			mkClampAxis(mkRng_Uniform(&r, 0, 3)), mkClampEps(mkRng_Uniform(&r, 0, 1)) };
+		s->robot.spec.body2 = mkBody2_Make(s->robot.spec.body2.shape, mkMat2_Identity(), (mkVec2){ 0, 0 });
+		for (long k = 0; k < orientations; ++k)
+			s->headings[k] = MK_PI * (double)k / (double)orientations;
+	} else {
+		mkDrawBody3(&r, &s->robot, 0);
+		mkShape3 sh = { mkClampAxis(mkRng_Uniform(&r, 0, 5)), mkClampAxis(mkRng_Uniform(&r, 0, 5)),
+			mkClampAxis(mkRng_Uniform(&r, 0, 5)), mkClampEps(mkRng_Uniform(&r, 0, 2)), mkClampEps(mkRng_Uniform(&r, 0, 2)) };
+		s->robot.spec.body3 = mkBody3_Make(sh, mkMat3_Identity(), (mkVec3){ 0, 0, 0 });
+		memcpy(s->rotations, rot->R, (size_t)orientations * sizeof *s->rotations);
+	}
+	for (long i = 0; i < obstacles; ++i) {
+		int box = boxes && i % 10 == 9 ? (dim == 2 || (i / 10) % 2 == 0 ? 1 : 2) : 0;
+		if (dim == 2)
+			mkDrawBody2(&r, &s->obstacles[i], box);
+		else
+			mkDrawBody3(&r, &s->obstacles[i], box);
+	}
+	return MK_OK;
+}
+
+/* ---- Part A ----------------------------------------------------------------- */
+
+static double mkCpuNow(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* The 1-minute load average (other processes take cores from a wall
+ * time), or NaN. */
+static double mkSceneX_Load(void)
+{
+	char buf[64];
+	mkClock_LoadAverage(buf, sizeof buf);
+	char *end;
+	double v = strtod(buf, &end);
+	return end == buf ? NAN : v;
+}
+
+/* One whole-scene run of mkCSpace_Run, store = 0. */
+typedef struct mkSceneXRun {
+	int param;
+	double error, seconds, cpu, checksum;
+	long points;
+} mkSceneXRun;
+
+static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkSceneXRun *out, char *msg,
+	size_t msglen)
+{
+	mkCSpaceResult r;
+	double t0 = mkClock_Wall(), c0 = mkCpuNow();
+	mkResult rc = mkCSpace_Run(s, o, 0, s->orientation_count, &r, msg, msglen);
+	out->seconds = mkClock_Wall() - t0;
+	out->cpu = mkCpuNow() - c0;
+	if (rc != MK_OK)
+		return rc;
+	long nb = (long)r.obstacles * r.orientations * r.bounds;
+	out->param = o->uniform;
+	out->points = 0;
+	out->checksum = 0.0;
+	for (long b = 0; b < nb; ++b) {
+		out->points += r.count[b];
+		out->checksum += r.checksum[b];
+	}
+	out->error = mkCSpaceResult_MaxError(&r);
+	mkCSpaceResult_Free(&r);
+	return MK_OK;
+}
+
+static void mkSceneX_RowA(mkCsv *csv, const mkScene *s, double tol, const char *mode, int threads,
+	const mkSceneXRun *run, double target, int capped, double factor)
+{
+	long boxes = 0;
+	for (int i = 0; i < s->obstacle_count; ++i)
+		boxes += s->obstacles[i].kind != MK_SCENE_SMOOTH;
+	mkCsv_Str(csv, "A");
+	mkCsv_Int(csv, s->dim);
+	mkCsv_Int(csv, s->obstacle_count);
+	mkCsv_Int(csv, boxes);
+	mkCsv_Int(csv, s->orientation_count);
+	mkCsv_Double(csv, tol);
+	mkCsv_Str(csv, mode);
+	mkCsv_Int(csv, threads);
+	if (run->param >= 0) mkCsv_Int(csv, run->param); else mkCsv_Empty(csv);
+	mkCsv_Int(csv, run->points);
+	mkCsv_Double(csv, run->seconds);
+	mkCsv_Double(csv, run->cpu);
+	mkCsv_Double(csv, run->error);
+	mkCsv_Double(csv, target);
+	mkCsv_Int(csv, capped);
+	mkCsv_Double(csv, factor);
+	mkCsv_Double(csv, run->checksum);
+	mkCsv_Empty(csv);
+	mkCsv_Empty(csv);
+	mkCsv_Double(csv, mkSceneX_Load());
+	mkCsv_EndRow(csv);
+}
+
+/* The smallest uniform sampling whose worst-case error is at most target:
+ * 2D n normals, doubling from 4 then bisecting; 3D splits 0, 1, ... The
+ * search stops (capped) at 2D n = 65536, 3D 10 splits, or before a sampling
+ * whose points (n or 4^s 4 + 2 per boundary) would exceed `budget`: *best
+ * is then the last sampling tried, whose error is still above target. *best gets the run; returns 1 when
+ * capped. */
+static int mkSceneX_Smallest(const mkScene *s, mkCSpaceOptions *o, double target, long budget, mkSceneXRun *best,
+	mkResult *rc, char *msg, size_t msglen)
+{
+	mkSceneXRun cur;
+	o->mode = MK_CSPACE_UNIFORM;
+	*rc = MK_OK;
+	int three = s->dim == 3, lo = three ? -1 : 3, hi = three ? 0 : 4;
+	long nb = (long)s->obstacle_count * s->orientation_count;
+	for (;;) {
+		o->uniform = hi;
+		if ((*rc = mkSceneX_RunOnce(s, o, best, msg, msglen)) != MK_OK)
+			return 0;
+		if (best->error <= target)
+			break;
+		int next = three ? hi + 1 : 2 * hi;
+		double per = three ? 4.0 * pow(4.0, next) + 2.0 : (double)next;
+		if (next > (three ? 10 : 65536) || per * (double)nb > (double)budget)
+			return 1;
+		lo = hi;
+		hi = next;
+	}
+	while (hi - lo > 1) {
+		o->uniform = (lo + hi) / 2;
+		if ((*rc = mkSceneX_RunOnce(s, o, &cur, msg, msglen)) != MK_OK)
+			return 0;
+		if (cur.error <= target) {
+			hi = o->uniform;
+			*best = cur;
+		} else {
+			lo = o->uniform;
+		}
+	}
+	return 0;
+}
+
+mkResult mkSceneX_Compare(const mkScene *s, double tol, int threads, mkCsv *csv, char *msg, size_t msglen)
+{
+	mkCSpaceOptions o = mkCSpaceOptions_Default();
+	o.tol = tol;
+	o.threads = threads;
+	o.store = 0;
+	o.mode = MK_CSPACE_ADAPTIVE;
+	mkSceneXRun ad, un;
+	mkResult rc = mkSceneX_RunOnce(s, &o, &ad, msg, msglen);
+	if (rc != MK_OK)
+		return rc;
+	ad.param = -1;
+	int capped = mkSceneX_Smallest(s, &o, ad.error, 10 * ad.points, &un, &rc, msg, msglen);
+	if (rc != MK_OK)
+		return rc;
+	mkSceneX_RowA(csv, s, tol, "adaptive", threads, &ad, tol, 0, 1.0);
+	mkSceneX_RowA(csv, s, tol, "uniform", threads, &un, ad.error, capped, (double)un.points / (double)ad.points);
+	return MK_OK;
+}
+
+/* ---- Part B ----------------------------------------------------------------- */
+
+static void mkSceneX_RowB(mkCsv *csv, const mkScene *s, int points, int threads, const mkSceneXRun *run,
+	double efficiency, double load)
+{
+	const mkPaperTable2 *pub = mkPaper_FindTable2(s->dim, s->obstacle_count, points, s->orientation_count);
+	mkCsv_Str(csv, "B");
+	mkCsv_Int(csv, s->dim);
+	mkCsv_Int(csv, s->obstacle_count);
+	mkCsv_Int(csv, 0);
+	mkCsv_Int(csv, s->orientation_count);
+	mkCsv_Empty(csv);
+	mkCsv_Str(csv, "paper");
+	mkCsv_Int(csv, threads);
+	mkCsv_Int(csv, run->param);
+	mkCsv_Int(csv, points);
+	mkCsv_Double(csv, run->seconds);
+	mkCsv_Double(csv, run->cpu);
+	mkCsv_Empty(csv);
+	mkCsv_Empty(csv);
+	mkCsv_Int(csv, 0);
+	mkCsv_Empty(csv);
+	mkCsv_Double(csv, run->checksum);
+	if (threads == 2) mkCsv_Double(csv, efficiency); else mkCsv_Empty(csv);
+	if (pub) mkCsv_Double(csv, pub->total_s); else mkCsv_Empty(csv);
+	mkCsv_Double(csv, load);
+	mkCsv_EndRow(csv);
+}
+
+int mkSceneX_Table2(const mkScene *s, int points, int reps, mkCsv *csv, char *msg, size_t msglen)
+{
+	mkCSpaceOptions o = mkCSpaceOptions_Default();
+	o.mode = MK_CSPACE_PAPER;
+	o.store = 0;
+	o.uniform = s->dim == 2 ? points : (int)lround(sqrt((double)points));
+	for (int rep = 0; rep < reps; ++rep) {
+		mkSceneXRun run[2];
+		double load[2];
+		for (int th = 1; th <= 2; ++th) {
+			o.threads = th;
+			load[th - 1] = mkSceneX_Load();
+			if (mkSceneX_RunOnce(s, &o, &run[th - 1], msg, msglen) != MK_OK)
+				return -1;
+		}
+		if (run[0].checksum != run[1].checksum) {
+			snprintf(msg, msglen, "%dD, %d obstacles: the checksum on 1 thread (%.17g) differs from that on 2 "
+				"threads (%.17g)", s->dim, s->obstacle_count, run[0].checksum, run[1].checksum);
+			return -1;
+		}
+		double eff = run[0].seconds / (2.0 * run[1].seconds);
+		mkSceneX_RowB(csv, s, points, 1, &run[0], eff, load[0]);
+		mkSceneX_RowB(csv, s, points, 2, &run[1], eff, load[1]);
+	}
+	return 0;
+}
