@@ -34,6 +34,12 @@ int main(int argc, char **argv)
 	if (argc != 2)
 		return mk_summary("scene.summary");
 	mkDir = argv[1];
+	static const char *const files[] = { "scene.csv", "scene.csv.meta", "cobstacle.csv", "cobstacle.csv.meta" };
+	for (int i = 0; i < 4; ++i) { /* a previous run's files */
+		char path[MK_PATH_MAX];
+		snprintf(path, sizeof path, "%s/%s", mkDir, files[i]);
+		remove(path);
+	}
 	mkTally tally = { 0, 0, 0 };
 	char *md = mkSummary_Text(mkScene_Summary, mkDir, &tally);
 	mkSummary_Expect(md, "NOT REPRODUCED YET");
