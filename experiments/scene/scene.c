@@ -63,41 +63,31 @@ static mkMat3 mkPaperRotation3(mkRng *r)
 	return mkMat3_FromQuat(q[0] / n, q[1] / n, q[2] / n, q[3] / n);
 }
 
-static void mkDrawBody2(mkRng *r, mkSceneBody *b, int box)
+/* One body of dimension dim, numbers drawn in the order of scene.h: shape
+ * (a, b[, c], eps[, eps2]), centre, rotation, then a box's sides or a
+ * cylinder's radius and height (box: 0 smooth, 1 box, 2 cylinder). */
+static void mkDrawBody(mkRng *r, int dim, mkSceneBody *b, int box)
 {
 	memset(b, 0, sizeof *b);
-	b->dim = 2;
-	b->spec.dim = 2;
-	b->spec.kind = MK_KIND_SUPERELLIPSE;
-	mkShape2 sh = { mkClampAxis(mkRng_Uniform(r, 0, 10)), mkClampAxis(mkRng_Uniform(r, 0, 10)),
-		mkClampEps(mkRng_Uniform(r, 0, 2)) };
-	mkVec2 t = { mkRng_Uniform(r, -200, 200), mkRng_Uniform(r, -200, 200) };
-	b->spec.body2 = mkBody2_Make(sh, mkMat2_Rotation(mkRng_Uniform(r, 0, MK_PI)), t);
-	b->kind = MK_SCENE_SMOOTH;
-	if (box) {
-		b->kind = MK_SCENE_BOX;
-		b->size[0] = mkRng_Uniform(r, 1, 20);
-		b->size[1] = mkRng_Uniform(r, 1, 20);
-	}
-}
-
-static void mkDrawBody3(mkRng *r, mkSceneBody *b, int box)
-{
-	memset(b, 0, sizeof *b);
-	b->dim = 3;
-	b->spec.dim = 3;
-	b->spec.kind = MK_KIND_SUPERQUADRIC;
-	mkShape3 sh = { mkClampAxis(mkRng_Uniform(r, 0, 10)), mkClampAxis(mkRng_Uniform(r, 0, 10)),
-		mkClampAxis(mkRng_Uniform(r, 0, 10)), mkClampEps(mkRng_Uniform(r, 0, 2)), mkClampEps(mkRng_Uniform(r, 0, 2)) };
-	mkVec3 t = { mkRng_Uniform(r, -200, 200), mkRng_Uniform(r, -200, 200), mkRng_Uniform(r, -200, 200) };
-	b->spec.body3 = mkBody3_Make(sh, mkPaperRotation3(r), t);
-	b->kind = MK_SCENE_SMOOTH;
-	if (box == 1) {
-		b->kind = MK_SCENE_BOX;
-		for (int k = 0; k < 3; ++k)
-			b->size[k] = mkRng_Uniform(r, 1, 20);
-	} else if (box == 2) {
-		b->kind = MK_SCENE_CYLINDER;
+	b->dim = b->spec.dim = dim;
+	b->spec.kind = dim == 2 ? MK_KIND_SUPERELLIPSE : MK_KIND_SUPERQUADRIC;
+	double v[5], t[3];
+	for (int k = 0; k < dim; ++k)
+		v[k] = mkClampAxis(mkRng_Uniform(r, 0, 10));
+	for (int k = dim; k < 2 * dim - 1; ++k)
+		v[k] = mkClampEps(mkRng_Uniform(r, 0, 2));
+	for (int k = 0; k < dim; ++k)
+		t[k] = mkRng_Uniform(r, -200, 200);
+	if (dim == 2)
+		b->spec.body2 = mkBody2_Make((mkShape2){ v[0], v[1], v[2] }, mkMat2_Rotation(mkRng_Uniform(r, 0, MK_PI)),
+			(mkVec2){ t[0], t[1] });
+	else
+		b->spec.body3 = mkBody3_Make((mkShape3){ v[0], v[1], v[2], v[3], v[4] }, mkPaperRotation3(r),
+			(mkVec3){ t[0], t[1], t[2] });
+	b->kind = box == 0 ? MK_SCENE_SMOOTH : box == 1 ? MK_SCENE_BOX : MK_SCENE_CYLINDER;
+	for (int k = 0; box == 1 && k < dim; ++k)
+		b->size[k] = mkRng_Uniform(r, 1, 20);
+	if (box == 2) {
 		b->size[0] = mkRng_Uniform(r, 0.5, 10);
 		b->size[1] = mkRng_Uniform(r, 1, 20);
 	}
@@ -122,14 +112,14 @@ mkResult mkSceneX_Draw(mkScene *s, uint64_t seed, int dim, long obstacles, int b
 	s->obstacle_count = (int)obstacles;
 	s->orientation_count = (int)orientations;
 	if (dim == 2) {
-		mkDrawBody2(&r, &s->robot, 0);
+		mkDrawBody(&r, 2, &s->robot, 0);
 		s->robot.spec.body2.shape = (mkShape2){ mkClampAxis(mkRng_Uniform(&r, 0, 5)),
 			mkClampAxis(mkRng_Uniform(&r, 0, 3)), mkClampEps(mkRng_Uniform(&r, 0, 1)) };
 		s->robot.spec.body2 = mkBody2_Make(s->robot.spec.body2.shape, mkMat2_Identity(), (mkVec2){ 0, 0 });
 		for (long k = 0; k < orientations; ++k)
 			s->headings[k] = MK_PI * (double)k / (double)orientations;
 	} else {
-		mkDrawBody3(&r, &s->robot, 0);
+		mkDrawBody(&r, 3, &s->robot, 0);
 		mkShape3 sh = { mkClampAxis(mkRng_Uniform(&r, 0, 5)), mkClampAxis(mkRng_Uniform(&r, 0, 5)),
 			mkClampAxis(mkRng_Uniform(&r, 0, 5)), mkClampEps(mkRng_Uniform(&r, 0, 2)), mkClampEps(mkRng_Uniform(&r, 0, 2)) };
 		s->robot.spec.body3 = mkBody3_Make(sh, mkMat3_Identity(), (mkVec3){ 0, 0, 0 });
@@ -137,10 +127,7 @@ mkResult mkSceneX_Draw(mkScene *s, uint64_t seed, int dim, long obstacles, int b
 	}
 	for (long i = 0; i < obstacles; ++i) {
 		int box = boxes && i % 10 == 9 ? (dim == 2 || (i / 10) % 2 == 0 ? 1 : 2) : 0;
-		if (dim == 2)
-			mkDrawBody2(&r, &s->obstacles[i], box);
-		else
-			mkDrawBody3(&r, &s->obstacles[i], box);
+		mkDrawBody(&r, dim, &s->obstacles[i], box);
 	}
 	return MK_OK;
 }
@@ -152,17 +139,6 @@ static double mkCpuNow(void)
 	struct timespec t;
 	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* The 1-minute load average (other processes take cores from a wall
- * time), or NaN. */
-static double mkSceneX_Load(void)
-{
-	char buf[64];
-	mkClock_LoadAverage(buf, sizeof buf);
-	char *end;
-	double v = strtod(buf, &end);
-	return end == buf ? NAN : v;
 }
 
 /* One whole-scene run of mkCSpace_Run, store = 0. */
@@ -195,33 +171,43 @@ static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkS
 	return MK_OK;
 }
 
+/* The 1-minute load average (other processes take cores from a wall
+ * time), or NaN. */
+static double mkSceneX_Load(void)
+{
+	char buf[64];
+	mkClock_LoadAverage(buf, sizeof buf);
+	char *end;
+	double v = strtod(buf, &end);
+	return end == buf ? NAN : v;
+}
+
+/* One row: the part, the mode and the 18 numbers of the other columns in
+ * their order (NaN: empty). */
+static void mkSceneX_Row(mkCsv *csv, const char *part, const char *mode, const double v[18])
+{
+	mkCsv_Str(csv, part);
+	for (int k = 0; k < 18; ++k) {
+		if (k == 5)
+			mkCsv_Str(csv, mode);
+		if (isnan(v[k]))
+			mkCsv_Empty(csv);
+		else
+			mkCsv_Double(csv, v[k]);
+	}
+	mkCsv_EndRow(csv);
+}
+
 static void mkSceneX_RowA(mkCsv *csv, const mkScene *s, double tol, const char *mode, int threads,
 	const mkSceneXRun *run, double target, int capped, double factor)
 {
 	long boxes = 0;
 	for (int i = 0; i < s->obstacle_count; ++i)
 		boxes += s->obstacles[i].kind != MK_SCENE_SMOOTH;
-	mkCsv_Str(csv, "A");
-	mkCsv_Int(csv, s->dim);
-	mkCsv_Int(csv, s->obstacle_count);
-	mkCsv_Int(csv, boxes);
-	mkCsv_Int(csv, s->orientation_count);
-	mkCsv_Double(csv, tol);
-	mkCsv_Str(csv, mode);
-	mkCsv_Int(csv, threads);
-	if (run->param >= 0) mkCsv_Int(csv, run->param); else mkCsv_Empty(csv);
-	mkCsv_Int(csv, run->points);
-	mkCsv_Double(csv, run->seconds);
-	mkCsv_Double(csv, run->cpu);
-	mkCsv_Double(csv, run->error);
-	mkCsv_Double(csv, target);
-	mkCsv_Int(csv, capped);
-	mkCsv_Double(csv, factor);
-	mkCsv_Double(csv, run->checksum);
-	mkCsv_Empty(csv);
-	mkCsv_Empty(csv);
-	mkCsv_Double(csv, mkSceneX_Load());
-	mkCsv_EndRow(csv);
+	const double v[18] = { s->dim, s->obstacle_count, (double)boxes, s->orientation_count, tol, threads,
+		run->param >= 0 ? run->param : NAN, (double)run->points, run->seconds, run->cpu, run->error, target, capped,
+		factor, run->checksum, NAN, NAN, mkSceneX_Load() };
+	mkSceneX_Row(csv, "A", mode, v);
 }
 
 /* The smallest uniform sampling whose worst-case error is at most target:
@@ -291,27 +277,10 @@ static void mkSceneX_RowB(mkCsv *csv, const mkScene *s, int points, int threads,
 	double efficiency, double load)
 {
 	const mkPaperTable2 *pub = mkPaper_FindTable2(s->dim, s->obstacle_count, points, s->orientation_count);
-	mkCsv_Str(csv, "B");
-	mkCsv_Int(csv, s->dim);
-	mkCsv_Int(csv, s->obstacle_count);
-	mkCsv_Int(csv, 0);
-	mkCsv_Int(csv, s->orientation_count);
-	mkCsv_Empty(csv);
-	mkCsv_Str(csv, "paper");
-	mkCsv_Int(csv, threads);
-	mkCsv_Int(csv, run->param);
-	mkCsv_Int(csv, points);
-	mkCsv_Double(csv, run->seconds);
-	mkCsv_Double(csv, run->cpu);
-	mkCsv_Empty(csv);
-	mkCsv_Empty(csv);
-	mkCsv_Int(csv, 0);
-	mkCsv_Empty(csv);
-	mkCsv_Double(csv, run->checksum);
-	if (threads == 2) mkCsv_Double(csv, efficiency); else mkCsv_Empty(csv);
-	if (pub) mkCsv_Double(csv, pub->total_s); else mkCsv_Empty(csv);
-	mkCsv_Double(csv, load);
-	mkCsv_EndRow(csv);
+	const double v[18] = { s->dim, s->obstacle_count, 0, s->orientation_count, NAN, threads, run->param, points,
+		run->seconds, run->cpu, NAN, NAN, 0, NAN, run->checksum, threads == 2 ? efficiency : NAN,
+		pub ? pub->total_s : NAN, load };
+	mkSceneX_Row(csv, "B", "paper", v);
 }
 
 int mkSceneX_Table2(const mkScene *s, int points, int reps, mkCsv *csv, char *msg, size_t msglen)

@@ -22,7 +22,10 @@
  * is instead a box of sides ~ U(1,20) (3D: alternately a box and a cylinder
  * of radius ~ U(0.5,10), height ~ U(1,20)), placed the same way. The draws
  * are this file's own: the C-obstacle experiment's are static in
- * cobstacle.c. Stream of a scene: (dim << 56) | obstacles of the run's seed.
+ * cobstacle.c. Stream of a scene: (dim << 56) | obstacles of the run's seed;
+ * numbers in the order: a body for the robot drawn like an obstacle (its
+ * numbers then unused), the robot's shape, then each obstacle (shape,
+ * centre, rotation, then a box's sides or a cylinder's radius and height).
  * Orientations: 2D headings pi k / H, k < H; 3D the first ones of the SO(3)
  * file.
  *

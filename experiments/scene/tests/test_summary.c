@@ -14,17 +14,19 @@
 #include "ensure.h"
 #include "summary_text.h"
 
-static const char *mkDir;
-
-static void mkWrite(const char *name, const char *text)
+/* Replace (text != NULL) or remove (NULL) the files names[k] of dir. */
+static void mkFiles(const char *dir, const char *const *names, const char *const *texts, int count)
 {
-	char path[MK_PATH_MAX];
-	snprintf(path, sizeof path, "%s/%s", mkDir, name);
-	FILE *fp = fopen(path, "w");
-	ENSURE(fp != NULL);
-	if (fp) {
-		fputs(text, fp);
-		fclose(fp);
+	for (int k = 0; k < count; ++k) {
+		char path[MK_PATH_MAX];
+		snprintf(path, sizeof path, "%s/%s", dir, names[k]);
+		remove(path);
+		FILE *fp = texts[k] ? fopen(path, "w") : NULL;
+		ENSURE(!texts[k] || fp);
+		if (fp) {
+			fputs(texts[k], fp);
+			fclose(fp);
+		}
 	}
 }
 
@@ -33,15 +35,12 @@ int main(int argc, char **argv)
 	ENSURE(argc == 2);
 	if (argc != 2)
 		return mk_summary("scene.summary");
-	mkDir = argv[1];
+	const char *dir = argv[1];
 	static const char *const files[] = { "scene.csv", "scene.csv.meta", "cobstacle.csv", "cobstacle.csv.meta" };
-	for (int i = 0; i < 4; ++i) { /* a previous run's files */
-		char path[MK_PATH_MAX];
-		snprintf(path, sizeof path, "%s/%s", mkDir, files[i]);
-		remove(path);
-	}
+	const char *none[4] = { NULL, NULL, NULL, NULL };
+	mkFiles(dir, files, none, 4); /* a previous run's files */
 	mkTally tally = { 0, 0, 0 };
-	char *md = mkSummary_Text(mkScene_Summary, mkDir, &tally);
+	char *md = mkSummary_Text(mkScene_Summary, dir, &tally);
 	mkSummary_Expect(md, "NOT REPRODUCED YET");
 	free(md);
 	const char *head = "part,dim,obstacles,boxes,orientations,tol,mode,threads,param,points,seconds,cpu_seconds,error,"
@@ -54,11 +53,10 @@ int main(int argc, char **argv)
 		"A,3,10,1,2,0.1,uniform,2,3,4000,0.2,0.2,0.3,0.099,1,8,6,,,1.5\n"
 		"B,2,50,0,50,,paper,1,50,50,2,2,,,0,,7,,0.36,0.5\n"
 		"B,2,50,0,50,,paper,2,50,50,1.25,2.4,,,0,,7,0.8,0.36,0.5\n", head);
-	mkWrite("scene.csv", rows);
-	mkWrite("scene.csv.meta", "experiment: scene\nseed: 1\ntrials: 1\n");
-	mkWrite("cobstacle.csv", "dim,obstacles,orientations,total_s\n2,50,50,1.5\n2,50,50,2.5\n");
-	mkWrite("cobstacle.csv.meta", "experiment: cobstacle\nseed: 1\ntrials: 2\n");
-	md = mkSummary_Text(mkScene_Summary, mkDir, &tally);
+	const char *texts[4] = { rows, "experiment: scene\nseed: 1\ntrials: 1\n",
+		"dim,obstacles,orientations,total_s\n2,50,50,1.5\n2,50,50,2.5\n", "experiment: cobstacle\nseed: 1\ntrials: 2\n" };
+	mkFiles(dir, files, texts, 4);
+	md = mkSummary_Text(mkScene_Summary, dir, &tally);
 	mkSummary_Expect(md, "| 2 | 10 (1) | 4 | 0.01 | 1000 | 0.0099 | 4000 | 0.0098 | 4.0 |");
 	mkSummary_Expect(md, "| 3 | 10 (1) | 2 | 0.1 | 500 | 0.099 | 4000 | 0.3 | > 8.0 (capped) |");
 	mkSummary_Expect(md, "Smallest factor over the scenes: 4.0");
