@@ -70,6 +70,8 @@ int main(int argc, char **argv)
 		.threads = 2 };
 	const char *so3 = "experiments/data/so3_double_coset_3600.csv";
 	int skip_a = 0, skip_b = 0;
+	long fig9 = 0;
+	double fig9_tol = 0.5;
 	mkFlag flags[] = {
 		MK_FLAG_TEXT("--scenes2", "LIST", "Part A 2D obstacle counts (default 10,100,1000,10000)", &o.a2, mkSceneXList_ParseCounts),
 		MK_FLAG_TEXT("--scenes3", "LIST", "Part A 3D obstacle counts (default 10,100,1000)", &o.a3, mkSceneXList_ParseCounts),
@@ -83,6 +85,8 @@ int main(int argc, char **argv)
 		MK_FLAG_LONG("--table2-orientations", "K", "Part B 3D orientations: the first K of --so3 (default 3600)", &o.orient_b, 1, 3600),
 		MK_FLAG_LONG("--reps", "R", "Part B pairs of runs (1 thread, 2 threads) per level (default 1)", &o.reps, 1, 10),
 		MK_FLAG_PATH("--so3", "PATH", "3D orientations (default experiments/data/so3_double_coset_3600.csv)", &so3),
+		MK_FLAG_LONG("--fig9", "N", "write Fig. 9's geometry for a 2D scene of N obstacles, 0 = none (default 0)", &fig9, 0, 1000),
+		MK_FLAG_DOUBLE("--fig9-tol", "T", "its tolerance (default 0.5)", &fig9_tol, 1e-3, 10),
 		MK_FLAG_SWITCH("--skip-a", "leave Part A out", &skip_a),
 		MK_FLAG_SWITCH("--skip-b", "leave Part B out", &skip_b),
 	};
@@ -111,6 +115,7 @@ int main(int argc, char **argv)
 	int failed = mkRun_OpenCsv(&run, units) != 0;
 	failed = failed || (!skip_a && (mkPartA(&run, &o, 2, &o.a2) || mkPartA(&run, &o, 3, &o.a3)));
 	failed = failed || (!skip_b && (mkPartB(&run, &o, 2, &o.b2) || mkPartB(&run, &o, 3, &o.b3)));
+	failed = failed || (fig9 > 0 && mkSceneX_Figure9(&run, o.seed, fig9, fig9_tol) != 0);
 	mkRotations_Free(&rot);
 	return mkRun_End(&run, failed);
 }

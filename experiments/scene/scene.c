@@ -309,3 +309,50 @@ int mkSceneX_Table2(const mkScene *s, int points, int reps, mkCsv *csv, char *ms
 	}
 	return 0;
 }
+
+/* ---- Fig. 9 geometry ---------------------------------------------------------- */
+
+int mkSceneX_Figure9(mkRun *run, uint64_t seed, long obstacles, double tol)
+{
+	static const char *const cols[] = { "obstacle", "bound", "x", "y" };
+	mkScene s;
+	char msg[1024];
+	if (mkSceneX_Draw(&s, seed, 2, obstacles, 1, 1, NULL) != MK_OK) {
+		mkRun_Fail(run, "out of memory drawing the figure's scene");
+		return -1;
+	}
+	mkCSpaceOptions o = mkCSpaceOptions_Default();
+	o.tol = tol;
+	o.outer = 1;
+	mkCSpaceResult r;
+	mkResult rc = mkCSpace_Run(&s, &o, 0, 1, &r, msg, sizeof msg);
+	mkScene_Free(&s);
+	if (rc != MK_OK) {
+		mkRun_Fail(run, "figure: %s", msg);
+		return -1;
+	}
+	mkCsv csv;
+	if (mkRun_OpenSibling(run, "fig9-boundaries.csv", cols, MK_COUNT(cols), &csv) != 0) {
+		mkCSpaceResult_Free(&r);
+		return -1;
+	}
+	for (long b = 0; b < (long)r.obstacles * r.bounds; ++b) {
+		for (long p = r.first[b]; p <= r.first[b + 1]; ++p) { /* closed: the first point again */
+			long q = p < r.first[b + 1] ? p : r.first[b];
+			mkCsv_Int(&csv, b / r.bounds);
+			mkCsv_Str(&csv, b % r.bounds ? "outer" : "inner");
+			mkCsv_Double(&csv, r.x[q]);
+			mkCsv_Double(&csv, r.y[q]);
+			mkCsv_EndRow(&csv);
+		}
+		fputs("\n\n", csv.file.fp); /* gnuplot's separator of data blocks */
+	}
+	mkCSpaceResult_Free(&r);
+	mkMeta_Set(&run->meta, "content", "fig. 9: inner and outer C-obstacle boundaries of one 2D scene at heading 0");
+	mkMeta_SetDouble(&run->meta, "fig9_tol", tol);
+	int failed = mkCsv_Commit(&csv, &run->meta, msg, sizeof msg) != 0;
+	if (failed)
+		mkRun_Fail(run, "%s", msg);
+	mkMeta_Set(&run->meta, "content", "scene rows: Part A (adaptive, uniform) and Part B (Table 2, 1 and 2 threads)");
+	return failed ? -1 : 0;
+}

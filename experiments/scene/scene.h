@@ -80,6 +80,13 @@ mkResult mkSceneX_Compare(const mkScene *s, double tol, int threads, mkCsv *csv,
  * why: mkCSpace_Run failed, or the checksums of 1 and 2 threads differ. */
 int mkSceneX_Table2(const mkScene *s, int points, int reps, mkCsv *csv, char *msg, size_t msglen);
 
+/* Fig. 9 with inner and outer boundaries: the 2D scene of `obstacles`
+ * (drawn as in Part A) at heading 0, adaptive to tol with outer bounds,
+ * written beside the result as fig9-boundaries.csv (obstacle, bound, x, y;
+ * each boundary closed and ended by two blank lines, gnuplot's block
+ * separator). Returns 0, or -1 after printing why. */
+int mkSceneX_Figure9(mkRun *run, uint64_t seed, long obstacles, double tol);
+
 /* The section of results/tables.md: <dir>/scene.csv. */
 void mkScene_Summary(mkDoc *d, const char *dir, mkTally *tally);
 
