@@ -40,8 +40,8 @@ int mkCollision_ParseLimit(void *context, const char *text, char *msg, size_t ms
 	errno = 0;
 	long v = strtol(eq + 1, &end, 10);
 	if (!c || c->referee || end == eq + 1 || *end != '\0' || errno || v < 0) {
-		snprintf(msg, msglen, "is not allowed: must be NAME=N, NAME a collider other than the referee "
-			"(see --help), N an integer >= 0");
+		snprintf(msg, msglen, "is not allowed: must be NAME=N, NAME a collider of the registry other "
+			"than the referee (mink collide --help lists them), N an integer >= 0");
 		return -1;
 	}
 	if (o->nlimits >= MK_COLLISION_LIMITS) {

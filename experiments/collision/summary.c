@@ -155,9 +155,14 @@ static void mkEntryStat_Row(mkDoc *d, mkEntryStat *st, const char *pair, const c
 	char c[8][MK_CELL_MAX];
 	snprintf(c[0], MK_CELL_MAX, "%ld", st->n);
 	snprintf(c[1], MK_CELL_MAX, "%ld", st->skipped);
-	snprintf(c[2], MK_CELL_MAX, "%.3g", st->n ? st->sum / (double)st->n : NAN);
-	snprintf(c[3], MK_CELL_MAX, "%.3g", mkQuantile(st->us, st->n, 0.5));
-	snprintf(c[4], MK_CELL_MAX, "%.4f", st->n ? 1.0 - (double)st->failed / (double)st->n : NAN);
+	if (st->n) {
+		snprintf(c[2], MK_CELL_MAX, "%.3g", st->sum / (double)st->n);
+		snprintf(c[3], MK_CELL_MAX, "%.3g", mkQuantile(st->us, st->n, 0.5));
+		snprintf(c[4], MK_CELL_MAX, "%.4f", 1.0 - (double)st->failed / (double)st->n);
+	} else {
+		for (int i = 2; i <= 4; ++i)
+			snprintf(c[i], MK_CELL_MAX, "—");
+	}
 	if (st->nd)
 		snprintf(c[5], MK_CELL_MAX, "%.4f (%ld/%ld)", (double)st->agreed / (double)st->nd, st->agreed, st->nd);
 	else
