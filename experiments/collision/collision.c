@@ -78,7 +78,9 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 			snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s", buf[0] ? "," : "", mkCollision_PairNames[k]);
 	mkMeta_Set(meta, "pairs", buf);
 	mkMeta_Set(meta, "rotation_draw", mkRotDraw_Names[o->rotations]);
-	mkMeta_SetDouble(meta, "referee_margin", o->margin);
+	char margin[32];
+	snprintf(margin, sizeof margin, "%g", o->margin);
+	mkMeta_Set(meta, "referee_margin", margin);
 	mkMeta_Set(meta, "referee_margin_unit", "scale (mkCollide3_Scale of the pair)");
 	mkMeta_Set(meta, "rng", "xoshiro256** seeded by splitmix64, one stream per trial: (kind << 32) | trial, "
 		"kind 0 ellipsoids 1 superquadrics 2 near 3 deep");
