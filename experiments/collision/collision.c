@@ -21,7 +21,7 @@ static const double mkNearSteps[12] = { 1e-1, -1e-1, 1e-2, -1e-2, 1e-3, -1e-3, 1
 /* The near kind's construction stops when the referee's distance is within
  * this fraction of the target. */
 #define MK_NEAR_REL 1e-3
-#define MK_NEAR_STEPS 6
+#define MK_NEAR_STEPS 20
 
 int mkCollision_ParseLimit(void *context, const char *text, char *msg, size_t msglen)
 {
@@ -87,8 +87,8 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 	mkMeta_Set(meta, "draw", "B1 a,b,c~U(1,11) c~U(-5,5)^3; B2 a,b,c~U(1,6) c~U(5,15)^3; eps1,eps2~U(0.1,1.9) "
 		"(ellipsoids 1,1); near and deep: ellipsoids on even trials, superquadrics on odd ones");
 	mkMeta_Set(meta, "near", "B2 moved along the centre line to touching (minksum-ray's directional gap), then "
-		"by Newton steps on the referee's signed distance to s*size within 1e-3 relative, s = "
-		"+-1e-1..+-1e-6 by (trial/2)%12, size = mkCollide3_Scale of the touching pair");
+		"by secant steps on the referee's signed distance to s*size within 1e-3 relative, s = "
+		"+-1e-1..+-1e-6 by (trial/2)%12, size = the smallest semi-axis of the two bodies");
 	mkMeta_Set(meta, "deep", "centres U(-1,1)^3 and U(-2,2)^3");
 	mkMeta_Set(meta, "error", "|distance - referee_distance| / mkCollide3_Scale of the pair");
 	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread");
@@ -141,10 +141,23 @@ static int mkDrawBody(mkRng *r, double amax, double clo, double chi, int ellipso
 	return mkBody3_IsValid(*body, "body", NULL, 0);
 }
 
+/* The size a near pair's separation is measured in: the smallest semi-axis
+ * of the two bodies, so that every separation asked for, overlaps of a
+ * tenth of it included, exists along the centre line. */
+static double mkNearSize(mkBody3 b1, mkBody3 b2)
+{
+	double s = b1.shape.a;
+	double v[5] = { b1.shape.b, b1.shape.c, b2.shape.a, b2.shape.b, b2.shape.c };
+	for (int i = 0; i < 5; ++i)
+		s = v[i] < s ? v[i] : s;
+	return s;
+}
+
 /* Move B2 along the centre line u so that the referee's signed distance is
  * target = s * size: to touching by minksum-ray's directional gap, then
- * Newton steps on the referee's value (slope <n, u>). Returns 0, or -1 when
- * the construction does not reach the target within MK_NEAR_REL. */
+ * secant steps on the referee's value (first slope <n, u> of its normal).
+ * Returns 0, or -1 when the construction does not reach the target within
+ * MK_NEAR_REL. */
 static int mkPlaceNear(const mkCollider *referee, mkBody3 b1, mkBody3 *b2, double s, mkColliderScratch *scratch)
 {
 	mkCollision3 c;
@@ -152,19 +165,24 @@ static int mkPlaceNear(const mkCollider *referee, mkBody3 b1, mkBody3 *b2, doubl
 	if (mkCollide3_Ray(b1, *b2, &c) != MK_OK || !isfinite(c.directional))
 		return -1;
 	b2->t = mkVec3_Sub(b2->t, mkVec3_Scale(u, c.directional));
-	double target = s * mkCollide3_Scale(b1, *b2);
-	double slope = 1.0;
-	b2->t = mkVec3_Add(b2->t, mkVec3_Scale(u, target));
+	double target = s * mkNearSize(b1, *b2);
+	double slope = 1.0, prev_t = NAN, prev_miss = NAN, t = target;
+	mkVec3 base = b2->t;
 	for (int k = 0; k < MK_NEAR_STEPS; ++k) {
+		b2->t = mkVec3_Add(base, mkVec3_Scale(u, t));
 		if (mkCollider_Run(referee, b1, *b2, scratch, &c) != MK_OK || !isfinite(c.distance))
 			return -1;
 		double miss = c.distance - target;
 		if (fabs(miss) <= MK_NEAR_REL * fabs(target))
 			return 0;
 		double d = mkVec3_Dot(c.normal, u);
+		if (!isnan(prev_t) && miss != prev_miss)
+			d = (miss - prev_miss) / (t - prev_t);
 		if (isfinite(d) && d > 0.05)
 			slope = d;
-		b2->t = mkVec3_Sub(b2->t, mkVec3_Scale(u, miss / slope));
+		prev_t = t;
+		prev_miss = miss;
+		t -= miss / slope;
 	}
 	return -1;
 }

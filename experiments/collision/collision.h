@@ -20,7 +20,7 @@
  *                   superquadrics on odd ones) with B2 moved along the
  *                   centre line until the referee's signed distance is
  *                   s * size, s = +-1e-1 ... +-1e-6 (cycling with trial / 2),
- *                   size = mkCollide3_Scale of the touching pair;
+ *                   size = the smallest semi-axis of the two bodies;
  *  3 deep           the same bodies with centres U(-1,1)^3 and U(-2,2)^3.
  * Kinds 0 and 1 keep the streams of the earlier experiment, so their pairs
  * are the same. */
