@@ -1,13 +1,17 @@
-# collision.gp - collision detection (paper Sec. 7.2, Table 3): the time per
-# query of every algorithm on the two kinds of pairs, measured here beside
-# the paper's published means.
+# collision.gp - collision and distance (paper Sec. 7.2, Table 3): the error
+# of every registry entry's signed distance against the referee's, against
+# its time per query, one panel per pair kind (ellipsoids, superquadrics,
+# near-touching, deep overlaps), log-log.
 #
-# Reads only the collision driver's rows <results> (one per trial and
-# algorithm; column `seconds` is the query alone). Per pair kind and
-# algorithm it draws the mean (filled circle, labelled), the median (open
-# circle) and the interquartile range of the measured times, and the
-# published mean as a grey bar. The published means are Table 3 of Ruan &
-# Chirikjian (2022), MATLAB on a 2.8 GHz Xeon; ASC was run on ellipsoids only.
+# Reads only the collision driver's rows <results> (one per trial and entry).
+# Per pair kind and entry that returns a distance (rows with an `error`):
+# the point is at the median time and the median error over those rows, the
+# bar reaches up to the largest error. Errors are |distance - referee| /
+# scale; an exact 0 is drawn at 1e-17. Entries that give a status only
+# (no distance: the LM queries, minksum-ray, GJK, MPR, ASC, ...) have no
+# error and are not drawn: their times and agreement are in the tables.
+# The entries are those of the data (no list of names lives here). The
+# paper published times only (Table 3, no errors), so it has no point here.
 # Output: <outdir>/collision.pdf and <outdir>/collision.png.
 #
 #   gnuplot plots/collision.gp                       (results/collision.csv -> plots/)
@@ -21,104 +25,94 @@ if (!exists("outdir")) outdir = 'plots'
 set datafile separator comma
 set datafile columnheaders
 
-nalg = 6
-array alg[nalg] = ["GJK", "ASC", "Implicit", "Common Normal", "MinkSum (Ray)", "MinkSum (Normal)"]
-array pair[2] = ["ellipsoids", "superquadrics"]
-# Which algorithms are iterative solvers (a success column), and which run on
-# superquadrics (ASC is for ellipsoids only).
-array solver[nalg] = [0, 0, 1, 1, 1, 1]
-array onsq[nalg] = [1, 0, 1, 1, 1, 1]
-# Published mean times (ms), paper Table 3; NaN where the paper has none.
-array pub1[nalg] = [18.4, 0.133, 27.0, 4.1, 3.5, 3.5]
-array pub2[nalg] = [18.3, NaN, 42.3, 7.1, 5.2, 5.1]
+# The entries of the data, in order of first appearance, into mnames[1..nmeth]
+# (names must not contain "|").
+found = "|"
+add_method(s) = strstrt(found, "|" . s . "|") > 0 ? 0 : (found = found . s . "|", 1)
+stats results using (add_method(strcol("algorithm"))) nooutput
+nmeth = 0
+rest = found[2:]
+do for [i = 1:strlen(found)] {
+	if (strlen(rest) > 0) { nmeth = nmeth + 1; rest = rest[strstrt(rest, "|") + 1:] }
+}
+array mnames[nmeth > 0 ? nmeth : 1]
+rest = found[2:]
+do for [i = 1:nmeth] {
+	mnames[i] = rest[1:strstrt(rest, "|") - 1]
+	rest = rest[strstrt(rest, "|") + 1:]
+}
+# Colours and point types cycle through 16 (the registry has 14 entries).
+color_of(m) = word("#1b6ca8 #d1495b #edae49 #00798c #6a994e #8e7dbe #5fa8d3 #3d405b #f4845f #2a9d8f #9c6644 #e07a5f #81b29a #000000 #b5179e #7209b7", (m - 1) % 16 + 1)
+pt_of(m) = word("7 5 9 11 13 15 7 5 9 11 13 15 7 5 9 11", (m - 1) % 16 + 1) + 0 + ((m - 1) % 16 >= 6 ? -1 : 0)
 
-# Per pair kind p and algorithm a: queries, mean, median, lower and upper
-# quartile of the time in ms, and the success rate of the solvers.
-ms(p, a) = (strcol("pair") eq pair[p] && strcol("algorithm") eq alg[a]) ? 1e3 * column("seconds") : NaN
-ok(p, a) = (strcol("pair") eq pair[p] && strcol("algorithm") eq alg[a] && strcol("success") ne "") ? column("success") : NaN
-array cnt[2 * nalg]; array mean[2 * nalg]; array med[2 * nalg]; array lo[2 * nalg]; array hi[2 * nalg]
-array succ[2 * nalg]
-do for [p = 1:2] {
-	do for [a = 1:nalg] {
-		i = (p - 1) * nalg + a
-		cnt[i] = 0; mean[i] = NaN; med[i] = NaN; lo[i] = NaN; hi[i] = NaN; succ[i] = NaN
-		undefine STATS_*
-		# stats leaves STATS_records undefined when no row matches (a quick
-		# run of one pair kind only).
-		if (p == 1 || onsq[a]) { stats results using (ms(p, a)) nooutput }
-		if (exists("STATS_records") && STATS_records > 0) {
-			cnt[i] = STATS_records; mean[i] = STATS_mean; med[i] = STATS_median
-			lo[i] = STATS_lo_quartile; hi[i] = STATS_up_quartile
-			undefine STATS_*
-			if (solver[a]) { stats results using (ok(p, a)) nooutput }
-			if (exists("STATS_records") && STATS_records > 0) { succ[i] = STATS_mean }
+array kind[4] = ["ellipsoids", "superquadrics", "near", "deep"]
+array ktitle[4] = ["ellipsoids (the paper draw)", "superquadrics (the paper draw)", \
+	"near-touching (±1e-1 … ±1e-6 of the size)", "deep overlaps"]
+
+# Which (kind, entry) cells have rows with an error: one pass collects their
+# keys "|k:m|" into `cells`, so that stats runs only where there are data.
+kidx(s) = s eq "ellipsoids" ? 1 : s eq "superquadrics" ? 2 : s eq "near" ? 3 : s eq "deep" ? 4 : 0
+midx(s) = sum [i = 1:nmeth] (mnames[i] eq s ? i : 0)
+cells = "|"
+add_cell(c) = strstrt(cells, c) > 0 ? 0 : (cells = cells . c[2:], 1)
+stats results using (strcol("error") ne "" ? add_cell(sprintf("|%d:%d|", kidx(strcol("pair")), midx(strcol("algorithm")))) : NaN) nooutput
+
+# Per such cell: the median time (µs) and the median and largest error over
+# its rows with an error; one line "k m time median max" each into $P.
+sel(k, m) = strcol("pair") eq kind[k] && strcol("algorithm") eq mnames[m] && strcol("error") ne ""
+floor_err(e) = e > 1e-17 ? e : 1e-17
+nrows = 0
+set print $P
+do for [k = 1:4] {
+	do for [m = 1:nmeth] {
+		if (strstrt(cells, sprintf("|%d:%d|", k, m)) > 0) {
+			stats results using (sel(k, m) ? 1e6 * column("seconds") : NaN) nooutput name "T"
+			stats results using (sel(k, m) ? floor_err(column("error")) : NaN) nooutput name "E"
+			print sprintf("%d %d %.6g %.6g %.6g", k, m, T_median, E_median, E_max)
+			nrows = nrows + 1
 		}
 	}
 }
-
-stats results using (ms(1, 1)) nooutput
-ntrials = STATS_records
+unset print
+stats results using (strcol("pair") eq "ellipsoids" && strcol("algorithm") eq mnames[1] ? 1 : NaN) nooutput
+ntrials = exists("STATS_records") ? STATS_records : 0
 
 set print "-"
-print sprintf("collision.gp: %s, %d trials per pair kind", results, ntrials)
-set print
-
-panel(p) = sprintf("\
-set title '%s' font ',11'; \
-set xrange [0.4:%d.6]; \
-set xtics () rotate by -25 font ',9'; \
-do for [a = 1:nalg] { set xtics add (alg[a] a) }; \
-do for [a = 1:nalg] { i = (%d - 1) * nalg + a; if (cnt[i] > 0) { \
-	set label 100 + a sprintf('%%.3g ms', mean[i]) at a + 0.12, mean[i] left front font ',8' tc rgb '#d1495b' } }; \
-do for [a = 1:nalg] { v = %d == 1 ? pub1[a] : pub2[a]; if (v == v) { \
-	set label 300 + a sprintf('%%.3g ms', v) at a, v * 1.6 center front font ',8' tc rgb '#555555' } }; \
-if (%d == 2) { set label 400 'ellipsoids only' at 2, 3e-4 center front font ',8' tc rgb '#555555' }; \
-do for [a = 1:nalg] { i = (%d - 1) * nalg + a; if (cnt[i] > 0 && succ[i] == succ[i]) { \
-	set label 200 + a sprintf('success %%.1f%%%%', 100 * succ[i]) at a, 3e-4 center front font ',7' tc rgb '#555555' } }; \
-plot $pubdata using 1:(column(%d + 1)) with boxes lc rgb '#bbbbbb' title 'published mean (MATLAB)', \
-     $meas using 1:(column(%d * 5 - 2)):(column(%d * 5)):(column(%d * 5 + 1)) with yerrorbars pt -1 lw 1.2 lc rgb '#d1495b' title 'interquartile range here', \
-     $meas using 1:(column(%d * 5 - 2)) with points pt 7 ps 1.2 lc rgb '#d1495b' title 'mean here (one thread)', \
-     $meas using 1:(column(%d * 5 - 1)) with points pt 6 ps 1.4 lc rgb '#1b6ca8' title 'median here'; \
-unset label", pair[p], nalg, p, p, p, p, p, p, p, p, p, p)
-
-# Datablocks the panels plot: published means per algorithm, and the
-# measured figures: column 1 the algorithm, then five columns per pair kind p
-# (queries, mean, median, lower and upper quartile) from column 5p - 3 on.
-set print $pubdata
-do for [a = 1:nalg] { print sprintf("%d %g %g", a, pub1[a], pub2[a]) }
-set print
-set print $meas
-do for [a = 1:nalg] {
-	s = sprintf("%d", a)
-	do for [p = 1:2] {
-		i = (p - 1) * nalg + a
-		s = s . sprintf(" %d %g %g %g %g", cnt[i], cnt[i] > 0 ? mean[i] : NaN, cnt[i] > 0 ? med[i] : NaN, \
-			cnt[i] > 0 ? lo[i] : NaN, cnt[i] > 0 ? hi[i] : NaN)
-	}
-	print s
-}
+print sprintf("collision.gp: %s, %d entries, %d trials per pair kind, %d points", results, nmeth, ntrials, nrows)
 set print
 unset datafile columnheaders
 set datafile separator whitespace
 
+# The entries with a point in panel k: list_<k> = "m m ...".
+do for [k = 1:4] { eval sprintf("list_%d = ''", k) }
+do for [i = 1:|$P|] {
+	eval sprintf("list_%s = list_%s . ' %s'", word($P[i], 1), word($P[i], 1), word($P[i], 2))
+}
+list(k) = value(sprintf("list_%d", k))
+
+# A panel with no point (a run without that pair kind) says so.
+panel(k) = sprintf("set title '%s' noenhanced font ',11'; \
+if (words(list(%d)) == 0) { set label 1 'no entry returned a distance here' at graph 0.5, 0.5 center; plot NaN notitle; unset label 1 } \
+else { plot for [j = 1:words(list(%d))] $P using ($1 == %d && $2 == int(word(list(%d), j)) ? $3 : NaN):4:4:5 \
+	with yerrorbars pt pt_of(int(word(list(%d), j))) ps 1.2 lc rgb color_of(int(word(list(%d), j))) \
+	title mnames[int(word(list(%d), j))] noenhanced }", ktitle[k], k, k, k, k, k, k, k)
+
 figure = "\
-set multiplot layout 1, 2 title sprintf('Collision detection (paper Sec. 7.2, Table 3): time per query, %d random pose pairs of each kind (%s)', ntrials, results) font ',12'; \
-set logscale y; set yrange [1e-4:1e3]; set format y '10^{%L}'; \
-set ylabel 'time per query (ms)'; \
-set grid ytics lc rgb '#dddddd'; \
-set key top left font ',9' box opaque; \
-set style fill solid 1.0 border lc rgb '#666666'; set boxwidth 0.6; \
-eval panel(1); \
-unset key; unset ylabel; \
-eval panel(2); \
+set multiplot layout 2, 2 title sprintf('Collision and distance: error against the referee vs time per query (median; bar to the largest error), %d pairs per kind', ntrials) noenhanced font ',12'; \
+set logscale xy; set xrange [0.1:1e6]; set yrange [1e-18:10]; \
+set format x '10^{%L}'; set format y '10^{%L}'; \
+set xlabel 'time per query (µs, median)'; set ylabel '|distance − referee| / scale'; \
+set grid xtics ytics lc rgb '#dddddd'; \
+set key bottom right font ',8' box opaque; \
+eval panel(1); eval panel(2); eval panel(3); eval panel(4); \
 unset multiplot"
 
-set terminal pdfcairo enhanced color size 13in,6in font "Helvetica,10"
+set terminal pdfcairo enhanced color size 13in,10in font "Helvetica,10"
 set output outdir . '/collision.pdf'
 eval figure
 set output
 
-set terminal pngcairo enhanced color size 1600,740 font "Helvetica,11"
+set terminal pngcairo enhanced color size 1600,1200 font "Helvetica,11"
 set output outdir . '/collision.png'
 eval figure
 set output

@@ -1,55 +1,125 @@
-/* collision.c - the collision-detection benchmark: draws, the timed
- * queries, rows and sidecar (what is measured is in collision.h), and its
- * section of the tables. */
+/* collision.c - the collision and distance benchmark on the collider
+ * registry: draws, the referee, the timed runs, rows and sidecar (what is
+ * measured is in collision.h). The summary is in summary.c. */
 #include "collision.h"
 
-#include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define MK_GJK_GRID 10
-#define MK_REFEREE_GRID 24
-#define MK_CELL_MAX 256
-
 const char *const mkCollision_Columns[] = {
-	"pair", "trial", "algorithm", "seconds", "collide", "residual", "iterations", "success",
-	"referee_min_g", "agrees", NULL
+	"pair", "trial", "algorithm", "seconds", "status", "distance", "referee_distance", "error", "agrees",
+	"success", "iterations", "limited", NULL
 };
-const char *const mkCollision_PairNames[2] = { "ellipsoids", "superquadrics" };
+const char *const mkCollision_PairNames[MK_COLLISION_KINDS] = { "ellipsoids", "superquadrics", "near", "deep" };
 
-enum { MK_ALG_GJK, MK_ALG_ASC, MK_ALG_IMPLICIT, MK_ALG_COMMON, MK_ALG_RAY, MK_ALG_NORMAL, MK_ALG_COUNT };
-static const char *const mkAlgNames[MK_ALG_COUNT] = {
-	"GJK", "ASC", "Implicit", "Common Normal", "MinkSum (Ray)", "MinkSum (Normal)"
-};
+/* The near kind's separations, in units of the size, by (trial / 2) % 12. */
+static const double mkNearSteps[12] = { 1e-1, -1e-1, 1e-2, -1e-2, 1e-3, -1e-3, 1e-4, -1e-4, 1e-5, -1e-5,
+	1e-6, -1e-6 };
+/* The near kind's construction stops when the referee's distance is within
+ * this fraction of the target. */
+#define MK_NEAR_REL 1e-3
+#define MK_NEAR_STEPS 20
 
-/* Ipopt's tolerance on its scaled NLP error: the paper's success level. */
-#define MK_IMPLICIT_TOL MK_COLLIDE_SUCCESS_RESIDUAL
-
-void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, int ellipsoids, int superquadrics)
+int mkCollision_ParseLimit(void *context, const char *text, char *msg, size_t msglen)
 {
-	mkMeta_Set(meta, "pairs", ellipsoids && superquadrics ? "ellipsoids,superquadrics"
-		: ellipsoids ? "ellipsoids" : "superquadrics");
+	mkCollisionOptions *o = context;
+	const char *eq = strchr(text, '=');
+	char name[64];
+	size_t n = eq ? (size_t)(eq - text) : 0;
+	if (!eq || n == 0 || n >= sizeof name) {
+		snprintf(msg, msglen, "is not allowed: must be NAME=N, NAME a collider, N a trial count");
+		return -1;
+	}
+	memcpy(name, text, n);
+	name[n] = '\0';
+	const mkCollider *c = mkColliders_Find(name);
+	char *end = NULL;
+	errno = 0;
+	long v = strtol(eq + 1, &end, 10);
+	if (!c || c->referee || end == eq + 1 || *end != '\0' || errno || v < 0) {
+		snprintf(msg, msglen, "is not allowed: must be NAME=N, NAME a collider of the registry other "
+			"than the referee (mink collide --help lists them), N an integer >= 0");
+		return -1;
+	}
+	if (o->nlimits >= MK_COLLISION_LIMITS) {
+		snprintf(msg, msglen, "is not allowed: at most %d limits", MK_COLLISION_LIMITS);
+		return -1;
+	}
+	o->limit_entry[o->nlimits] = c;
+	o->limit_trials[o->nlimits++] = v;
+	return 0;
+}
+
+/* The trial limit of entry c (-1: none). */
+static long mkLimitOf(const mkCollisionOptions *o, const mkCollider *c)
+{
+	for (int i = 0; i < o->nlimits; ++i)
+		if (o->limit_entry[i] == c)
+			return o->limit_trials[i];
+	return -1;
+}
+
+static const mkCollider *mkReferee(void)
+{
+	for (int i = 0; i < mkColliders_Count(); ++i)
+		if (mkColliders_At(i)->referee)
+			return mkColliders_At(i);
+	return NULL;
+}
+
+void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK_COLLISION_KINDS])
+{
+	char buf[512] = "";
+	for (int k = 0; k < MK_COLLISION_KINDS; ++k)
+		if (on[k])
+			snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s", buf[0] ? "," : "", mkCollision_PairNames[k]);
+	mkMeta_Set(meta, "pairs", buf);
 	mkMeta_Set(meta, "rotation_draw", mkRotDraw_Names[o->rotations]);
-	mkMeta_SetDouble(meta, "referee_margin", o->margin);
-	mkMeta_SetInt(meta, "referee_grid", MK_REFEREE_GRID);
-	mkMeta_Set(meta, "rng", "xoshiro256** seeded by splitmix64, one stream per trial: (pair << 32) | trial, pair 0 ellipsoids 1 superquadrics");
-	mkMeta_Set(meta, "draw", "B1 a,b,c~U(1,11) c~U(-5,5)^3; B2 a,b,c~U(1,6) c~U(5,15)^3; eps1,eps2~U(0.1,1.9) (ellipsoids 1,1)");
-	mkMeta_SetInt(meta, "lm_max_iterations", MK_COLLIDE_LM_MAX_ITER);
-	static const char *const fixed[][2] = {
-		{ "lm", "cminpack lmder, central-difference Jacobian (step 1e-6 rad), ftol=xtol=1e-15, gtol=0" },
-		{ "implicit", "Ipopt, limited-memory BFGS Hessian, tol=1e-10, max_iter=1000, constraints Psi^eps1<=1, collide iff distance<=1e-3" },
-		{ "gjk", "libccd ccdGJKIntersect on 10x10 grid vertex sets, max 100 iterations; vertex sets built outside the timer" },
-		{ "asc", "Eigen EigenSolver on A^-1 B (4x4), separated iff two distinct positive roots of det(lambda A + B)" },
-		{ "success", "LM: residual norm < 1e-10; Implicit: Ipopt Solve_Succeeded at tol 1e-10" },
-		{ "timer", "CLOCK_MONOTONIC around the query call only, one thread" },
-	};
-	mkMeta_SetPairs(meta, fixed, MK_COUNT(fixed));
-	mkMeta_Set(meta, "ipopt_version", mkCollide_IpoptVersion());
-	mkMeta_Set(meta, "libccd_version", mkCollide_CcdVersion());
-	mkMeta_Set(meta, "cminpack_version", mkCollide_CminpackVersion());
-	mkMeta_Set(meta, "eigen_version", mkCollide_EigenVersion());
+	char margin[32];
+	snprintf(margin, sizeof margin, "%g", o->margin);
+	mkMeta_Set(meta, "referee_margin", margin);
+	mkMeta_Set(meta, "referee_margin_unit", "scale (mkCollide3_Scale of the pair)");
+	mkMeta_Set(meta, "rng", "xoshiro256** seeded by splitmix64, one stream per trial: (kind << 32) | trial, "
+		"kind 0 ellipsoids 1 superquadrics 2 near 3 deep");
+	mkMeta_Set(meta, "draw", "B1 a,b,c~U(1,11) c~U(-5,5)^3; B2 a,b,c~U(1,6) c~U(5,15)^3; eps1,eps2~U(0.1,1.9) "
+		"(ellipsoids 1,1); near and deep: ellipsoids on even trials, superquadrics on odd ones");
+	mkMeta_Set(meta, "near", "B2 moved along the centre line to touching (minksum-ray's directional gap), then "
+		"by secant steps on the referee's signed distance to s*size within 1e-3 relative, s = "
+		"+-1e-1..+-1e-6 by (trial/2)%12, size = the smallest semi-axis of the two bodies");
+	mkMeta_Set(meta, "deep", "centres U(-1,1)^3 and U(-2,2)^3");
+	mkMeta_Set(meta, "error", "|distance - referee_distance| / mkCollide3_Scale of the pair");
+	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread");
+	buf[0] = '\0';
+	for (int i = 0; i < o->nlimits; ++i)
+		snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s=%ld", i ? "," : "", o->limit_entry[i]->name,
+			o->limit_trials[i]);
+	mkMeta_Set(meta, "limits", o->nlimits ? buf : "none");
+	for (int i = 0; i < mkColliders_Count(); ++i) {
+		const mkCollider *c = mkColliders_At(i);
+		char key[96];
+		/* Sidecar keys are [a-z0-9_]: "minksum-normal" -> collider_minksum_normal. */
+		snprintf(key, sizeof key, "collider_%s", c->name);
+		for (char *p = key; *p; ++p)
+			if (*p == '-')
+				*p = '_';
+		mkMeta_Set(meta, key, c->params ? c->params : "");
+		if (c->version) {
+			snprintf(key + strlen(key), sizeof key - strlen(key), "_version");
+			mkMeta_Set(meta, key, c->version());
+		}
+	}
+	/* The published means (ms), for the figure and readers of the sidecar;
+	 * keys paper_table3_<i>_<kind>_ms, i the row of mkPaper_Table3. */
+	for (int i = 0; i < mkPaper_Table3Count; ++i) {
+		char key[96];
+		snprintf(key, sizeof key, "paper_table3_%d_ellipsoids_ms", i);
+		mkMeta_SetDouble(meta, key, mkPaper_Table3[i].ellipsoids_ms);
+		snprintf(key, sizeof key, "paper_table3_%d_superquadrics_ms", i);
+		mkMeta_SetDouble(meta, key, mkPaper_Table3[i].superquadrics_ms);
+	}
 }
 
 /* ---- draws ------------------------------------------------------------------ */
@@ -71,266 +141,172 @@ static int mkDrawBody(mkRng *r, double amax, double clo, double chi, int ellipso
 	return mkBody3_IsValid(*body, "body", NULL, 0);
 }
 
-/* ---- the queries ------------------------------------------------------------- */
-
-/* One timed query (GJK on the grid vertex sets, built outside the timer).
- * Returns 0, or -1 when the vertex sets fail. */
-static int mkQuery(int alg, mkBody3 b1, mkBody3 b2, mkCollide *c, double *seconds)
+/* The size a near pair's separation is measured in: the smallest semi-axis
+ * of the two bodies, so that every separation asked for, overlaps of a
+ * tenth of it included, exists along the centre line. */
+static double mkNearSize(mkBody3 b1, mkBody3 b2)
 {
-	enum { NV = MK_GJK_GRID * MK_GJK_GRID };
-	double ux[NV], uy[NV], uz[NV], x1[NV], y1[NV], z1[NV], x2[NV], y2[NV], z2[NV];
-	mkVertices3 v1 = { x1, y1, z1, NV }, v2 = { x2, y2, z2, NV };
-	if (alg == MK_ALG_GJK && (mkCollide_GridVertices(b1, MK_GJK_GRID, ux, uy, uz, x1, y1, z1) != MK_OK
-			|| mkCollide_GridVertices(b2, MK_GJK_GRID, ux, uy, uz, x2, y2, z2) != MK_OK))
-		return -1;
-	double t0 = mkClock_Wall();
-	switch (alg) {
-	case MK_ALG_GJK: *c = mkCollide_GJK(v1, v2, MK_COLLIDE_LM_MAX_ITER); break;
-	case MK_ALG_ASC: *c = mkCollide_ASC(b1, b2); break;
-	case MK_ALG_IMPLICIT: *c = mkCollide_Implicit(b1, b2, MK_IMPLICIT_TOL); break;
-	case MK_ALG_COMMON: *c = mkCollide_CommonNormal(b1, b2, MK_COLLIDE_LM_MAX_ITER); break;
-	case MK_ALG_RAY: *c = mkCollide_MinkRay(b1, b2, MK_COLLIDE_LM_MAX_ITER); break;
-	default: *c = mkCollide_MinkNormal(b1, b2, MK_COLLIDE_LM_MAX_ITER); break;
-	}
-	*seconds = mkClock_Wall() - t0;
-	return 0;
+	double s = b1.shape.a;
+	double v[5] = { b1.shape.b, b1.shape.c, b2.shape.a, b2.shape.b, b2.shape.c };
+	for (int i = 0; i < 5; ++i)
+		s = v[i] < s ? v[i] : s;
+	return s;
 }
 
-/* The row of one query; decided: the referee's answer (truth) counts. */
-static void mkWriteRow(mkCsv *csv, int pair, long trial, int alg, double seconds, const mkCollide *c, double g,
-	int decided, int truth)
+/* Move B2 along the centre line u so that the referee's signed distance is
+ * target = s * size: to touching by minksum-ray's directional gap, then
+ * secant steps on the referee's value (first slope <n, u> of its normal).
+ * Returns 0, or -1 when the construction does not reach the target within
+ * MK_NEAR_REL. */
+static int mkPlaceNear(const mkCollider *referee, mkBody3 b1, mkBody3 *b2, double s, mkColliderScratch *scratch)
 {
-	int solver = alg == MK_ALG_IMPLICIT || alg == MK_ALG_COMMON || alg == MK_ALG_RAY || alg == MK_ALG_NORMAL;
-	mkCsv_Str(csv, mkCollision_PairNames[pair]);
-	mkCsv_Int(csv, trial);
-	mkCsv_Str(csv, mkAlgNames[alg]);
-	mkCsv_Double(csv, seconds);
-	mkCsv_Int(csv, c->collide);
-	if (solver) {
-		mkCsv_Double(csv, c->residual);
-		mkCsv_Int(csv, c->iterations);
-		/* LM: the paper's criterion on the residual norm; Implicit: Ipopt
-		 * reports Solve_Succeeded at tol = 1e-10. */
-		mkCsv_Int(csv, alg == MK_ALG_IMPLICIT ? c->status == 0 : c->residual < MK_COLLIDE_SUCCESS_RESIDUAL);
-	} else {
-		mkCsv_Empty(csv);
-		mkCsv_Empty(csv);
-		mkCsv_Empty(csv);
-	}
-	mkCsv_Double(csv, g);
-	if (decided)
-		mkCsv_Int(csv, c->collide == truth);
-	else
-		mkCsv_Empty(csv);
-	mkCsv_EndRow(csv);
-}
-
-int mkCollision_Trial(const mkCollisionOptions *o, int pair, long trial, mkCsv *csv)
-{
-	mkRng rng;
-	mkRng_Seed(&rng, o->seed, ((uint64_t)pair << 32) | (uint64_t)trial);
-	int ellipsoid = pair == 0;
-	mkBody3 b1, b2;
-	int ok = mkDrawBody(&rng, 11.0, -5.0, 5.0, ellipsoid, o->rotations, &b1);
-	ok = mkDrawBody(&rng, 6.0, 5.0, 15.0, ellipsoid, o->rotations, &b2) && ok;
-	if (!ok) {
-		/* The ranges above keep every draw valid; a failure is a bug. */
-		fprintf(stderr, "collision: %s trial %ld: invalid body drawn\n", mkCollision_PairNames[pair], trial);
+	mkCollision3 c;
+	mkVec3 u = mkVec3_Normalize(mkVec3_Sub(b2->t, b1.t));
+	if (mkCollide3_Ray(b1, *b2, &c) != MK_OK || !isfinite(c.directional))
 		return -1;
-	}
-	double g = mkCollide_Referee(b1, b2, MK_REFEREE_GRID, NULL);
-	int decided = fabs(g) > o->margin, truth = g >= 0.0;
-	for (int alg = 0; alg < MK_ALG_COUNT; ++alg) {
-		if (alg == MK_ALG_ASC && !ellipsoid)
-			continue;
-		mkCollide c;
-		double seconds = 0.0;
-		if (mkQuery(alg, b1, b2, &c, &seconds) != 0) {
-			fprintf(stderr, "collision: the GJK vertex sets failed\n");
+	b2->t = mkVec3_Sub(b2->t, mkVec3_Scale(u, c.directional));
+	double target = s * mkNearSize(b1, *b2);
+	double slope = 1.0, prev_t = NAN, prev_miss = NAN, t = target;
+	mkVec3 base = b2->t;
+	for (int k = 0; k < MK_NEAR_STEPS; ++k) {
+		b2->t = mkVec3_Add(base, mkVec3_Scale(u, t));
+		if (mkCollider_Run(referee, b1, *b2, scratch, &c) != MK_OK || !isfinite(c.distance))
 			return -1;
-		}
-		mkWriteRow(csv, pair, trial, alg, seconds, &c, g, decided, truth);
-	}
-	return 0;
-}
-
-/* ---- the summary -------------------------------------------------------------- */
-
-/* Letters and digits only, lower case: "MinkSum (Ray)" -> "minksumray", so
- * that spellings of one algorithm meet. */
-static void mkSquash(const char *s, char *out, size_t len)
-{
-	size_t n = 0;
-	for (; *s && n + 1 < len; ++s)
-		if (isalnum((unsigned char)*s))
-			out[n++] = (char)tolower((unsigned char)*s);
-	out[n] = '\0';
-}
-
-static int mkCompareDouble(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
-/* What one (pair, algorithm) did: its times (ms) and verdict counts. */
-typedef struct mkAlgStat {
-	long n, ns, ok, nd, ag, close;
-	double sum;
-} mkAlgStat;
-
-/* The rows of pair kind `pair` whose algorithm squashes to `want`. */
-static void mkAlgStat_Load(mkAlgStat *st, double *ms, const mkTable *t, const char *pair, const char *want)
-{
-	int cpair = mkTable_Col(t, "pair"), calg = mkTable_Col(t, "algorithm"), csec = mkTable_Col(t, "seconds");
-	int csucc = mkTable_Col(t, "success"), cagree = mkTable_Col(t, "agrees");
-	memset(st, 0, sizeof *st);
-	for (long r = 0; r < t->rows; ++r) {
-		char alg[64];
-		mkSquash(mkTable_Str(t, r, calg), alg, sizeof alg);
-		if (strcmp(mkTable_Str(t, r, cpair), pair) != 0 || strcmp(alg, want) != 0)
-			continue;
-		double v = 1e3 * mkTable_Num(t, r, csec);
-		ms[st->n++] = v;
-		st->sum += v;
-		double sv = mkTable_Num(t, r, csucc), av = mkTable_Num(t, r, cagree);
-		if (!isnan(sv)) {
-			st->ns += 1;
-			st->ok += sv == 1.0;
-		}
-		if (!isnan(av)) {
-			st->nd += 1;
-			st->ag += av == 1.0;
-		} else {
-			st->close += 1;
-		}
-	}
-}
-
-/* One row of the details: queries, mean and median time, success rate,
- * agreement, too close. */
-static void mkAlgStat_Row(mkDoc *d, const mkAlgStat *st, double *ms, const char *pair, const char *alg)
-{
-	qsort(ms, (size_t)st->n, sizeof(double), mkCompareDouble);
-	double med = st->n % 2 ? ms[st->n / 2] : 0.5 * (ms[st->n / 2 - 1] + ms[st->n / 2]);
-	char c[6][MK_CELL_MAX];
-	snprintf(c[0], MK_CELL_MAX, "%ld", st->n);
-	snprintf(c[1], MK_CELL_MAX, "%.3g", st->sum / (double)st->n);
-	snprintf(c[2], MK_CELL_MAX, "%.3g", med);
-	if (st->ns)
-		snprintf(c[3], MK_CELL_MAX, "%.4f", (double)st->ok / (double)st->ns);
-	else
-		snprintf(c[3], MK_CELL_MAX, "—");
-	if (st->nd)
-		snprintf(c[4], MK_CELL_MAX, "%.4f (%ld/%ld)", (double)st->ag / (double)st->nd, st->ag, st->nd);
-	else
-		snprintf(c[4], MK_CELL_MAX, "—");
-	snprintf(c[5], MK_CELL_MAX, "%ld", st->close);
-	const char *row[8] = { pair, alg, c[0], c[1], c[2], c[3], c[4], c[5] };
-	mkDoc_Row(d, row);
-}
-
-/* The first row whose algorithm squashes to `want`, or -1. */
-static long mkFirstRow(const mkTable *t, int calg, const char *want)
-{
-	for (long r = 0; r < t->rows; ++r) {
-		char alg[64];
-		mkSquash(mkTable_Str(t, r, calg), alg, sizeof alg);
-		if (strcmp(alg, want) == 0)
-			return r;
+		double miss = c.distance - target;
+		if (fabs(miss) <= MK_NEAR_REL * fabs(target))
+			return 0;
+		double d = mkVec3_Dot(c.normal, u);
+		if (!isnan(prev_t) && miss != prev_miss)
+			d = (miss - prev_miss) / (t - prev_t);
+		if (isfinite(d) && d > 0.05)
+			slope = d;
+		prev_t = t;
+		prev_miss = miss;
+		t -= miss / slope;
 	}
 	return -1;
 }
 
-/* The reproduction's own figures per pair and algorithm (nothing published
- * to compare with). The algorithms are those of the data, in order of first
- * appearance (one per squashed name). */
-static void mkCollision_Details(mkDoc *d, const mkTable *t, const mkMeta *m)
+/* The pair of trial `trial` of kind `kind`; 0, or -1 after printing why. */
+static int mkDrawPair(const mkCollisionOptions *o, int kind, long trial, const mkCollider *referee,
+	mkColliderScratch *scratch, mkBody3 *b1, mkBody3 *b2)
 {
-	static const char *const head[] = { "pair", "algorithm", "queries", "mean (ms)", "median (ms)",
-		"success", "agreement", "too close" };
-	const char *margin = mkMeta_Get(m, "referee_margin");
-	mkDoc_Para(d, "Per algorithm: success = residual below 1e-10 (LM) or Ipopt's Solve_Succeeded "
-		"(Implicit); agreement = same verdict as the support-function referee, over the trials whose "
-		"|min g| exceeds the margin (%s); the others are too close to call.", margin ? margin : "not recorded");
-	mkDoc_TableBegin(d, "Collision detection: the reproduction's figures per algorithm.", 8, head);
-	int calg = mkTable_Col(t, "algorithm");
-	double *ms = malloc((size_t)(t->rows > 0 ? t->rows : 1) * sizeof(double));
-	for (int p = 0; ms && p < 2; ++p)
-		for (long r = 0; r < t->rows; ++r) {
-			char want[64];
-			mkSquash(mkTable_Str(t, r, calg), want, sizeof want);
-			if (mkFirstRow(t, calg, want) < r)
-				continue; /* an algorithm's first row names it */
-			mkAlgStat st;
-			mkAlgStat_Load(&st, ms, t, mkCollision_PairNames[p], want);
-			if (st.n > 0)
-				mkAlgStat_Row(d, &st, ms, mkCollision_PairNames[p], mkTable_Str(t, r, calg));
-		}
-	free(ms);
-	mkDoc_TableEnd(d);
+	mkRng rng;
+	mkRng_Seed(&rng, o->seed, ((uint64_t)kind << 32) | (uint64_t)trial);
+	int ellipsoid = kind == 0 || (kind >= 2 && trial % 2 == 0);
+	int deep = kind == 3;
+	int ok = mkDrawBody(&rng, 11.0, deep ? -1.0 : -5.0, deep ? 1.0 : 5.0, ellipsoid, o->rotations, b1);
+	ok = mkDrawBody(&rng, 6.0, deep ? -2.0 : 5.0, deep ? 2.0 : 15.0, ellipsoid, o->rotations, b2) && ok;
+	if (!ok) {
+		/* The ranges above keep every draw valid; a failure is a bug. */
+		fprintf(stderr, "collision: %s trial %ld: invalid body drawn\n", mkCollision_PairNames[kind], trial);
+		return -1;
+	}
+	if (kind == 2 && mkPlaceNear(referee, *b1, b2, mkNearSteps[(trial / 2) % 12], scratch) != 0) {
+		fprintf(stderr, "collision: near trial %ld: the pair could not be placed at %g of its size\n", trial,
+			mkNearSteps[(trial / 2) % 12]);
+		return -1;
+	}
+	return 0;
 }
 
-/* Table 3: the published mean times beside the reproduced ones. */
-static void mkCollision_Table3(mkDoc *d, const mkTable *t, int usable, mkTally *tally)
+/* ---- the runs --------------------------------------------------------------- */
+
+static const char *mkStatusName(mkResult r, mkContact s)
 {
-	static const char *const head[] = { "algorithm", "published ellipsoids (ms)", "reproduced", "ratio",
-		"published superquadrics (ms)", "reproduced", "ratio" };
-	int cpair = mkTable_Col(t, "pair"), calg = mkTable_Col(t, "algorithm"), csec = mkTable_Col(t, "seconds");
-	mkDoc_TableBegin(d, "Collision detection: mean time per query over 10⁴ random poses.", 7, head);
-	for (int i = 0; i < mkPaper_Table3Count; ++i) {
-		const mkPaperTable3 *pub = &mkPaper_Table3[i];
-		char want[64], alg[64];
-		mkSquash(pub->algorithm, want, sizeof want);
-		mkMean e, s;
-		memset(&e, 0, sizeof e);
-		memset(&s, 0, sizeof s);
-		for (long r = 0; usable && r < t->rows; ++r) {
-			mkSquash(mkTable_Str(t, r, calg), alg, sizeof alg);
-			if (strcmp(alg, want) != 0)
-				continue;
-			const char *pair = mkTable_Str(t, r, cpair);
-			double ms = 1e3 * mkTable_Num(t, r, csec);
-			if (strcmp(pair, "ellipsoids") == 0)
-				mkMean_Add(&e, ms);
-			else if (strcmp(pair, "superquadrics") == 0)
-				mkMean_Add(&s, ms);
-		}
-		char a[4][MK_CELL_MAX];
-		double ve = mkMean_Get(&e), vs = mkMean_Get(&s);
-		if (isnan(ve))
-			snprintf(a[0], MK_CELL_MAX, "%s", mkNotYet);
-		else
-			snprintf(a[0], MK_CELL_MAX, "%.3g", ve);
-		mkFmt_Ratio(a[1], MK_CELL_MAX, ve, pub->ellipsoids_ms);
-		if (isnan(pub->superquadrics_ms))
-			snprintf(a[2], MK_CELL_MAX, "—");
-		else if (isnan(vs))
-			snprintf(a[2], MK_CELL_MAX, "%s", mkNotYet);
-		else
-			snprintf(a[2], MK_CELL_MAX, "%.3g", vs);
-		mkFmt_Ratio(a[3], MK_CELL_MAX, vs, pub->superquadrics_ms);
-		const char *row[7] = { pub->algorithm, pub->ellipsoids_text, a[0], a[1], pub->superquadrics_text, a[2], a[3] };
-		mkDoc_Row(d, row);
-		mkTally_Add(tally, !isnan(ve));
-		if (!isnan(pub->superquadrics_ms))
-			mkTally_Add(tally, !isnan(vs));
-	}
-	mkDoc_TableEnd(d);
+	if (r != MK_OK || s == MK_CONTACT_UNKNOWN)
+		return "failed";
+	return mkContact_Name(s);
 }
 
-void mkCollision_Summary(mkDoc *d, const char *dir, mkTally *tally)
+/* What the referee says of one pair: its answer and the pair's scale. */
+typedef struct mkTruth {
+	mkCollision3 ref;
+	double scale;
+	int decided;  /* |sd| > margin * scale: statuses are compared */
+} mkTruth;
+
+static void mkCsv_Maybe(mkCsv *csv, double v)
 {
-	static const char *const columns[] = { "pair", "algorithm", "seconds", NULL };
-	mkSection s;
-	int usable = mkSection_Begin(&s, d, "Collision detection (paper §7.2, Table 3)", dir, "collision.csv",
-		columns, "None of the 11 published mean times below has a counterpart.");
-	if (usable) {
-		const char *rot = mkMeta_Get(&s.m, "rotation_draw");
-		mkDoc_Para(d, "Rotation draw: %s.", rot ? rot : "not recorded in the sidecar");
+	if (isnan(v))
+		mkCsv_Empty(csv);
+	else
+		mkCsv_Double(csv, v);
+}
+
+/* The row of one entry on one pair: limited rows (the entry's --limit
+ * reached) have status `skipped` and nothing measured. */
+static void mkWriteRow(mkCsv *csv, int kind, long trial, const mkCollider *c, double seconds, mkResult r,
+	const mkCollision3 *out, const mkTruth *truth, long limit, int skipped)
+{
+	const char *status = skipped ? "skipped" : mkStatusName(r, out->status);
+	int failed = strcmp(status, "failed") == 0;
+	double dist = !skipped && !failed && isfinite(out->distance) ? out->distance : NAN;
+	mkCsv_Str(csv, mkCollision_PairNames[kind]);
+	mkCsv_Int(csv, trial);
+	mkCsv_Str(csv, c->name);
+	mkCsv_Maybe(csv, skipped ? NAN : seconds);
+	mkCsv_Str(csv, status);
+	mkCsv_Maybe(csv, dist);
+	mkCsv_Double(csv, truth->ref.distance);
+	mkCsv_Maybe(csv, fabs(dist - truth->ref.distance) / truth->scale);
+	if (skipped || !truth->decided) {
+		mkCsv_Empty(csv);
+	} else {
+		/* Touching counts as overlapping (in contact). */
+		int says_sep = out->status == MK_CONTACT_SEPARATED;
+		mkCsv_Int(csv, !failed && says_sep == (truth->ref.distance > 0.0));
 	}
-	mkCollision_Table3(d, &s.t, usable, tally);
-	if (usable)
-		mkCollision_Details(d, &s.t, &s.m);
-	mkSection_End(&s);
+	if (skipped)
+		mkCsv_Empty(csv);
+	else
+		mkCsv_Int(csv, !failed);
+	if (skipped || failed || out->iterations < 0)
+		mkCsv_Empty(csv);
+	else
+		mkCsv_Int(csv, out->iterations);
+	if (limit < 0)
+		mkCsv_Empty(csv);
+	else
+		mkCsv_Int(csv, limit);
+	mkCsv_EndRow(csv);
+}
+
+int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *csv)
+{
+	const mkCollider *referee = mkReferee();
+	mkColliderScratch scratch;
+	mkBody3 b1, b2;
+	if (!referee) {
+		fprintf(stderr, "collision: the collider registry has no referee\n");
+		return -1;
+	}
+	if (mkDrawPair(o, kind, trial, referee, &scratch, &b1, &b2) != 0)
+		return -1;
+	mkTruth truth;
+	if (mkCollider_Run(referee, b1, b2, &scratch, &truth.ref) != MK_OK || !isfinite(truth.ref.distance)) {
+		fprintf(stderr, "collision: %s trial %ld: the referee failed\n", mkCollision_PairNames[kind], trial);
+		return -1;
+	}
+	truth.scale = mkCollide3_Scale(b1, b2);
+	truth.decided = fabs(truth.ref.distance) > o->margin * truth.scale;
+	for (int i = 0; i < mkColliders_Count(); ++i) {
+		const mkCollider *c = mkColliders_At(i);
+		if (c->referee || !mkCollider_Accepts(c, b1, b2, NULL, 0))
+			continue;
+		long limit = mkLimitOf(o, c);
+		mkCollision3 out;
+		mkCollision3_Clear(&out);
+		if (limit >= 0 && trial >= limit) {
+			mkWriteRow(csv, kind, trial, c, 0.0, MK_OK, &out, &truth, limit, 1);
+			continue;
+		}
+		mkResult r = c->prepare ? c->prepare(b1, b2, &scratch) : MK_OK;
+		double t0 = mkClock_Wall();
+		if (r == MK_OK)
+			r = c->run(b1, b2, &scratch, &out);
+		double seconds = mkClock_Wall() - t0;
+		mkWriteRow(csv, kind, trial, c, seconds, r, &out, &truth, limit, 0);
+	}
+	return 0;
 }

@@ -1,57 +1,70 @@
-/* collision.h - the collision-detection benchmark of the paper (Sec. 7.2,
- * Table 3).
+/* collision.h - the collision and distance benchmark (paper Sec. 7.2,
+ * Table 3) on the collider registry (mink/colliders.h).
  *
- * One trial is one random pair of bodies; every applicable query of
- * mink/collide.h runs on it, each timed alone (the wall clock of
- * mink_exp/clock.h around the query call only, one thread), and one raw row
- * per trial and algorithm is written. A referee independent of all six (the
- * minimum over unit n of h1(n) + h2(-n), support functions only) decides
- * the true answer; trials whose |min g| is within the margin are too close
- * to call and get an empty `agrees` (they are kept and counted, never
- * dropped).
+ * One trial is one pair of bodies of one pair kind; every registry entry
+ * that takes the pair runs on it (its `prepare` outside the timer, its `run`
+ * timed alone with the wall clock of mink_exp/clock.h, one thread), and one
+ * row per trial and entry is written. The registry's referee (-min over unit
+ * n of h1(n) + h2(-n), support functions only) gives the reference signed
+ * distance of every pair; it is not itself a row. Entries that do not take a
+ * pair (mkCollider_Accepts: asc, asc-eigen and fcl on superquadrics) get no
+ * row; every entry that takes it gets one, a failure being status `failed`.
  *
- * Draws (paper Sec. 7.2, the reference code's distributions; mink_exp/draw.h):
- *  B1: semi-axes ~ U(1,11)^3, eps1, eps2 ~ U(0.1,1.9), centre ~ U(-5,5)^3;
- *  B2: semi-axes ~ U(1,6)^3, same exponents, centre ~ U(5,15)^3;
- *  ellipsoid pairs have eps = (1,1) and draw no exponents. Rotations by
- *  mkDraw_Rotation3 (the reference code's normalised quaternion, or
- *  uniform on SO(3)).
- * Each trial draws from its own stream (pair << 32) | trial of the run's
- * seed (pair 0 ellipsoids, 1 superquadrics), body 1 then body 2, each in
- * the order semi-axes, exponents, centre, rotation.
- *
- * GJK runs on the 10 x 10 grid vertex sets of both bodies (100 vertices
- * each); the vertex sets are built before its timer starts, as the
- * reference code builds its surfaces outside the timed call. */
+ * Pair kinds (each trial draws from its own stream (kind << 32) | trial of
+ * the run's seed, body 1 then body 2, each semi-axes, exponents, centre,
+ * rotation, so that shards concatenate to the unsplit run):
+ *  0 ellipsoids     the paper's draw: B1 semi-axes U(1,11)^3, centre
+ *                   U(-5,5)^3; B2 semi-axes U(1,6)^3, centre U(5,15)^3;
+ *  1 superquadrics  the same with eps1, eps2 ~ U(0.1,1.9);
+ *  2 near           a pair of the paper's draw (ellipsoids on even trials,
+ *                   superquadrics on odd ones) with B2 moved along the
+ *                   centre line until the referee's signed distance is
+ *                   s * size, s = +-1e-1 ... +-1e-6 (cycling with trial / 2),
+ *                   size = the smallest semi-axis of the two bodies;
+ *  3 deep           the same bodies with centres U(-1,1)^3 and U(-2,2)^3.
+ * Kinds 0 and 1 keep the streams of the earlier experiment, so their pairs
+ * are the same. */
 #ifndef MINK_EXP_COLLISION_H
 #define MINK_EXP_COLLISION_H
 
-#include <mink/collide.h>
+#include <mink/colliders.h>
 #include <mink/mink.h>
 #include <mink_exp/exp.h>
 
-#define MK_COLLISION_SCHEMA 1
+#define MK_COLLISION_SCHEMA 2
+#define MK_COLLISION_KINDS 4
+/* Room for --limit pairs (NAME=N). */
+#define MK_COLLISION_LIMITS 8
 
 /* The CSV's columns, ended by NULL. */
 extern const char *const mkCollision_Columns[];
-/* "ellipsoids", "superquadrics": the pair kinds, 0 and 1. */
-extern const char *const mkCollision_PairNames[2];
+/* "ellipsoids", "superquadrics", "near", "deep": the pair kinds 0..3. */
+extern const char *const mkCollision_PairNames[MK_COLLISION_KINDS];
 
 typedef struct mkCollisionOptions {
 	uint64_t seed;
 	mkRotDraw rotations;
-	double margin;   /* the referee's: |min g| <= margin is too close to call */
+	double margin;   /* status compared only where |referee sd| > margin * scale */
+	int nlimits;     /* --limit NAME=N: entry `limit_entry[i]` runs on trials < N only */
+	const mkCollider *limit_entry[MK_COLLISION_LIMITS];
+	long limit_trials[MK_COLLISION_LIMITS];
 } mkCollisionOptions;
 
-/* The sidecar keys of a run (pairs, draws, referee, solvers, versions). */
-void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, int ellipsoids, int superquadrics);
+/* Parse one --limit value "NAME=N" (NAME a registry entry, N >= 0) into the
+ * options (context); 0, or -1 with the reason in msg. */
+int mkCollision_ParseLimit(void *context, const char *text, char *msg, size_t msglen);
 
-/* One trial of one pair kind: draw, referee, every query, its rows.
+/* The sidecar keys of a run (pair kinds, draws, referee, limits, every
+ * entry's parameters and library version, the paper's Table 3). */
+void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK_COLLISION_KINDS]);
+
+/* One trial of one pair kind: draw, referee, every entry, its rows.
  * Returns 0, or -1 after printing an error. */
-int mkCollision_Trial(const mkCollisionOptions *o, int pair, long trial, mkCsv *csv);
+int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *csv);
 
 /* The section of the tables: <dir>/collision.csv beside the paper's
- * Table 3, and the reproduction's own figures per algorithm. */
+ * Table 3, and per pair kind and entry the times, success, agreement and
+ * errors. */
 void mkCollision_Summary(mkDoc *d, const char *dir, mkTally *tally);
 
 #endif

@@ -1,31 +1,37 @@
-/* main.c - the `collision` driver: the collision-detection benchmark of the
- * paper (Sec. 7.2, Table 3); what it measures is in collision.h. */
+/* main.c - the `collision` driver: every entry of the collider registry on
+ * the paper's pairs (Sec. 7.2, Table 3) and on near-touching and deeply
+ * overlapping ones; what it measures is in collision.h. */
 #include "collision.h"
 
-static const char *const mkPairChoices[] = { "ellipsoids", "superquadrics", "both" };
+static const char *const mkPairChoices[] = { "ellipsoids", "superquadrics", "near", "deep", "both", "all" };
 
 static const mkDriver mkCollisionDriver = {
 	"collision",
-	"The collision-detection benchmark of the paper (Sec. 7.2, Table 3): per trial\n"
-	"one random pair of bodies, queried by GJK, ASC (ellipsoids only), Implicit,\n"
-	"Common Normal, MinkSum (Ray) and MinkSum (Normal), each timed alone, and\n"
-	"judged against a support-function referee. One CSV row per trial and\n"
-	"algorithm, plus a metadata sidecar <out>.meta.",
+	"Collision and distance (paper Sec. 7.2, Table 3): per trial and pair kind one\n"
+	"pair of bodies, queried by every entry of the collider registry that takes it\n"
+	"(prepare untimed, run timed alone) and judged against the registry's referee.\n"
+	"One CSV row per trial and entry, plus a metadata sidecar <out>.meta.",
 	MK_COLLISION_SCHEMA, mkCollision_Columns,
-	MK_SHARED_TRIALS | MK_SHARED_SEED | MK_SHARED_SHARD, 10000, 10000000, 2022, NULL,
+	MK_SHARED_TRIALS | MK_SHARED_SEED | MK_SHARED_SHARD, 10000, 10000000, 2022,
+	"Pair kinds: ellipsoids and superquadrics (the paper's draws), near (B2 moved so\n"
+	"that the referee's signed distance is +-1e-1 .. +-1e-6 of the size) and deep\n"
+	"(overlapping centres); --pair both = the first two, all = all four.\n"
+	"Status: separated|touching|overlapping|failed, or skipped past a --limit.",
 };
 
 int main(int argc, char **argv)
 {
-	mkCollisionOptions o = { 0, MK_ROT_PAPER, 1e-3 };
-	int pairs = 2, rotations = MK_ROT_PAPER;
+	mkCollisionOptions o = { 0, MK_ROT_PAPER, 1e-9, 0, { NULL }, { 0 } };
+	int pairs = 5, rotations = MK_ROT_PAPER;
 	mkFlag flags[] = {
-		MK_FLAG_CHOICE("--pair", "ellipsoids|superquadrics|both", "which pairs (default both)", &pairs,
-			mkPairChoices),
+		MK_FLAG_CHOICE("--pair", "ellipsoids|superquadrics|near|deep|both|all",
+			"which pair kinds (default all)", &pairs, mkPairChoices),
 		MK_FLAG_CHOICE("--rotations", "paper|uniform", "rotation draw: the reference code's normalised\n"
 			"positive quaternion, or uniform on SO(3) (default paper)", &rotations, mkRotDraw_Names),
-		MK_FLAG_DOUBLE("--margin", "M", "referee margin: |min g| <= M is too close to call,\n"
-			"0..1 (default 0.001)", &o.margin, 0.0, 1.0),
+		MK_FLAG_DOUBLE("--margin", "M", "statuses are compared where |referee sd| > M * scale,\n"
+			"0..1 (default 1e-9)", &o.margin, 0.0, 1.0),
+		MK_FLAG_REPEAT("--limit", "NAME=N", "run entry NAME on trials < N only (later trials: rows\n"
+			"with status skipped); repeatable (default none)", &o, mkCollision_ParseLimit),
 	};
 	mkRun run;
 	int status = mkRun_Begin(&run, &mkCollisionDriver, flags, MK_COUNT(flags), argc, argv);
@@ -33,18 +39,22 @@ int main(int argc, char **argv)
 		return mkRun_Status(status);
 	o.seed = run.seed;
 	o.rotations = (mkRotDraw)rotations;
-	int on[2] = { pairs != 1, pairs != 0 };
-	mkCollision_Meta(&run.meta, &o, on[0], on[1]);
-	if (mkRun_OpenCsv(&run, (run.end - run.begin) * (on[0] + on[1])) != 0)
+	int on[MK_COLLISION_KINDS], kinds = 0;
+	for (int k = 0; k < MK_COLLISION_KINDS; ++k) {
+		on[k] = pairs == k || pairs == 5 || (pairs == 4 && k < 2);
+		kinds += on[k];
+	}
+	mkCollision_Meta(&run.meta, &o, on);
+	if (mkRun_OpenCsv(&run, (run.end - run.begin) * kinds) != 0)
 		return mkRun_End(&run, 1);
 
-	/* Trial-major order (trial 0's ellipsoids, then its superquadrics, then
-	 * trial 1, ...), so that shards concatenate to the unsplit run. */
+	/* Trial-major order (trial 0 of every kind, then trial 1, ...), so that
+	 * shards concatenate to the unsplit run. */
 	int failed = 0;
 	for (long trial = run.begin; trial < run.end && !failed; ++trial)
-		for (int pair = 0; pair < 2 && !failed; ++pair)
-			if (on[pair]) {
-				failed = mkCollision_Trial(&o, pair, trial, &run.csv) != 0;
+		for (int k = 0; k < MK_COLLISION_KINDS && !failed; ++k)
+			if (on[k]) {
+				failed = mkCollision_Trial(&o, k, trial, &run.csv) != 0;
 				mkRun_Step(&run, 1);
 			}
 	return mkRun_End(&run, failed);

@@ -1,12 +1,16 @@
 /* test_summary.c - the collision section of the tables
  * (mkCollision_Summary) on a result file written here; every expected text
  * is worked out by hand:
- *  - GJK on ellipsoids, 10 ms and 20 ms: mean 15 ms, 15 / 18.4 (Table 3)
- *    = 0.815; agreement 1 of 2; no solver, so no success rate;
- *  - MinkSum (Normal) on ellipsoids, 2 ms and 4 ms (the second too close to
- *    call): mean 3 ms, 3 / 3.5 = 0.857, success 1 of 2; on superquadrics
- *    5.1 ms, ratio 1;
- *  - an algorithm no list knows ("My Query") still gets its row of details;
+ *  - gjk-poly (the paper's GJK) on ellipsoids, 10 ms and 20 ms: mean 15 ms,
+ *    15 / 18.4 (Table 3) = 0.815; agreement 1 of 2; 15000 µs in the details;
+ *  - minksum-normal-lm (the paper's MinkSum (Normal)) on ellipsoids, 2 ms
+ *    and a failure of 4 ms: mean 3 ms, 3 / 3.5 = 0.857, success 1 of 2; on
+ *    superquadrics 5.1 ms, ratio 1;
+ *  - implicit with one skipped row only: Table 3 has no counterpart, the
+ *    details count it as skipped;
+ *  - an entry no list knows ("my-query") gets its row of details, with the
+ *    distance errors {1e-7} and the penetration errors {2e-7, 4e-7}
+ *    (median 3e-7, nearest-rank 99th percentile and max 4e-7);
  *  - of the 11 published times, 3 have a counterpart.
  * A missing result leaves all 11 "not reproduced yet". */
 #include "collision.h"
@@ -25,32 +29,40 @@ int main(int argc, char **argv)
 	snprintf(path, sizeof path, "%s/collision.csv", argv[1]);
 	FILE *fp = fopen(path, "w");
 	ENSURE(fp != NULL);
-	fputs("pair,trial,algorithm,seconds,collide,residual,iterations,success,referee_min_g,agrees\n"
-		"ellipsoids,0,GJK,0.010,1,,,,0.5,1\n"
-		"ellipsoids,0,MinkSum (Normal),0.002,1,1e-12,5,1,0.5,1\n"
-		"ellipsoids,1,GJK,0.020,0,,,,-0.5,0\n"
-		"ellipsoids,1,MinkSum (Normal),0.004,0,1e-3,100,0,0.0001,\n"
-		"superquadrics,0,MinkSum (Normal),0.0051,1,1e-12,7,1,0.5,1\n"
-		"superquadrics,0,My Query,0.001,1,,,,0.5,1\n", fp);
+	fputs("pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited\n"
+		"ellipsoids,0,gjk-poly,0.010,separated,,0.5,,1,1,,\n"
+		"ellipsoids,0,minksum-normal-lm,0.002,separated,,0.5,,1,1,5,\n"
+		"ellipsoids,1,gjk-poly,0.020,separated,,-0.5,,0,1,,\n"
+		"ellipsoids,1,minksum-normal-lm,0.004,failed,,-0.5,,0,0,,\n"
+		"ellipsoids,2,implicit,,skipped,,0.3,,,,,2\n"
+		"superquadrics,0,minksum-normal-lm,0.0051,separated,,0.5,,1,1,7,\n"
+		"superquadrics,0,my-query,0.001,separated,0.5000001,0.5,1e-7,1,1,3,\n"
+		"superquadrics,1,my-query,0.003,overlapping,-0.2,-0.2000002,2e-7,1,1,3,\n"
+		"superquadrics,2,my-query,0.002,overlapping,-0.2,-0.2000004,4e-7,1,1,3,\n", fp);
 	fclose(fp);
 	snprintf(path, sizeof path, "%s/collision.csv.meta", argv[1]);
 	fp = fopen(path, "w");
 	ENSURE(fp != NULL);
-	fputs("experiment: collision\nseed: 3\ntrials: 2\nrotation_draw: paper\nreferee_margin: 0.001\n", fp);
+	fputs("experiment: collision\nseed: 3\ntrials: 3\nrotation_draw: paper\nreferee_margin: 1e-09\n"
+		"limits: implicit=2\n", fp);
 	fclose(fp);
 
 	mkTally tally = { 0, 0, 0 };
 	char *md = mkSummary_Text(mkCollision_Summary, argv[1], &tally);
 	mkSummary_Expect(md, "Rotation draw: paper.");
-	mkSummary_Expect(md, "| GJK | 18.4 | 15 | 0.815 | 18.3 | **NOT REPRODUCED YET** | — |");
-	mkSummary_Expect(md, "| ASC | 0.133 | **NOT REPRODUCED YET** | — | — | — | — |");
-	mkSummary_Expect(md, "| MinkSum (Normal) | 3.5 | 3 | 0.857 | 5.1 | 5.1 | 1 |");
+	mkSummary_Expect(md, "| GJK | 18.4 | 15 | 0.815 | 18.3 | **NOT REPRODUCED YET** | — | gjk-poly |");
+	mkSummary_Expect(md, "| ASC | 0.133 | **NOT REPRODUCED YET** | — | — | — | — | asc-eigen |");
+	mkSummary_Expect(md, "| Implicit | 27.0 | **NOT REPRODUCED YET** | — | 42.3 | **NOT REPRODUCED YET** | — | implicit |");
+	mkSummary_Expect(md, "| MinkSum (Normal) | 3.5 | 3 | 0.857 | 5.1 | 5.1 | 1 | minksum-normal-lm |");
 	ENSURE(tally.published == 11 && tally.reproduced == 3 && tally.missing == 8);
-	mkSummary_Expect(md, "|min g| exceeds the margin (0.001)");
-	mkSummary_Expect(md, "| ellipsoids | GJK | 2 | 15 | 15 | — | 0.5000 (1/2) | 0 |");
-	mkSummary_Expect(md, "| ellipsoids | MinkSum (Normal) | 2 | 3 | 3 | 0.5000 | 1.0000 (1/1) | 1 |");
-	mkSummary_Expect(md, "| superquadrics | MinkSum (Normal) | 1 | 5.1 | 5.1 | 1.0000 | 1.0000 (1/1) | 0 |");
-	mkSummary_Expect(md, "| superquadrics | My Query | 1 | 1 | 1 | — | 1.0000 (1/1) | 0 |");
+	mkSummary_Expect(md, "where |referee sd| > 1e-09 × scale");
+	mkSummary_Expect(md, "beyond a --limit (implicit=2)");
+	mkSummary_Expect(md, "| ellipsoids | gjk-poly | 2 | 0 | 1.5e+04 | 1.5e+04 | 1.0000 | 0.5000 (1/2) | — | — |");
+	mkSummary_Expect(md, "| ellipsoids | minksum-normal-lm | 2 | 0 | 3e+03 | 3e+03 | 0.5000 | 0.5000 (1/2) | — | — |");
+	mkSummary_Expect(md, "| ellipsoids | implicit | 0 | 1 | — | — | — | — | — | — |");
+	mkSummary_Expect(md, "| superquadrics | minksum-normal-lm | 1 | 0 | 5.1e+03 | 5.1e+03 | 1.0000 | 1.0000 (1/1) |");
+	mkSummary_Expect(md, "| superquadrics | my-query | 3 | 0 | 2e+03 | 2e+03 | 1.0000 | 1.0000 (3/3) | "
+		"1e-07 / 1e-07 / 1e-07 | 3e-07 / 4e-07 / 4e-07 |");
 	free(md);
 
 	snprintf(path, sizeof path, "%s/none", argv[1]);
