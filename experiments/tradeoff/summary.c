@@ -30,18 +30,6 @@ static int mkIsClosed(const char *method)
 	return strncmp(method, "closed-", 7) == 0;
 }
 
-static int mkCmp(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
-static double mkMedianOf(double *v, long n)
-{
-	qsort(v, (size_t)n, sizeof *v, mkCmp);
-	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /* The points in order of first appearance; NaN errors sort last (a median
  * with a non-finite pair is then the larger one). */
 static int mkCurveData_Load(mkCurveData *cd, const mkTable *t)
@@ -80,8 +68,8 @@ static int mkCurveData_Load(mkCurveData *cd, const mkTable *t)
 				double e = mkTable_Num(t, r, ce);
 				err[m++] = isnan(e) ? INFINITY : e;
 			}
-		cd->p[g].sec = mkMedianOf(sec, m);
-		cd->p[g].err = mkMedianOf(err, m);
+		cd->p[g].sec = mkTradeoff_Median(sec, m);
+		cd->p[g].err = mkTradeoff_Median(err, m);
 	}
 	free(group), free(sec), free(err);
 	return 0;

@@ -21,43 +21,63 @@ void mkTradeoffOptions_Default(mkTradeoffOptions *o)
 	o->trials = 20;
 	o->seed = 2022;
 	o->dim_on[2] = o->dim_on[3] = 1;
-	o->levels[2].count = (int)MK_COUNT(l2);
-	memcpy(o->levels[2].v, l2, sizeof l2);
-	o->levels[3].count = (int)MK_COUNT(l3);
-	memcpy(o->levels[3].v, l3, sizeof l3);
+	o->level_count[2] = (int)MK_COUNT(l2);
+	memcpy(o->level[2], l2, sizeof l2);
+	o->level_count[3] = (int)MK_COUNT(l3);
+	memcpy(o->level[3], l3, sizeof l3);
 	o->budget = 1.0;
 	o->repeats = 5;
 }
 
-int mkTradeoff_ParseLevels(void *levels, const char *text, char *msg, size_t msglen)
+int mkTradeoff_ParseLevels(void *options, const char *text, char *msg, size_t msglen)
 {
+	mkTradeoffOptions *o = options;
 	int dim = strncmp(text, "2d=", 3) == 0 ? 2 : strncmp(text, "3d=", 3) == 0 ? 3 : 0;
 	long lo = dim == 2 ? 3 : 2, hi = dim == 2 ? 1000000 : 4096;
-	mkTradeoffLevels lv = { 0, { 0 } };
+	int v[MK_TRADEOFF_LEVELS_MAX], count = 0;
 	const char *s = text + 3;
-	while (dim) {
+	while (dim && count < MK_TRADEOFF_LEVELS_MAX) {
 		char *end;
-		long v = strtol(s, &end, 10);
+		long x = strtol(s, &end, 10);
 		if (end == s || (*end != ',' && *end != '\0'))
 			break;
-		if (v < lo || v > hi || (lv.count > 0 && v <= lv.v[lv.count - 1])) {
+		if (x < lo || x > hi || (count > 0 && x <= v[count - 1])) {
 			snprintf(msg, msglen, "is out of range: must be rising %dd levels in [%ld, %ld] (%ld is not)", dim, lo,
-				hi, v);
+				hi, x);
 			return -1;
 		}
-		if (lv.count == MK_TRADEOFF_LEVELS_MAX) {
-			snprintf(msg, msglen, "is too long: must be at most %d %dd levels", MK_TRADEOFF_LEVELS_MAX, dim);
-			return -1;
-		}
-		lv.v[lv.count++] = (int)v;
+		v[count++] = (int)x;
 		if (*end == '\0') {
-			((mkTradeoffLevels *)levels)[dim] = lv;
+			o->level_count[dim] = count;
+			memcpy(o->level[dim], v, (size_t)count * sizeof *v);
 			return 0;
 		}
 		s = end + 1;
 	}
-	snprintf(msg, msglen, "is not allowed: must be 2d=LIST or 3d=LIST, LIST comma-separated integers");
+	snprintf(msg, msglen, "is not allowed: must be 2d=LIST or 3d=LIST, LIST at most %d comma-separated integers",
+		MK_TRADEOFF_LEVELS_MAX);
 	return -1;
+}
+
+void mkTradeoff_Start(mkTradeoffOptions *o, const mkRun *run, int dims, mkMeta *meta)
+{
+	o->trials = run->trials;
+	o->seed = run->seed;
+	char text[1024];
+	for (int dim = 2; dim <= 3; ++dim) {
+		o->dim_on[dim] = dims == 2 || dims == dim - 2;
+		size_t len = 0;
+		for (int l = 0; l < o->level_count[dim] && len < sizeof text; ++l)
+			len += (size_t)snprintf(text + len, sizeof text - len, "%s%d", l ? "," : "", o->level[dim][l]);
+		mkMeta_Set(meta, dim == 2 ? "levels_2d" : "levels_3d", o->dim_on[dim] ? text : "off");
+	}
+	mkMeta_SetDouble(meta, "budget_seconds", o->budget);
+	mkMeta_SetInt(meta, "repeats", o->repeats);
+	mkMeta_Set(meta, "set", "contact");
+	mkMeta_Set(meta, "clock", "CLOCK_MONOTONIC wall time, median of the repeats; one thread");
+	mkMeta_Set(meta, "error_measure", "mink/error.h, true area/volume once per pair");
+	mkMeta_Set(meta, "draw_2d", "a,b~U(0,10) (redrawn below 1e-3) eps~U(0.1,1.9) M=rot(2pi U)[1 s;0 1] s~U(-2,2)");
+	mkMeta_Set(meta, "draw_3d", "B1 axes U(1,10)^3, B2 U(1,6)^3, eps1,eps2~U(0.1,1.9), paper quaternion");
 }
 
 uint64_t mkTradeoff_Stream(int dim, int c, long trial)
@@ -210,7 +230,7 @@ static int mkCompareDouble(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-static double mkMedian(double *v, long n)
+double mkTradeoff_Median(double *v, long n)
 {
 	qsort(v, (size_t)n, sizeof *v, mkCompareDouble);
 	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -239,7 +259,7 @@ static int mkRow(const mkTradeoffOptions *o, const mkPairs *p, long k, int curve
 			mkTradeoff_CaseNames[p->c], mkCurveName(curve), n, k, mkResult_Name(rc));
 		return -1;
 	}
-	*seconds = mkMedian(t, done);
+	*seconds = mkTradeoff_Median(t, done);
 	double m0 = mkClock_Wall();
 	mkErrorOptions eo = { 0.0, p->truth[k], p->bound[k] };
 	mkError e;
@@ -287,9 +307,8 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 	double *sec = malloc((size_t)p->count * sizeof *sec);
 	if (!sec)
 		return -1;
-	const mkTradeoffLevels *lv = &o->levels[p->dim];
-	for (int l = 0; l < lv->count; ++l) {
-		int n = lv->v[l];
+	for (int l = 0; l < o->level_count[p->dim]; ++l) {
+		int n = o->level[p->dim][l];
 		long ran = 0, refused = 0;
 		char msg[256], why[320];
 		/* One untimed call on the first pair the method takes: a warm-up, and

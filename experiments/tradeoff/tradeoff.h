@@ -43,26 +43,23 @@
 #include <mink/registry.h>
 #include <mink_exp/exp.h>
 
+/* The CSV's columns, ended by NULL, and their schema version. */
+extern const char *const mkTradeoff_Columns[];
 #define MK_TRADEOFF_SCHEMA 1
-#define MK_TRADEOFF_LEVELS_MAX 64
 
+/* The cases, in run order, and their names in the `case` column. */
 enum { MK_TRADEOFF_EE = 0, MK_TRADEOFF_ES = 1, MK_TRADEOFF_SQ = 2, MK_TRADEOFF_CASES = 3 };
 extern const char *const mkTradeoff_CaseNames[MK_TRADEOFF_CASES];
-/* The CSV's columns, ended by NULL. */
-extern const char *const mkTradeoff_Columns[];
 
-typedef struct mkTradeoffLevels {
-	int count;
-	int v[MK_TRADEOFF_LEVELS_MAX];
-} mkTradeoffLevels;
+#define MK_TRADEOFF_LEVELS_MAX 64
 
+/* What a run covers; levels indexed by dimension 2, 3 (--n of each level,
+ * rising). */
 typedef struct mkTradeoffOptions {
-	long trials;
+	int level_count[4], level[4][MK_TRADEOFF_LEVELS_MAX], dim_on[4];
+	long trials, repeats;   /* pairs per (dim, case); timed calls per row */
 	uint64_t seed;
-	int dim_on[4];                     /* indexed by dimension 2, 3 */
-	mkTradeoffLevels levels[4];        /* indexed by dimension 2, 3 */
-	double budget;                     /* seconds per call; 0: no cut */
-	long repeats;
+	double budget;          /* seconds for a level's first call; 0: no cut */
 } mkTradeoffOptions;
 
 /* 2D n = 8, 32, 128, 512, 2048, 8192, 32768, 65536; 3D n = 4, 8, ..., 256;
@@ -70,9 +67,17 @@ typedef struct mkTradeoffOptions {
 void mkTradeoffOptions_Default(mkTradeoffOptions *o);
 
 /* Flag callback (MK_FLAG_REPEAT): "2d=LIST" or "3d=LIST", LIST strictly
- * rising comma-separated integers (2D 3..1000000, 3D 2..4096), into an
- * mkTradeoffLevels[4]. */
-int mkTradeoff_ParseLevels(void *levels, const char *text, char *msg, size_t msglen);
+ * rising comma-separated integers (2D 3..1000000, 3D 2..4096), into the
+ * mkTradeoffOptions it is given. */
+int mkTradeoff_ParseLevels(void *options, const char *text, char *msg, size_t msglen);
+
+/* After the harness parsed the flags: take trials and seed from the run,
+ * the dimensions from --dim (0: 2D, 1: 3D, 2: both), and write the run's
+ * own sidecar keys (levels, budget, repeats, set, clock, draws). */
+void mkTradeoff_Start(mkTradeoffOptions *o, const mkRun *run, int dims, mkMeta *meta);
+
+/* The median of v[0..n-1] (n >= 1; v is sorted in place, NaN not allowed). */
+double mkTradeoff_Median(double *v, long n);
 
 /* The stream of pair `trial` of (dim, case): (dim << 40) | (case << 32) | trial. */
 uint64_t mkTradeoff_Stream(int dim, int c, long trial);
