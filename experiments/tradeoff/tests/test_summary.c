@@ -12,6 +12,8 @@
  * 1e+03); 1e-6 only the closed form reaches; 1e-9 nobody. At equal time,
  * hull-qhull's points (1e-4 s, 1e-2) and (1e-2 s, 1e-4) face the closed
  * form's best error 5e-7 in no more time: ratios 2e4 and 200, at least 200.
+ * In 3D EE a baseline is faster: "fast-baseline" reaches 1e-3 in 1e-4 s, the
+ * closed form in 1e-3 s: the baseline is 10 times as fast and wins there.
  * A missing result gives the "not reproduced yet" line. */
 #include "tradeoff.h"
 
@@ -36,7 +38,9 @@ static void mkTestTables(void)
 			"2,SQ,closed-normal,contact,100,0,100,1e-5,0,5e-5,0,0,x,y\n"
 			"2,SQ,closed-normal,contact,1000,0,1000,1e-4,0,5e-7,0,0,x,y\n"
 			"2,SQ,hull-qhull,contact,10,0,20,1e-4,0,1e-2,0,0,x,y\n"
-			"2,SQ,hull-qhull,contact,100,0,200,1e-2,0,1e-4,0,0,x,y\n" },
+			"2,SQ,hull-qhull,contact,100,0,200,1e-2,0,1e-4,0,0,x,y\n"
+			"3,EE,closed-normal,contact,4,0,16,1e-3,0,1e-3,0,0,x,y\n"
+			"3,EE,fast-baseline,contact,4,0,16,1e-4,0,1e-3,0,0,x,y\n" },
 		{ "tradeoff.csv.meta", "experiment: tradeoff\nseed: 1\ntrials: 2\ncut: none\n" },
 	};
 	for (int i = 0; i < 2; ++i) {
@@ -58,7 +62,11 @@ static void mkTestTables(void)
 	mkSummary_Expect(md, "error ≤ 1e-06: the closed form reaches it (closed-normal, n = 1000, 0.0001 s); no baseline does.");
 	mkSummary_Expect(md, "error ≤ 1e-09: the closed form does not reach it, nor does any baseline.");
 	mkSummary_Expect(md, "a baseline wins at my-baseline n = 10 (1e-07 s, error 0.02)");
-	mkSummary_Expect(md, "smaller by a factor of at least 200 (at hull-qhull n = 100, 0.01 s)");
+	mkSummary_Expect(md, "equal time: over the 2 baseline points the closed form dominates, its best error in no "
+		"more time is smaller by a factor of at least 200 (at hull-qhull n = 100, 0.01 s)");
+	mkSummary_Expect(md, "3D EE, error ≤ 1e-02: **a baseline is faster**: fast-baseline (n = 4, 0.0001 s) is 10 times "
+		"as fast as the fastest closed form (closed-normal, n = 4, 0.001 s).");
+	mkSummary_Expect(md, "3D EE: a baseline wins at fast-baseline n = 4 (0.0001 s, error 0.001)");
 	ENSURE(tally.published == 0 && tally.reproduced == 0 && tally.missing == 0);
 	/* Methods in order of first appearance. */
 	const char *mine = strstr(md, "| my-baseline |"), *cn = strstr(md, "| closed-normal |");
