@@ -11,6 +11,7 @@
 #include <collision.h>
 #include <fitting.h>
 #include <timing.h>
+#include <tradeoff.h>
 #include <scene.h>
 #include <validation.h>
 
@@ -20,8 +21,8 @@ typedef void (*mkSummaryFn)(mkDoc *d, const char *dir, mkTally *tally);
 
 /* The experiments' sections, in the paper's order. */
 static const mkSummaryFn mkSections[] = {
-	mkValidation_Summary, mkFitting_Summary, mkTiming_Summary, mkCObstacle_Summary, mkScene_Summary,
-	mkCollision_Summary,
+	mkValidation_Summary, mkFitting_Summary, mkTiming_Summary, mkTradeoff_Summary, mkCObstacle_Summary,
+	mkScene_Summary, mkCollision_Summary,
 };
 
 static void mkHelp(FILE *fp)
