@@ -50,8 +50,8 @@ bad(d, m) = pick(d, m) && (strcol("status") ne "ok")
 
 set xrange [-6.6:6.6]
 set yrange [-6.6:6.6]
-set xtics ("1e-6" -6, "1e-4" -4, "1e-2" -2, "1" 0, "1.99" 2, "2-1e-4" 4, "2-1e-6" 6) font ",8"
-set ytics ("1e-6" -6, "1e-4" -4, "1e-2" -2, "1" 0, "1.99" 2, "2-1e-4" 4, "2-1e-6" 6) font ",8"
+set xtics ("1e-6" -6, "1e-3" -3, "1" 0, "2-1e-3" 3, "2-1e-6" 6) font ",8"
+set ytics ("1e-6" -6, "1e-3" -3, "1" 0, "2-1e-3" 3, "2-1e-6" 6) font ",8"
 set cbrange [-17:0]
 set cblabel "log10 error_rel" noenhanced
 set palette defined (-17 "#1a2a6c", -13 "#2a9d8f", -12 "#e9c46a", -6 "#f4a261", 0 "#b21f1f")
@@ -61,7 +61,7 @@ rows = nmeth > 0 ? nmeth : 1
 
 do for [fmt in formats] {
 	if (fmt eq "pdf") {
-		set terminal pdfcairo size 8in, (2.6 * rows + 0.6)."in" font "Helvetica,9"
+		set terminal pdfcairo size 8, (2.6 * rows + 0.6) font "Helvetica,9"
 	} else {
 		if (fmt eq "svg") {
 			set terminal svg size 900, 260 * rows + 60 font "Helvetica,10"
