@@ -21,9 +21,9 @@ void mkExtremesOptions_Default(mkExtremesOptions *o)
 	o->dim_on[2] = o->dim_on[3] = 1;
 	o->set_on[0] = o->set_on[1] = 1;
 	o->n2 = 64;
-	o->n3 = 8;
+	o->n3 = 5;
 	o->s2 = 64;
-	o->s3 = 6;
+	o->s3 = 5;
 	for (int i = 0; i < MK_EXTREMES_METHODS_MAX; ++i)
 		o->method_on[i] = 1;
 }

@@ -37,9 +37,9 @@ int main(int argc, char **argv)
 			mkExtremes_ParseMethods),
 		MK_FLAG_LONG("--n2", "N", "closed forms in 2D: parameters on body 1, 1..100000 (default 64)", &o.n2, 1,
 			100000),
-		MK_FLAG_LONG("--n3", "N", "closed forms in 3D: grid side on body 1, 2..1000 (default 8)", &o.n3, 2, 1000),
+		MK_FLAG_LONG("--n3", "N", "closed forms in 3D: grid side on body 1, 2..1000 (default 5)", &o.n3, 2, 1000),
 		MK_FLAG_LONG("--s2", "N", "sampled methods in 2D: samples per body, 3..4096 (default 64)", &o.s2, 3, 4096),
-		MK_FLAG_LONG("--s3", "N", "sampled methods in 3D: grid side per body, 3..64 (default 6)", &o.s3, 3, 64),
+		MK_FLAG_LONG("--s3", "N", "sampled methods in 3D: grid side per body, 3..64 (default 5)", &o.s3, 3, 64),
 		MK_FLAG_LONG("--cells", "C", "only the first C cells of each dimension, 1..100000 (default all)", &o.cells,
 			1, 100000),
 	};
