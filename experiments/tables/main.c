@@ -9,6 +9,7 @@
 
 #include <cobstacle.h>
 #include <collision.h>
+#include <extremes.h>
 #include <fitting.h>
 #include <timing.h>
 #include <tradeoff.h>
@@ -22,7 +23,7 @@ typedef void (*mkSummaryFn)(mkDoc *d, const char *dir, mkTally *tally);
 /* The experiments' sections, in the paper's order. */
 static const mkSummaryFn mkSections[] = {
 	mkValidation_Summary, mkFitting_Summary, mkTiming_Summary, mkTradeoff_Summary, mkCObstacle_Summary,
-	mkScene_Summary, mkCollision_Summary,
+	mkScene_Summary, mkCollision_Summary, mkExtremes_Summary,
 };
 
 static void mkHelp(FILE *fp)

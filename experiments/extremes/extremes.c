@@ -1,0 +1,233 @@
+/* extremes.c - one cell of the extremes experiment (extremes.h): the
+ * registry's methods run on the cell's pair, each output scored at 256 bits. */
+#include "extremes.h"
+
+#include <mink/mpref_measure.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *const mkExtremes_Columns[] = {
+	"dim", "cell", "family", "set", "method", "n", "points",
+	"eps1_b1", "eps2_b1", "eps1_b2", "eps2_b2", "axis", "shear", "size", "shift",
+	"error_abs", "error_rel", "accuracy", "condition", "nonfinite", "status", "body1", "body2", NULL,
+};
+
+void mkExtremesOptions_Default(mkExtremesOptions *o)
+{
+	memset(o, 0, sizeof *o);
+	o->grid = REF_GRID_QUICK;
+	o->dim_on[2] = o->dim_on[3] = 1;
+	o->set_on[0] = o->set_on[1] = 1;
+	o->n2 = 64;
+	o->n3 = 5;
+	o->s2 = 64;
+	o->s3 = 5;
+	for (int i = 0; i < MK_EXTREMES_METHODS_MAX; ++i)
+		o->method_on[i] = 1;
+}
+
+int mkExtremes_ParseMethods(void *on, const char *text, char *msg, size_t msglen)
+{
+	int *flag = on, want[MK_EXTREMES_METHODS_MAX] = { 0 };
+	int count = mkRegistry_Count() < MK_EXTREMES_METHODS_MAX ? mkRegistry_Count() : MK_EXTREMES_METHODS_MAX;
+	int all = strcmp(text, "all") == 0;
+	const char *s = text;
+	while (!all) {
+		size_t len = strcspn(s, ",");
+		int i = 0;
+		while (i < count && !(strlen(mkRegistry_At(i)->name) == len && strncmp(mkRegistry_At(i)->name, s, len) == 0))
+			++i;
+		if (i == count) {
+			size_t used = (size_t)snprintf(msg, msglen, "is not allowed: must be all or a comma-separated list of");
+			for (int k = 0; k < count && used < msglen; ++k)
+				used += (size_t)snprintf(msg + used, msglen - used, "%s %s", k ? "," : "", mkRegistry_At(k)->name);
+			return -1;
+		}
+		want[i] = 1;
+		if (s[len] == '\0')
+			break;
+		s += len + 1;
+	}
+	for (int i = 0; i < MK_EXTREMES_METHODS_MAX; ++i)
+		flag[i] = all || want[i];
+	return 0;
+}
+
+long mkExtremes_N(const mkExtremesOptions *o, const mkMethod *m, int dim)
+{
+	int sampled = (m->flags & MK_METHOD_SAMPLED) != 0;
+	return dim == 2 ? (sampled ? o->s2 : o->n2) : (sampled ? o->s3 : o->n3);
+}
+
+int mkExtremes_Check(const mkExtremesOptions *o, char *msg, size_t msglen)
+{
+	for (int i = 0; i < mkRegistry_Count() && i < MK_EXTREMES_METHODS_MAX; ++i) {
+		const mkMethod *m = mkRegistry_At(i);
+		for (int dim = 2; dim <= 3; ++dim) {
+			unsigned runs = dim == 2 ? MK_METHOD_2D : MK_METHOD_3D;
+			if (o->method_on[i] && o->dim_on[dim] && (m->flags & runs)
+				&& !mkMethod_CheckN(m, dim, (int)mkExtremes_N(o, m, dim), msg, msglen))
+				return -1;
+		}
+	}
+	return 0;
+}
+
+long mkExtremes_Units(const mkExtremesOptions *o, int *dims, int *cells)
+{
+	long k = 0;
+	for (int dim = 2; dim <= 3; ++dim) {
+		long count = o->dim_on[dim] ? refGrid_Count(o->grid, dim) : 0;
+		if (o->cells > 0 && count > o->cells)
+			count = o->cells;
+		for (long c = 0; c < count; ++c, ++k) {
+			if (dims)
+				dims[k] = dim;
+			if (cells)
+				cells[k] = (int)c;
+		}
+	}
+	return k;
+}
+
+/* ---- one cell ------------------------------------------------------------- */
+
+/* What a cell's rows share. */
+typedef struct mkCellRun {
+	refCell cell;
+	mkSpec s1, s2;
+	mkPointSet out;
+	double *u;       /* body 1's surface parameters of the closed forms: ux, uy, uz */
+	long ucap;
+} mkCellRun;
+
+/* The row of one method on one (cell, set). */
+static void mkExtremes_Row(mkCsv *csv, const mkCellRun *cr, int plus, const mkMethod *m, long n,
+	mkResult rc, const refScore *sc, double condition)
+{
+	const refCell *c = &cr->cell;
+	mkCsv_Int(csv, c->dim);
+	mkCsv_Int(csv, c->index);
+	mkCsv_Str(csv, c->family);
+	mkCsv_Str(csv, plus ? "plus" : "contact");
+	mkCsv_Str(csv, m->name);
+	mkCsv_Int(csv, n);
+	mkCsv_Int(csv, rc == MK_OK ? cr->out.count : 0);
+	mkCsv_Double(csv, c->eps[0][0]);
+	mkCsv_Double(csv, c->eps[0][1]);
+	mkCsv_Double(csv, c->eps[1][0]);
+	mkCsv_Double(csv, c->eps[1][1]);
+	mkCsv_Double(csv, c->axis);
+	mkCsv_Double(csv, c->shear);
+	mkCsv_Double(csv, c->size);
+	mkCsv_Double(csv, c->shift);
+	if (rc == MK_OK && sc->points > 0) {
+		mkCsv_Double(csv, sc->errorAbs);
+		mkCsv_Double(csv, sc->errorRel);
+		mkCsv_Double(csv, sc->accuracy);
+	} else {
+		mkCsv_Empty(csv);
+		mkCsv_Empty(csv);
+		mkCsv_Empty(csv);
+	}
+	mkCsv_Double(csv, condition);
+	mkCsv_Int(csv, rc == MK_OK ? sc->nonfinite : 0);
+	char status[64];
+	if (rc != MK_OK)
+		snprintf(status, sizeof status, "error:%s", mkResult_Name(rc));
+	else
+		snprintf(status, sizeof status, "%s", sc->nonfinite > 0 ? "nonfinite" : "ok");
+	mkCsv_Str(csv, status);
+	mkCsv_Str(csv, c->spec1);
+	mkCsv_Str(csv, c->spec2);
+	mkCsv_EndRow(csv);
+}
+
+/* Run method m on the cell and score it. Returns the method's result; -2 when
+ * the parameters cannot be allocated or the scoring refuses its input. */
+static int mkExtremes_Method(mkCellRun *cr, int plus, const mkMethod *m, long n, refScore *sc, mkResult *rc)
+{
+	int dim = cr->cell.dim;
+	mkSet set = plus ? MK_SET_PLUS : MK_SET_CONTACT;
+	*rc = dim == 2 ? m->run2(cr->s1.body2, cr->s2.body2, set, (int)n, &cr->out)
+		: m->run3(cr->s1.body3, cr->s2.body3, set, (int)n, &cr->out);
+	memset(sc, 0, sizeof *sc);
+	if (*rc != MK_OK)
+		return 0;
+	const double *ux = NULL, *uy = NULL, *uz = NULL;
+	long count = dim == 2 ? n : n * n;
+	if (!(m->flags & MK_METHOD_SAMPLED) && cr->out.count == count) {
+		if (count > cr->ucap) {
+			free(cr->u);
+			cr->u = malloc(3 * (size_t)count * sizeof *cr->u);
+			cr->ucap = cr->u ? count : 0;
+			if (!cr->u)
+				return -2;
+		}
+		ux = cr->u;
+		uy = cr->u + count;
+		uz = dim == 3 ? cr->u + 2 * count : NULL;
+		if ((dim == 2 ? mkSample2_Angles((int)n, cr->u, cr->u + count)
+			: mkSample3_Grid((int)n, cr->u, cr->u + count, cr->u + 2 * count)) != MK_OK)
+			return -2;
+	}
+	return refSum_Score(&cr->cell.b1, &cr->cell.b2, plus, cr->out.x, cr->out.y, dim == 3 ? cr->out.z : NULL,
+		cr->out.count, ux, uy, uz, sc) == 0 ? 0 : -2;
+}
+
+static int mkExtremes_Accepts(const mkMethod *m, const mkCellRun *cr, int plus)
+{
+	char msg[256];
+	mkSet set = plus ? MK_SET_PLUS : MK_SET_CONTACT;
+	return cr->cell.dim == 2 ? mkMethod2_Accepts(m, cr->s1.body2, cr->s2.body2, set, msg, sizeof msg)
+		: mkMethod3_Accepts(m, cr->s1.body3, cr->s2.body3, set, msg, sizeof msg);
+}
+
+int mkExtremes_RunCell(const mkExtremesOptions *o, int dim, int cell, mkCsv *csv, mkExtremesTally *tally)
+{
+	mkCellRun cr;
+	memset(&cr, 0, sizeof cr);
+	char msg[256];
+	if (refGrid_Cell(o->grid, dim, cell, &cr.cell) != 0
+		|| mkSpec_Parse(cr.cell.spec1, dim, "body1", &cr.s1, msg, sizeof msg) != MK_OK
+		|| mkSpec_Parse(cr.cell.spec2, dim, "body2", &cr.s2, msg, sizeof msg) != MK_OK) {
+		fprintf(stderr, "extremes: %dD cell %d cannot be built\n", dim, cell);
+		return -1;
+	}
+	int failed = 0;
+	for (int plus = 0; plus <= 1 && !failed; ++plus) {
+		if (!o->set_on[plus])
+			continue;
+		refCondition cond;
+		/* The condition's sampling as the reference's preview has it: 16
+		 * normals (2D) or a 5 x 5 grid (3D), three draws, a seed per cell. */
+		if (refSum_Condition(&cr.cell.b1, &cr.cell.b2, plus, dim == 2 ? 16 : 5, 3, 1000u + (unsigned)cell, &cond) != 0)
+			cond.value = NAN;
+		for (int i = 0; i < mkRegistry_Count() && i < MK_EXTREMES_METHODS_MAX && !failed; ++i) {
+			const mkMethod *m = mkRegistry_At(i);
+			if (!o->method_on[i] || !(m->flags & (dim == 2 ? MK_METHOD_2D : MK_METHOD_3D)))
+				continue;
+			if (!mkExtremes_Accepts(m, &cr, plus)) {
+				tally->rejected += 1;
+				continue;
+			}
+			long n = mkExtremes_N(o, m, dim);
+			refScore sc;
+			mkResult rc;
+			if (mkExtremes_Method(&cr, plus, m, n, &sc, &rc) != 0) {
+				fprintf(stderr, "extremes: %dD cell %d %s: out of memory or unscorable output\n", dim, cell, m->name);
+				failed = 1;
+				break;
+			}
+			mkExtremes_Row(csv, &cr, plus, m, n, rc, &sc, cond.value);
+			tally->rows += 1;
+			tally->failed += rc != MK_OK;
+			tally->nonfinite += rc == MK_OK ? sc.nonfinite : 0;
+		}
+	}
+	mkPointSet_Free(&cr.out);
+	free(cr.u);
+	return failed ? -1 : 0;
+}
