@@ -204,6 +204,14 @@ const mkMethod *mkRegistry_At(int i)
 	return i >= 0 && i < COUNT ? table[i].method : NULL;
 }
 
+int mkRegistry_Names(const char **names, int max)
+{
+	int count = 0;
+	for (; count < mkRegistry_Count() && count < max; ++count)
+		names[count] = mkRegistry_At(count)->name;
+	return count;
+}
+
 const mkMethod *mkRegistry_Find(const char *name)
 {
 	if (!name) return NULL;

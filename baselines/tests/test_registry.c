@@ -105,5 +105,14 @@ int main(void)
 	ENSURE(mkMethod_HullQhull.run3(sq, ed, MK_SET_CONTACT, 6, &out) == MK_OK);
 	ENSURE(out.dim == 3 && out.count >= 4 && out.count <= 36 * 36);
 	mkPointSet_Free(&out);
+	/* the names, in registry order, and a cap */
+	{
+		const char *listed[64];
+		int n = mkRegistry_Names(listed, 64);
+		ENSURE(n == mkRegistry_Count());
+		for (int i = 0; i < n; ++i)
+			ENSURE(strcmp(listed[i], mkRegistry_At(i)->name) == 0);
+		ENSURE(mkRegistry_Names(listed, 2) == 2 && strcmp(listed[1], mkRegistry_At(1)->name) == 0);
+	}
 	return mk_summary("test_registry");
 }

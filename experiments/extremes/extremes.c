@@ -30,29 +30,8 @@ void mkExtremesOptions_Default(mkExtremesOptions *o)
 
 int mkExtremes_ParseMethods(void *on, const char *text, char *msg, size_t msglen)
 {
-	int *flag = on, want[MK_EXTREMES_METHODS_MAX] = { 0 };
-	int count = mkRegistry_Count() < MK_EXTREMES_METHODS_MAX ? mkRegistry_Count() : MK_EXTREMES_METHODS_MAX;
-	int all = strcmp(text, "all") == 0;
-	const char *s = text;
-	while (!all) {
-		size_t len = strcspn(s, ",");
-		int i = 0;
-		while (i < count && !(strlen(mkRegistry_At(i)->name) == len && strncmp(mkRegistry_At(i)->name, s, len) == 0))
-			++i;
-		if (i == count) {
-			size_t used = (size_t)snprintf(msg, msglen, "is not allowed: must be all or a comma-separated list of");
-			for (int k = 0; k < count && used < msglen; ++k)
-				used += (size_t)snprintf(msg + used, msglen - used, "%s %s", k ? "," : "", mkRegistry_At(k)->name);
-			return -1;
-		}
-		want[i] = 1;
-		if (s[len] == '\0')
-			break;
-		s += len + 1;
-	}
-	for (int i = 0; i < MK_EXTREMES_METHODS_MAX; ++i)
-		flag[i] = all || want[i];
-	return 0;
+	const char *names[MK_EXTREMES_METHODS_MAX];
+	return mkArg_NameList(text, names, mkRegistry_Names(names, MK_EXTREMES_METHODS_MAX), (int *)on, msg, msglen);
 }
 
 long mkExtremes_N(const mkExtremesOptions *o, const mkMethod *m, int dim)

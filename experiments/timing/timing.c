@@ -114,48 +114,15 @@ int mkTiming_ParseLevels(void *levels, const char *text, char *msg, size_t msgle
 	return -1;
 }
 
-/* Comma-separated names out of `names` (or "all") into on[]. */
-static int mkParseNames(const char *text, const char *const *names, int count, int *on, char *msg,
-	size_t msglen)
-{
-	int seen[MK_TIMING_METHODS_MAX] = { 0 };
-	int all = strcmp(text, "all") == 0;
-	for (const char *s = text; !all;) {
-		size_t len = strcspn(s, ",");
-		int found = -1;
-		for (int i = 0; i < count; ++i)
-			if (strlen(names[i]) == len && strncmp(names[i], s, len) == 0)
-				found = i;
-		if (found < 0) {
-			int n = snprintf(msg, msglen, "is not allowed: must be a comma-separated list of ");
-			for (int i = 0; i < count && n >= 0 && (size_t)n < msglen; ++i)
-				n += snprintf(msg + n, msglen - (size_t)n, "%s, ", names[i]);
-			if (n >= 0 && (size_t)n < msglen)
-				snprintf(msg + n, msglen - (size_t)n, "or all");
-			return -1;
-		}
-		seen[found] = 1;
-		if (s[len] == '\0')
-			break;
-		s += len + 1;
-	}
-	for (int i = 0; i < count; ++i)
-		on[i] = all || seen[i];
-	return 0;
-}
-
 int mkTiming_ParseCases(void *on, const char *text, char *msg, size_t msglen)
 {
-	return mkParseNames(text, mkTiming_CaseNames, MK_TIMING_CASES, (int *)on, msg, msglen);
+	return mkArg_NameList(text, mkTiming_CaseNames, MK_TIMING_CASES, (int *)on, msg, msglen);
 }
 
 int mkTiming_ParseMethods(void *on, const char *text, char *msg, size_t msglen)
 {
 	const char *names[MK_TIMING_METHODS_MAX];
-	int count = 0;
-	for (; count < mkRegistry_Count() && count < MK_TIMING_METHODS_MAX; ++count)
-		names[count] = mkRegistry_At(count)->name;
-	return mkParseNames(text, names, count, (int *)on, msg, msglen);
+	return mkArg_NameList(text, names, mkRegistry_Names(names, MK_TIMING_METHODS_MAX), (int *)on, msg, msglen);
 }
 
 /* ---- draws ----------------------------------------------------------------- */

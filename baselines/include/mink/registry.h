@@ -56,6 +56,9 @@ MK_EXTERN_C_BEGIN
 MK_API int mkRegistry_Count(void);
 MK_API const mkMethod *mkRegistry_At(int i);
 MK_API const mkMethod *mkRegistry_Find(const char *name);
+/* The names of the first `max` entries, in registry order, into names[];
+ * returns how many were written. */
+MK_API int mkRegistry_Names(const char **names, int max);
 
 /* Resolution limits. Closed forms: n >= 1 in 2D, n >= 2 in 3D (an n x n
  * grid with both poles). Sampled methods need n >= 3 per body (fewer samples

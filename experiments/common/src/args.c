@@ -177,3 +177,34 @@ mkArgsStep mkArgs_Step(mkArgs *a, const mkOption *opts, int count, const char **
 	*name = opt->name;
 	return MK_ARGS_OPTION;
 }
+
+int mkArg_NameList(const char *text, const char *const *names, int count, int *on, char *msg,
+	size_t msglen)
+{
+	int seen[MK_NAMELIST_MAX] = { 0 };
+	if (count > MK_NAMELIST_MAX)
+		count = MK_NAMELIST_MAX;
+	int all = strcmp(text, "all") == 0;
+	for (const char *s = text; !all;) {
+		size_t len = strcspn(s, ",");
+		int found = -1;
+		for (int i = 0; i < count; ++i)
+			if (strlen(names[i]) == len && strncmp(names[i], s, len) == 0)
+				found = i;
+		if (found < 0) {
+			int n = snprintf(msg, msglen, "is not allowed: must be a comma-separated list of ");
+			for (int i = 0; i < count && n >= 0 && (size_t)n < msglen; ++i)
+				n += snprintf(msg + n, msglen - (size_t)n, "%s, ", names[i]);
+			if (n >= 0 && (size_t)n < msglen)
+				snprintf(msg + n, msglen - (size_t)n, "or all");
+			return -1;
+		}
+		seen[found] = 1;
+		if (s[len] == '\0')
+			break;
+		s += len + 1;
+	}
+	for (int i = 0; i < count; ++i)
+		on[i] = all || seen[i];
+	return 0;
+}

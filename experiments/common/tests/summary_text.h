@@ -37,4 +37,18 @@ static void mkSummary_Expect(const char *text, const char *want)
 	ENSURE(strstr(text, want) != NULL);
 }
 
+/* The section of `name` with no result in <root>/none: it must say so
+ * ("<name>.csv` does not exist (run the `<name>` driver)"); tally is passed
+ * through for the caller to check. */
+static inline void mkSummary_ExpectMissing(mkSummaryFn summary, const char *root, const char *name, mkTally *tally)
+{
+	char dir[4096], want[256];
+	snprintf(dir, sizeof dir, "%s/none", root);
+	snprintf(want, sizeof want, "%s.csv` does not exist (run the `%s` driver)", name, name);
+	char *md = mkSummary_Text(summary, dir, tally);
+	mkSummary_Expect(md, "**NOT REPRODUCED YET**: `");
+	mkSummary_Expect(md, want);
+	free(md);
+}
+
 #endif

@@ -64,5 +64,14 @@ int main(void)
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_ERROR);
 	ENSURE(strcmp(msg, "option --n needs a value (see --help)") == 0);
 	ENSURE(mkArgs_Step(&a, opts, 3, &name, &value, msg, sizeof msg) == MK_ARGS_END);
+	/* name lists: "all", a subset in any order, an unknown name */
+	{
+		static const char *const names[] = { "EE", "ES", "SQ" };
+		int on[3] = { 0, 0, 0 };
+		ENSURE(mkArg_NameList("all", names, 3, on, msg, sizeof msg) == 0 && on[0] && on[1] && on[2]);
+		ENSURE(mkArg_NameList("SQ,EE", names, 3, on, msg, sizeof msg) == 0 && on[0] && !on[1] && on[2]);
+		ENSURE(mkArg_NameList("EE,XY", names, 3, on, msg, sizeof msg) == -1);
+		ENSURE(strcmp(msg, "is not allowed: must be a comma-separated list of EE, ES, SQ, or all") == 0);
+	}
 	return mk_summary("common.test_args");
 }

@@ -25,6 +25,13 @@ int mkArg_U64(const char *flag, const char *text, uint64_t *out, char *msg, size
 int mkArg_Choice(const char *flag, const char *text, const char *const *names, int count,
 	int *out, char *msg, size_t msglen);
 
+/* "all" or a comma-separated list of names out of `names` (a MK_FLAG_TEXT
+ * parse step): on[i] = 1 for the names given (all of them for "all"),
+ * else 0. Returns 0, or -1 with "is not allowed: must be a comma-separated
+ * list of a, b, ..., or all". At most MK_NAMELIST_MAX names are known. */
+#define MK_NAMELIST_MAX 64
+int mkArg_NameList(const char *text, const char *const *names, int count, int *on, char *msg, size_t msglen);
+
 /* A kernel name (auto, scalar, avx2, avx512) that this CPU and build can
  * run (mkImpl_Available); *out is an mkImpl value. */
 int mkArg_Impl(const char *flag, const char *text, int *out, char *msg, size_t msglen);
