@@ -26,8 +26,7 @@ int main(int argc, char **argv)
 	mkFlag flags[] = {
 		MK_FLAG_CHOICE("--pair", "ellipsoids|superquadrics|near|deep|both|all",
 			"which pair kinds (default all)", &pairs, mkPairChoices),
-		MK_FLAG_CHOICE("--rotations", "paper|uniform", "rotation draw: the reference code's normalised\n"
-			"positive quaternion, or uniform on SO(3) (default paper)", &rotations, mkRotDraw_Names),
+		MK_FLAG_ROTATIONS(&rotations),
 		MK_FLAG_DOUBLE("--margin", "M", "statuses are compared where |referee sd| > M * scale,\n"
 			"0..1 (default 1e-9)", &o.margin, 0.0, 1.0),
 		MK_FLAG_REPEAT("--limit", "NAME=N", "run entry NAME on trials < N only (later trials: rows\n"

@@ -33,8 +33,7 @@ int main(int argc, char **argv)
 			"3D levels: grid side n (n x n points per body), 3..3000;\n"
 			"LIST is comma-separated integers or START:STEP:STOP ranges\n"
 			"(default 2d=20:10:500 and 3d=5:5:50, the paper's)", o.levels, mkTiming_ParseLevels),
-		MK_FLAG_CHOICE("--rotations", "paper|uniform", "3D rotation draw: the reference code's normalised\n"
-			"positive quaternion, or uniform on SO(3) (default paper)", &rotations, mkRotDraw_Names),
+		MK_FLAG_ROTATIONS(&rotations),
 		MK_FLAG_DOUBLE("--budget", "SECONDS", "time budget per (dim, case, level, method) cell, 0..1e6\n"
 			"(default 2): when T warm-up times exceed it, the cell runs\n"
 			"max(K, floor(budget / warm-up)) trials instead of T", &o.budget, 0.0, 1e6),

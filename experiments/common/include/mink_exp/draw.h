@@ -24,6 +24,12 @@ typedef enum mkRotDraw { MK_ROT_PAPER = 0, MK_ROT_UNIFORM = 1 } mkRotDraw;
 /* "paper", "uniform": the names of --rotations, in mkRotDraw order. */
 extern const char *const mkRotDraw_Names[2];
 
+/* The option every driver with 3D rotations takes (mink_exp/driver.h):
+ * --rotations paper|uniform into an int holding an mkRotDraw. */
+#define MK_FLAG_ROTATIONS(ptr) \
+	MK_FLAG_CHOICE("--rotations", "paper|uniform", "3D rotation draw: the reference code's normalised\n" \
+		"positive quaternion, or uniform on SO(3) (default paper)", ptr, mkRotDraw_Names)
+
 /* A quaternion (w, x, y, z) by `kind` (4 numbers for paper, 3 for uniform),
  * not normalised for paper. */
 void mkDraw_Quat(mkRng *rng, mkRotDraw kind, double q[4]);
