@@ -68,9 +68,7 @@ int main(int argc, char **argv)
 			&o.fig_slices, 1, 100000),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkCObstacleDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkCObstacleDriver, flags, argc, argv);
 	if (o.fig_obstacles > 0 && o.fig_slices > o.headings) {
 		mkRun_Fail(&run, "--fig-slices = '%ld' is out of range: must be an integer in [1, %ld] (the headings)",
 			o.fig_slices, o.headings);

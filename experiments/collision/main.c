@@ -33,9 +33,7 @@ int main(int argc, char **argv)
 			"with status skipped); repeatable (default none)", &o, mkCollision_ParseLimit),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkCollisionDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkCollisionDriver, flags, argc, argv);
 	o.seed = run.seed;
 	o.rotations = (mkRotDraw)rotations;
 	int on[MK_COLLISION_KINDS], kinds = 0;

@@ -28,9 +28,7 @@ int main(int argc, char **argv)
 		MK_FLAG_IMPL("--impl", "closed-form kernel (default auto)", &impl),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkDemosDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkDemosDriver, flags, argc, argv);
 	for (int f = 1; f <= 4; ++f)
 		o.figure[f] = figure == 4 || figure == f - 1;
 	o.impl = (mkImpl)impl;

@@ -11,9 +11,7 @@ int main(int argc, char **argv)
 	long n = 100;
 	mkFlag flags[] = { MK_FLAG_LONG("--n", "N", "points per trial, 3..100000 (default 100)", &n, 3, 100000) };
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkExampleDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkExampleDriver, flags, argc, argv);
 	mkMeta_SetInt(&run.meta, "n", n);
 	if (mkRun_OpenCsv(&run, run.end - run.begin) != 0)
 		return mkRun_End(&run, 1);

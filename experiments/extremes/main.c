@@ -44,9 +44,7 @@ int main(int argc, char **argv)
 			1, 100000),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkExtremesDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkExtremesDriver, flags, argc, argv);
 	o.grid = grid ? REF_GRID_FULL : REF_GRID_QUICK;
 	o.dim_on[2] = dims != 1;
 	o.dim_on[3] = dims != 0;

@@ -26,9 +26,7 @@ int main(int argc, char **argv)
 			"3: cube, ellipsoid, cylinder, both models", &caseChoice, mkCaseNames),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkFittingDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkFittingDriver, flags, argc, argv);
 
 	/* The run's units are (case, trial) pairs, case by case; a shard takes a
 	 * contiguous block of them. */

@@ -91,9 +91,7 @@ int main(int argc, char **argv)
 		MK_FLAG_SWITCH("--skip-b", "leave Part B out", &skip_b),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkSceneXDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkSceneXDriver, flags, argc, argv);
 	o.seed = run.seed;
 	char msg[1024];
 	mkRotations rot;

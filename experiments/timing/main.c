@@ -41,9 +41,7 @@ int main(int argc, char **argv)
 			&o.min_trials, 1, 1000000),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkTimingDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkTimingDriver, flags, argc, argv);
 	o.trials = run.trials;
 	o.seed = run.seed;
 	o.dim_on[2] = dims != 1;

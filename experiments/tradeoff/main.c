@@ -32,9 +32,7 @@ int main(int argc, char **argv)
 		MK_FLAG_LONG("--repeats", "R", "timed calls per row (median), 1..64; a call over 50 ms\n"
 			"is timed once (default 5)", &o.repeats, 1, 64),
 	};
-	int status = mkRun_Begin(&run, &mkTradeoffDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkTradeoffDriver, flags, argc, argv);
 	mkTradeoff_Start(&o, &run, dims, &run.meta);
 	long units = MK_TRADEOFF_CASES * (o.dim_on[2] + o.dim_on[3]);
 	if (mkRun_OpenCsv(&run, units) != 0)

@@ -29,9 +29,7 @@ int main(int argc, char **argv)
 			"the paper form always runs the scalar reference)", &impl),
 	};
 	mkRun run;
-	int status = mkRun_Begin(&run, &mkValidationDriver, flags, MK_COUNT(flags), argc, argv);
-	if (status != MK_RUN_GO)
-		return mkRun_Status(status);
+	MK_RUN_BEGIN(&run, &mkValidationDriver, flags, argc, argv);
 	o.seed = run.seed;
 	o.rotations = (mkRotDraw)rotations;
 	o.set = set == 0 ? MK_SET_CONTACT : MK_SET_PLUS;

@@ -12,16 +12,14 @@
  *
  *   static const char *const columns[] = { "dim", "trial", ... };
  *   static const mkDriver driver = { "validation", "The numerical ...",
- *       2, columns, MK_COUNT(columns), MK_SHARED_TRIALS | MK_SHARED_SEED | MK_SHARED_SHARD,
- *       100, 2022 };
+ *       2, columns, MK_SHARED_TRIALS | MK_SHARED_SEED | MK_SHARED_SHARD, 100, 10000000, 2022, NULL };
  *   int main(int argc, char **argv) {
  *       MyOptions o = defaults;
  *       mkFlag flags[] = { MK_FLAG_LONG("--n", "N", "points on B1", &o.n, 1, 10000000), ... };
  *       mkRun run;
- *       int status = mkRun_Begin(&run, &driver, flags, MK_COUNT(flags), argc, argv);
- *       if (status != MK_RUN_GO) return mkRun_Status(status);
+ *       MK_RUN_BEGIN(&run, &driver, flags, argc, argv);   // returns from main on --help or a bad flag
  *       mkMeta_Set(&run.meta, "my_key", "...");        // the driver's own sidecar keys
- *       if (mkRun_OpenCsv(&run) != 0) return mkRun_End(&run, 1);
+ *       if (mkRun_OpenCsv(&run, run.end - run.begin) != 0) return mkRun_End(&run, 1);
  *       for (long t = run.begin; t < run.end; ++t) { ...rows into run.csv...; mkRun_Step(&run, 1); }
  *       return mkRun_End(&run, failed);
  *   }
@@ -152,6 +150,14 @@ typedef struct mkRun {
 int mkRun_Begin(mkRun *run, const mkDriver *d, mkFlag *flags, int count, int argc, char **argv);
 /* The process exit status for a status of mkRun_Begin other than MK_RUN_GO. */
 int mkRun_Status(int begin_status);
+/* In a driver's main: mkRun_Begin over the array `flags`, returning the
+ * exit status from main unless the run goes on. */
+#define MK_RUN_BEGIN(run, driver, flags, argc, argv) \
+	do { \
+		int mk_begin = mkRun_Begin(run, driver, flags, MK_COUNT(flags), argc, argv); \
+		if (mk_begin != MK_RUN_GO) \
+			return mkRun_Status(mk_begin); \
+	} while (0)
 
 /* Open the CSV (temporary file, header of the driver's columns) and start
  * the progress line over `units` steps. Returns 0, or -1 after printing why. */
