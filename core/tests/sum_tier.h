@@ -31,6 +31,22 @@ static mkResult run3(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkParam par
 		o[slot][3], o[slot][4], o[slot][5]);
 }
 
+/* A random pair of superquadrics of the paper's 3D draws (semi-axes
+ * U(1,10) and U(1,6), exponents U(0.1,1.9), rotated) centred at (1,2,3),
+ * into b[0], b[1]; returns a bound on the problem's size for relative
+ * errors. */
+static double draw_pair3(unsigned long long *seed, mkBody3 b[2])
+{
+	for (int j = 0; j < 2; ++j) {
+		double hi = j ? 6 : 10;
+		mkShape3 s = {mk_test_uniform(seed, 1, hi), mk_test_uniform(seed, 1, hi), mk_test_uniform(seed, 1, hi),
+			mk_test_uniform(seed, 0.1, 1.9), mk_test_uniform(seed, 0.1, 1.9)};
+		mkMat3 M = mkMat3_FromQuat(mk_test_unit(seed), mk_test_unit(seed), mk_test_unit(seed), mk_test_unit(seed));
+		b[j] = mkBody3_Make(s, M, (mkVec3){1, 2, 3});
+	}
+	return 10 + 3 * (b[0].shape.a + b[0].shape.b + b[0].shape.c + b[1].shape.a + b[1].shape.b + b[1].shape.c);
+}
+
 /* Two circles of radii 2 and 3 (the ellipse kernel), and the same circles as
  * superellipses of eps = 1 + nudge (the general kernel): the contact space is
  * the circle of radius 5 about t1 and the kissing point lies at 2/5 of the

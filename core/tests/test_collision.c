@@ -178,20 +178,29 @@ static double mk_brute(mkBody3 b1, mkBody3 b2)
 	return best;
 }
 
+/* The shapes of the paper's collision draws, in this order: semi-axes
+ * U(1,11)^3 and U(1,6)^3, then (unless ellipsoids) eps1, eps2 ~ U(0.1,1.9)
+ * for each body. */
+static void draw_shapes(unsigned long long *seed, int ellipsoids, mkShape3 *s1, mkShape3 *s2)
+{
+	*s1 = (mkShape3){ mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), 1, 1 };
+	*s2 = (mkShape3){ mk_test_uniform(seed, 1, 6), mk_test_uniform(seed, 1, 6), mk_test_uniform(seed, 1, 6), 1, 1 };
+	if (ellipsoids)
+		return;
+	s1->eps1 = mk_test_uniform(seed, 0.1, 1.9);
+	s1->eps2 = mk_test_uniform(seed, 0.1, 1.9);
+	s2->eps1 = mk_test_uniform(seed, 0.1, 1.9);
+	s2->eps2 = mk_test_uniform(seed, 0.1, 1.9);
+}
+
 static void test_random_pairs(void)
 {
 	unsigned long long seed = 2022;
 	int sep = 0, ovl = 0, fails = 0, wrong = 0;
 	for (int trial = 0; trial < 300; ++trial) {
 		int ell = trial % 2 == 0;
-		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
-		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
-		if (!ell) {
-			s1.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
-			s1.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
-			s2.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
-			s2.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
-		}
+		mkShape3 s1, s2;
+		draw_shapes(&seed, ell, &s1, &s2);
 		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15));
 		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
@@ -247,14 +256,8 @@ static void test_overlaps(void)
 	int missed = 0, count = 0;
 	for (int trial = 0; trial < 100; ++trial) {
 		int ell = trial % 2 == 0;
-		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
-		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
-		if (!ell) {
-			s1.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
-			s1.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
-			s2.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
-			s2.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
-		}
+		mkShape3 s1, s2;
+		draw_shapes(&seed, ell, &s1, &s2);
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3));
 		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0)), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
 		mkCollision3 c;
@@ -315,14 +318,8 @@ static void test_near_touching(void)
 	const double deltas[] = { 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-8, 1e-10, -1e-8, -1e-10 };
 	for (int trial = 0; trial < 40; ++trial) {
 		int ell = trial % 2 == 0;
-		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
-		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
-		if (!ell) {
-			s1.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
-			s1.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
-			s2.eps1 = mk_test_uniform(&seed, 0.1, 1.9);
-			s2.eps2 = mk_test_uniform(&seed, 0.1, 1.9);
-		}
+		mkShape3 s1, s2;
+		draw_shapes(&seed, ell, &s1, &s2);
 		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0));
 		mkVec3 dir = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)));
 		mkBody3 b2 = mkBody3_Make(s2, mk_rand_rot(&seed), mkVec3_Scale(dir, 30.0));

@@ -69,14 +69,7 @@ static void test_agreement(void)
 	n = g * g;
 	for (int trial = 0; trial < 20; ++trial) {
 		mkBody3 b[2];
-		for (int j = 0; j < 2; ++j) {
-			double hi = j ? 6 : 10;
-			mkShape3 s = {mk_test_uniform(&seed, 1, hi), mk_test_uniform(&seed, 1, hi), mk_test_uniform(&seed, 1, hi),
-				mk_test_uniform(&seed, 0.1, 1.9), mk_test_uniform(&seed, 0.1, 1.9)};
-			mkMat3 M = mkMat3_FromQuat(mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed));
-			b[j] = mkBody3_Make(s, M, (mkVec3){1, 2, 3});
-		}
-		double scale = 10 + 3 * (b[0].shape.a + b[0].shape.b + b[0].shape.c + b[1].shape.a + b[1].shape.b + b[1].shape.c);
+		double scale = draw_pair3(&seed, b);
 		for (int param = 0; param < 2; ++param)
 			for (int form = 0; form < 2; ++form) {
 				ENSURE(run3(b[0], b[1], MK_SET_CONTACT, form, param, MK_IMPL_SCALAR, n, 0) == MK_OK);
