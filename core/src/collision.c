@@ -35,6 +35,8 @@
 #define MK_LINE_AFTER 6
 /* Plain Newton steps tried before the trust region takes over. */
 #define MK_NEWTON_MAX 12
+/* Halvings of a plain Newton step before the trust region takes over. */
+#define MK_BACKTRACK 4
 
 const char *mkContact_Name(mkContact c)
 {
@@ -242,22 +244,30 @@ static void mkSupAt_Tangent(const mkSupBody *b, const mkSupAt *a, mkVec3 t1, mkV
 		A[2] += (mkVec3_Dot(t2, w2) - e2 * e2) * inv;
 		return;
 	}
+	/* u^T Hp w from the structure of the canonical Hessian (mkSupAt_CanonHess)
+	 * without forming it: with G the inner gradient and u' = (u1, u2),
+	 * u^T Hp w = o00 (G.u')(G.w') + k2 (sum ci u_i w_i - (G.u')(G.w'))
+	 *          + o01 ((G.u') w3 + (G.w') u3) + o11 u3 w3. */
 	const double (*P)[3] = b->P;
-	double Hp[3][3];
-	mkSupAt_CanonHess(b, a, Hp);
 	double u[3], w[3];
 	for (int j = 0; j < 3; ++j) {
 		u[j] = P[0][j] * t1.x + P[1][j] * t1.y + P[2][j] * t1.z;
 		w[j] = P[0][j] * t2.x + P[1][j] * t2.y + P[2][j] * t2.z;
 	}
-	double Hu[3], Hw[3];
-	for (int i = 0; i < 3; ++i) {
-		Hu[i] = Hp[i][0] * u[0] + Hp[i][1] * u[1] + Hp[i][2] * u[2];
-		Hw[i] = Hp[i][0] * w[0] + Hp[i][1] * w[1] + Hp[i][2] * w[2];
-	}
-	A[0] += u[0] * Hu[0] + u[1] * Hu[1] + u[2] * Hu[2];
-	A[1] += u[0] * Hw[0] + u[1] * Hw[1] + u[2] * Hw[2];
-	A[2] += w[0] * Hw[0] + w[1] * Hw[1] + w[2] * Hw[2];
+	double G0 = a->sg[0] * a->in.w[0], G1 = a->sg[1] * a->in.w[1];
+	double N = a->out.norm;
+	double k1 = (b->q1 - 1.0) / N;
+	double co0 = mkCurv(a->out.w[0], a->out.r[0], b->q1), co1 = mkCurv(a->out.w[1], a->out.r[1], b->q1);
+	double ci0 = mkCurv(a->in.w[0], a->in.r[0], b->q2), ci1 = mkCurv(a->in.w[1], a->in.r[1], b->q2);
+	double o00 = k1 * (co0 - a->out.w[0] * a->out.w[0]);
+	double o01 = -k1 * a->out.w[0] * a->sg[2] * a->out.w[1];
+	double o11 = k1 * (co1 - a->out.w[1] * a->out.w[1]);
+	double k2 = (b->q2 - 1.0) / N * co0;
+	double gu = G0 * u[0] + G1 * u[1], gw = G0 * w[0] + G1 * w[1];
+	double og = o00 - k2;
+	A[0] += og * gu * gu + k2 * (ci0 * u[0] * u[0] + ci1 * u[1] * u[1]) + 2.0 * o01 * gu * u[2] + o11 * u[2] * u[2];
+	A[1] += og * gu * gw + k2 * (ci0 * u[0] * w[0] + ci1 * u[1] * w[1]) + o01 * (gu * w[2] + gw * u[2]) + o11 * u[2] * w[2];
+	A[2] += og * gw * gw + k2 * (ci0 * w[0] * w[0] + ci1 * w[1] * w[1]) + 2.0 * o01 * gw * w[2] + o11 * w[2] * w[2];
 }
 
 mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J)
@@ -557,12 +567,13 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
 			break;
 		}
 		double i1 = 1.0 / h1, i2 = 1.0 / h2, C[3][3];
-		double a[3] = { s1.x, s1.y, s1.z }, b[3] = { s2.x, s2.y, s2.z }, u[3] = { n.x, n.y, n.z };
-		double shift = h1 + h2; /* positive, of the size of the curvatures */
-		for (int i = 0; i < 3; ++i)
-			for (int j = i; j < 3; ++j)
-				C[i][j] = C[j][i] = (Q1[i][j] - a[i] * a[j]) * i1 + (Q2[i][j] - b[i] * b[j]) * i2
-					+ (i == j ? f : 0.0) + (shift - f) * u[i] * u[j];
+		double w = h1 + h2 - f; /* the shift: n's eigenvalue becomes h1 + h2 > 0 */
+		C[0][0] = (Q1[0][0] - s1.x * s1.x) * i1 + (Q2[0][0] - s2.x * s2.x) * i2 + f + w * n.x * n.x;
+		C[1][1] = (Q1[1][1] - s1.y * s1.y) * i1 + (Q2[1][1] - s2.y * s2.y) * i2 + f + w * n.y * n.y;
+		C[2][2] = (Q1[2][2] - s1.z * s1.z) * i1 + (Q2[2][2] - s2.z * s2.z) * i2 + f + w * n.z * n.z;
+		C[0][1] = C[1][0] = (Q1[0][1] - s1.x * s1.y) * i1 + (Q2[0][1] - s2.x * s2.y) * i2 + w * n.x * n.y;
+		C[0][2] = C[2][0] = (Q1[0][2] - s1.x * s1.z) * i1 + (Q2[0][2] - s2.x * s2.z) * i2 + w * n.x * n.z;
+		C[1][2] = C[2][1] = (Q1[1][2] - s1.y * s1.z) * i1 + (Q2[1][2] - s2.y * s2.z) * i2 + w * n.y * n.z;
 		mkVec3 z;
 		if (!mkSolveSym3(C, gr, &z))
 			break;
@@ -641,21 +652,32 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 				break;
 			double z0 = (cc * cur->g[0] - b * cur->g[1]) / det, z1 = (a * cur->g[1] - b * cur->g[0]) / det;
 			double zlen = mkLen2(z0, z1);
-			if (!(zlen <= MK_TR_MAX))
+			if (!(zlen <= 1e300))
 				break;
 			*iters += 1;
-			double pred = 0.5 * (cur->g[0] * z0 + cur->g[1] * z1);
+			double slope = cur->g[0] * z0 + cur->g[1] * z1; /* g.z > 0: an ascent direction */
+			double pred = 0.5 * slope;
 			if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
 				/* The convergence test (b) of the trust region below. */
 				done = 1;
 				break;
 			}
-			mkVec3 m = mkVec3_Add(cur->n, mkVec3_Add(mkVec3_Scale(cur->t1, z0), mkVec3_Scale(cur->t2, z1)));
-			mkNormal_Eval(c, mkVec3_Normalize(m), nxt);
-			double gain = nxt->f - cur->f;
+			/* Backtracking (Armijo) along the Newton direction, the step
+			 * first cut to MK_TR_MAX. */
+			double t = zlen > MK_TR_MAX ? MK_TR_MAX / zlen : 1.0;
 			double noise = 64.0 * DBL_EPSILON * (fabs(cur->f) + c->scale);
-			if (!(pred > noise ? gain >= 0.25 * pred : gain >= -noise)) {
-				radius = 0.25 * zlen;
+			int taken = 0;
+			for (int k = 0; k < MK_BACKTRACK; ++k, t *= 0.5) {
+				mkVec3 m = mkVec3_Add(cur->n, mkVec3_Add(mkVec3_Scale(cur->t1, t * z0), mkVec3_Scale(cur->t2, t * z1)));
+				mkNormal_Eval(c, mkVec3_Normalize(m), nxt);
+				double gain = nxt->f - cur->f;
+				if (t * slope > noise ? gain >= 1e-4 * t * slope : gain >= -noise) {
+					taken = 1;
+					break;
+				}
+			}
+			if (!taken) {
+				radius = t * zlen;
 				break;
 			}
 			mkNormalState *tmp = cur;
@@ -757,7 +779,8 @@ static double mkScale(const mkBody3 *b1, const mkBody3 *b2)
 			for (int j = 0; j < 3; ++j)
 				fro += b[k]->M.m[i][j] * b[k]->M.m[i][j];
 		mkShape3 s = b[k]->shape;
-		r[k] = fmax(s.a, fmax(s.b, s.c)) * sqrt(fro);
+		double big = s.a > s.b ? s.a : s.b;
+		r[k] = (big > s.c ? big : s.c) * sqrt(fro);
 	}
 	return mkVec3_Length(mkVec3_Sub(b2->t, b1->t)) + r[0] + r[1];
 }
