@@ -312,7 +312,7 @@ static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkPairAt *e)
 	mkSupBody_Eval(&c->k1, m, &e->a1);
 	mkSupBody_Eval(&c->k2, mkVec3_Neg(m), &e->a2);
 	e->x = mkVec3_Sub(e->a1.s, e->a2.s);
-	e->H = e->a1.h + e->a2.h;
+	e->H = mkVec3_Dot(m, e->x);
 	return e->H;
 }
 
@@ -556,7 +556,7 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
 		H1 = mkVec3_Dot(N, S1); \
 		H2 = -mkVec3_Dot(N, S2); \
 		mkVec3 r_ = mkVec3_Sub(d, mkVec3_Sub(S1, S2)); \
-		F = mkVec3_Dot(N, d) - (H1 + H2); \
+		F = mkVec3_Dot(N, d) - mkVec3_Dot(N, mkVec3_Sub(S1, S2)); \
 		G = mkVec3_Sub(r_, mkVec3_Scale(N, mkVec3_Dot(N, r_))); \
 	} while (0)
 	MK_ELL_EVAL(n, v1, v2, s1, s2, h1, h2, f, gr);
@@ -610,7 +610,7 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
 	st->e.a2.h = h2;
 	st->e.a2.v = mkVec3_Neg(v2);
 	st->e.x = mkVec3_Sub(s1, s2);
-	st->e.H = h1 + h2;
+	st->e.H = mkVec3_Dot(n, st->e.x);
 	st->f = f;
 	mkVec3 r = mkVec3_Sub(d, st->e.x);
 	st->g[0] = mkVec3_Dot(st->t1, r);
