@@ -106,6 +106,40 @@ static mkPairNorm mkPair(double u, double v, double q, double iq)
 	return p;
 }
 
+/* Two pair norms at once, step by step in lock-step: the four
+ * transcendental calls of one pair norm form a chain (each needs the one
+ * before), so interleaving two independent chains lets the processor overlap
+ * them. The same arithmetic as mkPair. */
+static void mkPair2(const double u[2], const double v[2], const double q[2], const double iq[2], mkPairNorm p[2])
+{
+	double m[2], ratio[2], t[2], opt[2], irm[2], L[2];
+	int big[2];
+	for (int l = 0; l < 2; ++l) {
+		big[l] = u[l] >= v[l] ? 0 : 1;
+		m[l] = big[l] == 0 ? u[l] : v[l];
+		double k = big[l] == 0 ? v[l] : u[l];
+		ratio[l] = m[l] > 0.0 ? k / m[l] : 0.0;
+	}
+	for (int l = 0; l < 2; ++l)
+		L[l] = ratio[l] > 0.0 ? log(ratio[l]) : 0.0;
+	for (int l = 0; l < 2; ++l)
+		t[l] = ratio[l] > 0.0 ? exp(q[l] * L[l]) : 0.0;
+	for (int l = 0; l < 2; ++l) {
+		opt[l] = 1.0 + t[l];
+		L[l] = log(opt[l]);
+	}
+	for (int l = 0; l < 2; ++l)
+		irm[l] = exp(iq[l] * L[l]);
+	for (int l = 0; l < 2; ++l) {
+		double rm = 1.0 / irm[l], wm = irm[l] / opt[l];
+		p[l].norm = m[l] * irm[l];
+		p[l].r[big[l]] = rm;
+		p[l].r[1 - big[l]] = ratio[l] * rm;
+		p[l].w[big[l]] = wm;
+		p[l].w[1 - big[l]] = ratio[l] > 0.0 ? t[l] / ratio[l] * wm : 0.0;
+	}
+}
+
 /* A placed body's constants for the loop: P = M diag(a, b, c), so that the
  * canonical argument is p = P^T y and the support point P grad N(p); for an
  * ellipsoid Q = P P^T, h(y) = sqrt(y^T Q y), s = Q y / h, J = (Q - s s^T) / h:
@@ -307,10 +341,56 @@ typedef struct mkPairAt {
 	double H;
 } mkPairAt;
 
+/* Both superquadrics' support at y1 and y2, the pair norms in lock-step. */
+static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const mkSupBody *b2, mkVec3 y2, mkSupAt *a2)
+{
+	const mkSupBody *b[2] = { b1, b2 };
+	mkSupAt *a[2] = { a1, a2 };
+	mkVec3 y[2] = { y1, y2 };
+	double p[2][3], u[2], v[2], q[2], iq[2];
+	mkPairNorm in[2], out[2];
+	for (int l = 0; l < 2; ++l) {
+		const double (*P)[3] = b[l]->P;
+		for (int j = 0; j < 3; ++j) {
+			p[l][j] = P[0][j] * y[l].x + P[1][j] * y[l].y + P[2][j] * y[l].z;
+			a[l]->sg[j] = p[l][j] < 0.0 ? -1.0 : 1.0;
+		}
+		u[l] = fabs(p[l][0]);
+		v[l] = fabs(p[l][1]);
+		q[l] = b[l]->q2;
+		iq[l] = b[l]->iq2;
+	}
+	mkPair2(u, v, q, iq, in);
+	for (int l = 0; l < 2; ++l) {
+		u[l] = in[l].norm;
+		v[l] = fabs(p[l][2]);
+		q[l] = b[l]->q1;
+		iq[l] = b[l]->iq1;
+	}
+	mkPair2(u, v, q, iq, out);
+	for (int l = 0; l < 2; ++l) {
+		const double (*P)[3] = b[l]->P;
+		mkSupAt *A = a[l];
+		A->in = in[l];
+		A->out = out[l];
+		double g0 = out[l].w[0] * A->sg[0] * in[l].w[0];
+		double g1 = out[l].w[0] * A->sg[1] * in[l].w[1];
+		double g2 = A->sg[2] * out[l].w[1];
+		A->s = mkVec3_Make(P[0][0] * g0 + P[0][1] * g1 + P[0][2] * g2,
+			P[1][0] * g0 + P[1][1] * g1 + P[1][2] * g2,
+			P[2][0] * g0 + P[2][1] * g1 + P[2][2] * g2);
+		A->h = mkVec3_Dot(y[l], A->s);
+	}
+}
+
 static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkPairAt *e)
 {
-	mkSupBody_Eval(&c->k1, m, &e->a1);
-	mkSupBody_Eval(&c->k2, mkVec3_Neg(m), &e->a2);
+	if (!c->k1.ellipsoid && !c->k2.ellipsoid) {
+		mkSupBody_Eval2(&c->k1, m, &e->a1, &c->k2, mkVec3_Neg(m), &e->a2);
+	} else {
+		mkSupBody_Eval(&c->k1, m, &e->a1);
+		mkSupBody_Eval(&c->k2, mkVec3_Neg(m), &e->a2);
+	}
 	e->x = mkVec3_Sub(e->a1.s, e->a2.s);
 	e->H = mkVec3_Dot(m, e->x);
 	return e->H;
