@@ -15,8 +15,14 @@
  *
  * The pair norms are evaluated from the ratio k/m of the smaller to the larger
  * component: t = (k/m)^q, |v|_q = m (1 + t)^(1/q), r_m = (1 + t)^(-1/q),
- * r_k = (k/m) r_m, w_m = 1 / ((1 + t) r_m), w_k = t / ((1 + t) r_k): one
- * log, one log1p and two exp per pair, no overflow for any finite input. */
+ * r_k = (k/m) r_m, w_m = 1 / ((1 + t) r_m), w_k = t / ((1 + t) r_k): two
+ * log and two exp per pair, no overflow for any finite input. With
+ * P = M diag(a, b, c) formed once per query, p = P^T n and s = P grad N(p).
+ *
+ * MinkSum (Normal) runs plain Newton steps (with backtracking) while they
+ * work and a trust region when they do not; ellipsoid pairs have a Newton
+ * loop of their own in 3D with no transcendental function (see
+ * mkNormal_Ellipsoids). docs/collide.md describes the method. */
 #include <mink/collision.h>
 
 #include <float.h>
