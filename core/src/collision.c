@@ -933,9 +933,9 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
  * directions (both signs), the diagonals of their frames and a lattice over
  * the sphere; Newton restarts from the best MK_RESTARTS of them by f that
  * are not close (within about 18 degrees) to the answer or to each other.
- * For superquadrics f is evaluated only at the MK_SCAN_EXACT candidates
- * that rank best on the ellipsoids of the same axes (on the benchmark's
- * deep overlaps this missed no optimum that the full scan found). */
+ * For superquadrics f is evaluated at the structured candidates and at
+ * the MK_SCAN_EXACT lattice points that rank best on the ellipsoids of the
+ * same axes. */
 enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 4, MK_SCAN_EXACT = 16 };
 
 mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
@@ -988,10 +988,12 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 			for (int i = 0; i < nc; ++i)
 				val[i] = mkIsFinite3(cand[i]) ? mkNormal_Value(&c, cand[i]) : -INFINITY;
 		} else {
-			/* Superquadrics: rank the candidates by f of the ellipsoids
-			 * with the same axes and maps (a square root per body instead
-			 * of eight transcendental functions), and evaluate only the
-			 * best MK_SCAN_EXACT exactly. */
+			/* Superquadrics: f exactly at the structured candidates (the
+			 * reversed centre line, axes and diagonals: where box-like
+			 * bodies have their optima), and at the MK_SCAN_EXACT lattice
+			 * points that rank best by f of the ellipsoids with the same
+			 * axes and maps (a square root per body instead of eight
+			 * transcendental functions). */
 			mkPairCtx e = c;
 			mkBody3 p1 = b1, p2 = b2;
 			p1.shape.eps1 = p1.shape.eps2 = p2.shape.eps1 = p2.shape.eps2 = 1.0;
@@ -1012,7 +1014,8 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 			}
 			double cut = sorted[MK_SCAN_EXACT - 1];
 			for (int i = 0; i < nc; ++i)
-				val[i] = proxy[i] >= cut && proxy[i] > -INFINITY ? mkNormal_Value(&c, cand[i]) : -INFINITY;
+				val[i] = (i < MK_CAND - MK_FIB || proxy[i] >= cut) && proxy[i] > -INFINITY ? mkNormal_Value(&c, cand[i])
+					: -INFINITY;
 		}
 		mkVec3 picked[MK_RESTARTS];
 		int npicked = 0;
