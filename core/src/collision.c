@@ -711,6 +711,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 {
 	double radius = MK_TR_INIT;
 	double tol = MK_COLLIDE3_RESIDUAL_TOL * c->scale;
+	int first = *iters; /* the Newton phase's steps count against MK_COLLIDE3_MAX_ITER */
 	if (c->k1.ellipsoid && c->k2.ellipsoid) {
 		if (mkNormal_Ellipsoids(c, n0, st, iters, res, &radius))
 			return 1;
@@ -777,7 +778,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 	}
 	int rejects = 0;
 	double hist[3] = { -INFINITY, -INFINITY, -INFINITY };
-	for (int it = 0; it < MK_COLLIDE3_MAX_ITER; ++it) {
+	for (int it = *iters - first; it < MK_COLLIDE3_MAX_ITER; ++it) {
 		hist[it % 3] = st->f;
 		*res = mkLen2(st->g[0], st->g[1]);
 		if (*res <= tol)
