@@ -162,7 +162,7 @@ static void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
 	for (int i = 0; i < 3; ++i)
 		for (int j = 0; j < 3; ++j)
 			k->P[i][j] = b->M.m[i][j] * D[j];
-	k->ellipsoid = b->shape.eps1 == 1.0 && b->shape.eps2 == 1.0;
+	k->ellipsoid = mkShape3_IsEllipsoid(b->shape);
 	if (k->ellipsoid) {
 		for (int i = 0; i < 3; ++i)
 			for (int j = i; j < 3; ++j)
