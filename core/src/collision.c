@@ -15,8 +15,14 @@
  *
  * The pair norms are evaluated from the ratio k/m of the smaller to the larger
  * component: t = (k/m)^q, |v|_q = m (1 + t)^(1/q), r_m = (1 + t)^(-1/q),
- * r_k = (k/m) r_m, w_m = 1 / ((1 + t) r_m), w_k = t / ((1 + t) r_k): one
- * log, one log1p and two exp per pair, no overflow for any finite input. */
+ * r_k = (k/m) r_m, w_m = 1 / ((1 + t) r_m), w_k = t / ((1 + t) r_k): two
+ * log and two exp per pair, no overflow for any finite input. With
+ * P = M diag(a, b, c) formed once per query, p = P^T n and s = P grad N(p).
+ *
+ * MinkSum (Normal) runs plain Newton steps (with backtracking) while they
+ * work and a trust region when they do not; ellipsoid pairs have a Newton
+ * loop of their own in 3D with no transcendental function (see
+ * mkNormal_Ellipsoids). docs/collide.md describes the method. */
 #include <mink/collision.h>
 
 #include <float.h>
@@ -33,6 +39,10 @@
 /* From this iteration on, a step whose model was poor (ratio below 0.75) is
  * followed by an exact line search along the stiffest direction. */
 #define MK_LINE_AFTER 6
+/* Plain Newton steps tried before the trust region takes over. */
+#define MK_NEWTON_MAX 12
+/* Halvings of a plain Newton step before the trust region takes over. */
+#define MK_BACKTRACK 4
 
 const char *mkContact_Name(mkContact c)
 {
@@ -56,8 +66,9 @@ static double mkLen2(double a, double b)
 /* ---- the support map with its Jacobian ------------------------------------ */
 
 /* The l_q norm of a pair (u, v), u, v >= 0, not both 0: the norm, the ratios
- * r, the gradient weights w, and the curvature terms c = r^(q-2) (clamped). */
-typedef struct mkPairNorm { double norm, r[2], w[2], c[2]; } mkPairNorm;
+ * r and the gradient weights w (the curvature terms r^(q-2) follow from them
+ * when the Hessian is wanted, mkCurv). */
+typedef struct mkPairNorm { double norm, r[2], w[2]; } mkPairNorm;
 
 static double mkCurv(double w, double r, double q)
 {
@@ -69,7 +80,12 @@ static double mkCurv(double w, double r, double q)
 	return q > 2.0 ? 0.0 : q == 2.0 ? 1.0 : MK_CURV_MAX;
 }
 
-static mkPairNorm mkPair(double u, double v, double q)
+/* iq = 1 / q. With the ratio k/m of the smaller to the larger component and
+ * t = (k/m)^q: |v|_q = m (1 + t)^(1/q), r_m = (1 + t)^(-1/q), r_k = (k/m) r_m,
+ * w_m = r_m^(q-1) = (1 + t)^(1/q) / (1 + t), w_k = (t / (k/m)) w_m. log(1 + t)
+ * (t in [0, 1]) carries an absolute error of an ulp of 1, which is all the
+ * exponential that follows needs, so log1p is not called. */
+static mkPairNorm mkPair(double u, double v, double q, double iq)
 {
 	mkPairNorm p;
 	int big = u >= v ? 0 : 1;
@@ -80,108 +96,222 @@ static mkPairNorm mkPair(double u, double v, double q)
 		p.norm = 0.0;
 		p.r[0] = 1.0; p.r[1] = 0.0;
 		p.w[0] = 1.0; p.w[1] = 0.0;
-		p.c[0] = mkCurv(1.0, 1.0, q); p.c[1] = mkCurv(0.0, 0.0, q);
 		return p;
 	}
 	double ratio = k / m;
 	double t = ratio > 0.0 ? exp(q * log(ratio)) : 0.0;
-	double rm = exp(-log1p(t) / q);
-	double rk = ratio * rm;
-	double wm = 1.0 / ((1.0 + t) * rm);
-	double wk = rk > 0.0 ? t / ((1.0 + t) * rk) : 0.0;
-	p.norm = m / rm;
-	p.r[big] = rm; p.r[1 - big] = rk;
-	p.w[big] = wm; p.w[1 - big] = wk;
-	p.c[big] = mkCurv(wm, rm, q); p.c[1 - big] = mkCurv(wk, rk, q);
+	double opt = 1.0 + t;
+	double irm = exp(iq * log(opt)); /* 1 / r_m */
+	double rm = 1.0 / irm;
+	double wm = irm / opt;
+	p.norm = m * irm;
+	p.r[big] = rm;
+	p.r[1 - big] = ratio * rm;
+	p.w[big] = wm;
+	p.w[1 - big] = ratio > 0.0 ? t / ratio * wm : 0.0;
 	return p;
 }
 
-/* A shape's constants for the loop. */
-typedef struct mkSupShape {
-	double a, b, c, q1, q2;
-	int ellipsoid;
-} mkSupShape;
-
-static mkSupShape mkSupShape_Make(mkShape3 s)
+/* Two pair norms at once, step by step in lock-step: the four
+ * transcendental calls of one pair norm form a chain (each needs the one
+ * before), so interleaving two independent chains lets the processor overlap
+ * them. The same arithmetic as mkPair. */
+static void mkPair2(const double u[2], const double v[2], const double q[2], const double iq[2], mkPairNorm p[2])
 {
-	mkSupShape k;
-	k.a = s.a; k.b = s.b; k.c = s.c;
-	k.q1 = 2.0 / (2.0 - s.eps1);
-	k.q2 = 2.0 / (2.0 - s.eps2);
-	k.ellipsoid = mkShape3_IsEllipsoid(s);
-	return k;
+	double m[2], ratio[2], t[2], opt[2], irm[2], L[2];
+	int big[2];
+	for (int l = 0; l < 2; ++l) {
+		big[l] = u[l] >= v[l] ? 0 : 1;
+		m[l] = big[l] == 0 ? u[l] : v[l];
+		double k = big[l] == 0 ? v[l] : u[l];
+		ratio[l] = m[l] > 0.0 ? k / m[l] : 0.0;
+	}
+	for (int l = 0; l < 2; ++l)
+		L[l] = ratio[l] > 0.0 ? log(ratio[l]) : 0.0;
+	for (int l = 0; l < 2; ++l)
+		t[l] = ratio[l] > 0.0 ? exp(q[l] * L[l]) : 0.0;
+	for (int l = 0; l < 2; ++l) {
+		opt[l] = 1.0 + t[l];
+		L[l] = log(opt[l]);
+	}
+	for (int l = 0; l < 2; ++l)
+		irm[l] = exp(iq[l] * L[l]);
+	for (int l = 0; l < 2; ++l) {
+		double rm = 1.0 / irm[l], wm = irm[l] / opt[l];
+		p[l].norm = m[l] * irm[l];
+		p[l].r[big[l]] = rm;
+		p[l].r[1 - big[l]] = ratio[l] * rm;
+		p[l].w[big[l]] = wm;
+		p[l].w[1 - big[l]] = ratio[l] > 0.0 ? t[l] / ratio[l] * wm : 0.0;
+	}
 }
 
-/* Canonical support point sigma(y) (y != 0) and, when H is not NULL, the
- * Hessian of h at y. Returns h(y) = <y, sigma>. */
-static double mkSupport(const mkSupShape *s, mkVec3 y, mkVec3 *sigma, double H[3][3])
+/* A placed body's constants for the loop: P = M diag(a, b, c), so that the
+ * canonical argument is p = P^T y and the support point P grad N(p); for an
+ * ellipsoid Q = P P^T, h(y) = sqrt(y^T Q y), s = Q y / h, J = (Q - s s^T) / h:
+ * no transcendental function beyond one square root. */
+typedef struct mkSupBody {
+	double P[3][3], Q[3][3];
+	double q1, q2, iq1, iq2;
+	int ellipsoid;
+} mkSupBody;
+
+static void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
 {
-	double D[3] = { s->a, s->b, s->c };
-	double p[3] = { s->a * y.x, s->b * y.y, s->c * y.z };
-	double g[3], Hp[3][3];
-	if (s->ellipsoid) {
-		double L = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-		double inv = 1.0 / L;
+	double D[3] = { b->shape.a, b->shape.b, b->shape.c };
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			k->P[i][j] = b->M.m[i][j] * D[j];
+	k->ellipsoid = mkShape3_IsEllipsoid(b->shape);
+	if (k->ellipsoid) {
 		for (int i = 0; i < 3; ++i)
-			g[i] = p[i] * inv;
-		if (H)
-			for (int i = 0; i < 3; ++i)
-				for (int j = 0; j < 3; ++j)
-					Hp[i][j] = ((i == j ? 1.0 : 0.0) - g[i] * g[j]) * inv;
+			for (int j = i; j < 3; ++j)
+				k->Q[i][j] = k->Q[j][i] = k->P[i][0] * k->P[j][0] + k->P[i][1] * k->P[j][1] + k->P[i][2] * k->P[j][2];
+		k->q1 = k->q2 = 2.0;
+		k->iq1 = k->iq2 = 0.5;
 	} else {
-		double sg[3] = { p[0] < 0.0 ? -1.0 : 1.0, p[1] < 0.0 ? -1.0 : 1.0, p[2] < 0.0 ? -1.0 : 1.0 };
-		mkPairNorm in = mkPair(fabs(p[0]), fabs(p[1]), s->q2);
-		mkPairNorm out = mkPair(in.norm, fabs(p[2]), s->q1);
-		double G[2] = { sg[0] * in.w[0], sg[1] * in.w[1] };
-		g[0] = out.w[0] * G[0];
-		g[1] = out.w[0] * G[1];
-		g[2] = sg[2] * out.w[1];
-		if (H) {
-			double N = out.norm;
-			double k1 = (s->q1 - 1.0) / N;
-			/* Outer Hessian over (g, p3). */
-			double o00 = k1 * (out.c[0] - out.w[0] * out.w[0]);
-			double o01 = -k1 * out.w[0] * sg[2] * out.w[1];
-			double o11 = k1 * (out.c[1] - out.w[1] * out.w[1]);
-			/* w_g * Hess(inner) = (q2 - 1) / N * r_g^(q1 - 2) * (...): the
-			 * weight w_g = r_g^(q1-1) over the inner norm r_g N. */
-			double k2 = (s->q2 - 1.0) / N * out.c[0];
-			for (int i = 0; i < 2; ++i)
-				for (int j = 0; j < 2; ++j)
-					Hp[i][j] = o00 * G[i] * G[j]
-						+ k2 * ((i == j ? in.c[i] : 0.0) - G[i] * G[j]);
-			Hp[0][2] = Hp[2][0] = o01 * G[0];
-			Hp[1][2] = Hp[2][1] = o01 * G[1];
-			Hp[2][2] = o11;
-		}
+		k->q1 = 2.0 / (2.0 - b->shape.eps1);
+		k->q2 = 2.0 / (2.0 - b->shape.eps2);
+		k->iq1 = 1.0 - 0.5 * b->shape.eps1;
+		k->iq2 = 1.0 - 0.5 * b->shape.eps2;
 	}
-	*sigma = mkVec3_Make(D[0] * g[0], D[1] * g[1], D[2] * g[2]);
-	if (H)
+}
+
+/* One body's support at a direction y, with what its Hessian needs. */
+typedef struct mkSupAt {
+	mkVec3 s;          /* support point about the centre */
+	double h;          /* <y, s> */
+	mkVec3 v;          /* ellipsoid: Q y */
+	double sg[3];      /* superquadric: signs of p = P^T y */
+	mkPairNorm in, out;
+} mkSupAt;
+
+static void mkSupBody_Eval(const mkSupBody *b, mkVec3 y, mkSupAt *a)
+{
+	const double (*P)[3] = b->P;
+	if (b->ellipsoid) {
+		const double (*Q)[3] = b->Q;
+		mkVec3 v = mkVec3_Make(Q[0][0] * y.x + Q[0][1] * y.y + Q[0][2] * y.z,
+			Q[1][0] * y.x + Q[1][1] * y.y + Q[1][2] * y.z,
+			Q[2][0] * y.x + Q[2][1] * y.y + Q[2][2] * y.z);
+		double h = sqrt(y.x * v.x + y.y * v.y + y.z * v.z);
+		double inv = 1.0 / h;
+		a->v = v;
+		a->s = mkVec3_Scale(v, inv);
+		a->h = mkVec3_Dot(y, a->s);
+		return;
+	}
+	double p0 = P[0][0] * y.x + P[1][0] * y.y + P[2][0] * y.z;
+	double p1 = P[0][1] * y.x + P[1][1] * y.y + P[2][1] * y.z;
+	double p2 = P[0][2] * y.x + P[1][2] * y.y + P[2][2] * y.z;
+	a->sg[0] = p0 < 0.0 ? -1.0 : 1.0;
+	a->sg[1] = p1 < 0.0 ? -1.0 : 1.0;
+	a->sg[2] = p2 < 0.0 ? -1.0 : 1.0;
+	a->in = mkPair(fabs(p0), fabs(p1), b->q2, b->iq2);
+	a->out = mkPair(a->in.norm, fabs(p2), b->q1, b->iq1);
+	double g0 = a->out.w[0] * a->sg[0] * a->in.w[0];
+	double g1 = a->out.w[0] * a->sg[1] * a->in.w[1];
+	double g2 = a->sg[2] * a->out.w[1];
+	a->s = mkVec3_Make(P[0][0] * g0 + P[0][1] * g1 + P[0][2] * g2,
+		P[1][0] * g0 + P[1][1] * g1 + P[1][2] * g2,
+		P[2][0] * g0 + P[2][1] * g1 + P[2][2] * g2);
+	a->h = mkVec3_Dot(y, a->s);
+}
+
+/* The Hessian of the canonical support function N at p (superquadric), from
+ * the pair norms of the evaluation: for an l_q norm of a pair
+ * (q - 1) / |v|_q (diag r_i^(q-2) - s_i s_j w_i w_j), through the chain rule
+ * of the nested norms. */
+static void mkSupAt_CanonHess(const mkSupBody *b, const mkSupAt *a, double Hp[3][3])
+{
+	double G[2] = { a->sg[0] * a->in.w[0], a->sg[1] * a->in.w[1] };
+	double N = a->out.norm;
+	double k1 = (b->q1 - 1.0) / N;
+	double co0 = mkCurv(a->out.w[0], a->out.r[0], b->q1), co1 = mkCurv(a->out.w[1], a->out.r[1], b->q1);
+	double ci[2] = { mkCurv(a->in.w[0], a->in.r[0], b->q2), mkCurv(a->in.w[1], a->in.r[1], b->q2) };
+	/* Outer Hessian over (inner norm, p3). */
+	double o00 = k1 * (co0 - a->out.w[0] * a->out.w[0]);
+	double o01 = -k1 * a->out.w[0] * a->sg[2] * a->out.w[1];
+	double o11 = k1 * (co1 - a->out.w[1] * a->out.w[1]);
+	/* w_g * Hess(inner) = (q2 - 1) / N * r_g^(q1 - 2) * (...): the weight
+	 * w_g = r_g^(q1-1) over the inner norm r_g N. */
+	double k2 = (b->q2 - 1.0) / N * co0;
+	for (int i = 0; i < 2; ++i)
+		for (int j = 0; j < 2; ++j)
+			Hp[i][j] = o00 * G[i] * G[j] + k2 * ((i == j ? ci[i] : 0.0) - G[i] * G[j]);
+	Hp[0][2] = Hp[2][0] = o01 * G[0];
+	Hp[1][2] = Hp[2][1] = o01 * G[1];
+	Hp[2][2] = o11;
+}
+
+/* The Jacobian ds/dy (3 x 3) at the evaluated direction. */
+static void mkSupAt_Jacobian(const mkSupBody *b, const mkSupAt *a, double J[3][3])
+{
+	if (b->ellipsoid) {
+		double inv = 1.0 / a->h;
+		double s[3] = { a->s.x, a->s.y, a->s.z };
 		for (int i = 0; i < 3; ++i)
 			for (int j = 0; j < 3; ++j)
-				H[i][j] = D[i] * Hp[i][j] * D[j];
-	return mkVec3_Dot(y, *sigma);
+				J[i][j] = (b->Q[i][j] - s[i] * s[j]) * inv;
+		return;
+	}
+	double Hp[3][3], T[3][3];
+	mkSupAt_CanonHess(b, a, Hp);
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			T[i][j] = b->P[i][0] * Hp[0][j] + b->P[i][1] * Hp[1][j] + b->P[i][2] * Hp[2][j];
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			J[i][j] = T[i][0] * b->P[j][0] + T[i][1] * b->P[j][1] + T[i][2] * b->P[j][2];
 }
 
-/* M A M^T for symmetric A. */
-static mkMat3 mkSandwich(mkMat3 M, double A[3][3])
+/* Adds t_i^T J t_j (i, j in {1, 2}) to A = (A11, A12, A22): the Jacobian in
+ * a plane, never formed in 3 x 3. */
+static void mkSupAt_Tangent(const mkSupBody *b, const mkSupAt *a, mkVec3 t1, mkVec3 t2, double A[3])
 {
-	double T[3][3];
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j)
-			T[i][j] = M.m[i][0] * A[0][j] + M.m[i][1] * A[1][j] + M.m[i][2] * A[2][j];
-	mkMat3 R;
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j)
-			R.m[i][j] = T[i][0] * M.m[j][0] + T[i][1] * M.m[j][1] + T[i][2] * M.m[j][2];
-	return R;
+	if (b->ellipsoid) {
+		const double (*Q)[3] = b->Q;
+		mkVec3 w1 = mkVec3_Make(Q[0][0] * t1.x + Q[0][1] * t1.y + Q[0][2] * t1.z,
+			Q[1][0] * t1.x + Q[1][1] * t1.y + Q[1][2] * t1.z,
+			Q[2][0] * t1.x + Q[2][1] * t1.y + Q[2][2] * t1.z);
+		mkVec3 w2 = mkVec3_Make(Q[0][0] * t2.x + Q[0][1] * t2.y + Q[0][2] * t2.z,
+			Q[1][0] * t2.x + Q[1][1] * t2.y + Q[1][2] * t2.z,
+			Q[2][0] * t2.x + Q[2][1] * t2.y + Q[2][2] * t2.z);
+		double inv = 1.0 / a->h;
+		double e1 = mkVec3_Dot(t1, a->s), e2 = mkVec3_Dot(t2, a->s);
+		A[0] += (mkVec3_Dot(t1, w1) - e1 * e1) * inv;
+		A[1] += (mkVec3_Dot(t1, w2) - e1 * e2) * inv;
+		A[2] += (mkVec3_Dot(t2, w2) - e2 * e2) * inv;
+		return;
+	}
+	/* u^T Hp w from the structure of the canonical Hessian (mkSupAt_CanonHess)
+	 * without forming it: with G the inner gradient and u' = (u1, u2),
+	 * u^T Hp w = o00 (G.u')(G.w') + k2 (sum ci u_i w_i - (G.u')(G.w'))
+	 *          + o01 ((G.u') w3 + (G.w') u3) + o11 u3 w3. */
+	const double (*P)[3] = b->P;
+	double u[3], w[3];
+	for (int j = 0; j < 3; ++j) {
+		u[j] = P[0][j] * t1.x + P[1][j] * t1.y + P[2][j] * t1.z;
+		w[j] = P[0][j] * t2.x + P[1][j] * t2.y + P[2][j] * t2.z;
+	}
+	double G0 = a->sg[0] * a->in.w[0], G1 = a->sg[1] * a->in.w[1];
+	double N = a->out.norm;
+	double k1 = (b->q1 - 1.0) / N;
+	double co0 = mkCurv(a->out.w[0], a->out.r[0], b->q1), co1 = mkCurv(a->out.w[1], a->out.r[1], b->q1);
+	double ci0 = mkCurv(a->in.w[0], a->in.r[0], b->q2), ci1 = mkCurv(a->in.w[1], a->in.r[1], b->q2);
+	double o00 = k1 * (co0 - a->out.w[0] * a->out.w[0]);
+	double o01 = -k1 * a->out.w[0] * a->sg[2] * a->out.w[1];
+	double o11 = k1 * (co1 - a->out.w[1] * a->out.w[1]);
+	double k2 = (b->q2 - 1.0) / N * co0;
+	double gu = G0 * u[0] + G1 * u[1], gw = G0 * w[0] + G1 * w[1];
+	double og = o00 - k2;
+	A[0] += og * gu * gu + k2 * (ci0 * u[0] * u[0] + ci1 * u[1] * u[1]) + 2.0 * o01 * gu * u[2] + o11 * u[2] * u[2];
+	A[1] += og * gu * gw + k2 * (ci0 * u[0] * w[0] + ci1 * u[1] * w[1]) + o01 * (gu * w[2] + gw * u[2]) + o11 * u[2] * w[2];
+	A[2] += og * gw * gw + k2 * (ci0 * w[0] * w[0] + ci1 * w[1] * w[1]) + 2.0 * o01 * gw * w[2] + o11 * w[2] * w[2];
 }
 
 mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J)
 {
-	mkSupShape s = mkSupShape_Make(b.shape);
-	mkVec3 sigma;
-	double H[3][3];
 	if (!(mkVec3_Dot(n, n) > 0.0)) {
 		if (J)
 			for (int i = 0; i < 3; ++i)
@@ -189,58 +319,98 @@ mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J)
 					J->m[i][j] = NAN;
 		return mkVec3_Make(NAN, NAN, NAN);
 	}
-	mkSupport(&s, mkMat3_MulTVec(b.M, n), &sigma, J ? H : NULL);
+	mkSupBody k;
+	mkSupBody_Init(&k, &b);
+	mkSupAt a;
+	mkSupBody_Eval(&k, n, &a);
 	if (J)
-		*J = mkSandwich(b.M, H);
-	return mkMat3_MulVec(b.M, sigma);
+		mkSupAt_Jacobian(&k, &a, J->m);
+	return a.s;
 }
 
 /* ---- the pair ----------------------------------------------------------- */
 
 typedef struct mkPairCtx {
-	mkBody3 b1, b2;
-	mkSupShape s1, s2;
+	const mkBody3 *b1, *b2;
+	mkSupBody k1, k2;
 	mkVec3 d;
 	double scale;
 } mkPairCtx;
 
-/* The canonical Hessians of the two support functions at M1^T m and
- * -M2^T m: the Jacobian of x is M1 H1 M1^T + M2 H2 M2^T, only ever needed in
- * a tangent plane (mkPair_Tangent), so it is never formed. */
-typedef struct mkPairHess { double H1[3][3], H2[3][3]; } mkPairHess;
+/* Everything at one (possibly unnormalised) direction m: both bodies'
+ * support data (s1 = a1.s at m, s2 = a2.s at -m, about the centres), the
+ * contact-space point x = s1 - s2 and H = <m, x> (= h1(m) + h2(-m)). The
+ * Hessians are formed only on demand (mkPair_Tangent). */
+typedef struct mkPairAt {
+	mkSupAt a1, a2;
+	mkVec3 x;
+	double H;
+} mkPairAt;
 
-/* Everything at one (possibly unnormalised) direction m: the contact-space
- * point x = s1(m) - s2(-m), H = <m, x> (= h1(m) + h2(-m)), and, when J is not
- * NULL, the Hessians. s1, s2 receive the support points (about the
- * centres). */
-static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkVec3 *x, mkVec3 *s1, mkVec3 *s2, mkPairHess *J)
+/* Both superquadrics' support at y1 and y2, the pair norms in lock-step. */
+static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const mkSupBody *b2, mkVec3 y2, mkSupAt *a2)
 {
-	mkVec3 g1, g2;
-	mkSupport(&c->s1, mkMat3_MulTVec(c->b1.M, m), &g1, J ? J->H1 : NULL);
-	mkSupport(&c->s2, mkMat3_MulTVec(c->b2.M, mkVec3_Neg(m)), &g2, J ? J->H2 : NULL);
-	*s1 = mkMat3_MulVec(c->b1.M, g1);
-	*s2 = mkMat3_MulVec(c->b2.M, g2);
-	*x = mkVec3_Sub(*s1, *s2);
-	return mkVec3_Dot(m, *x);
+	const mkSupBody *b[2] = { b1, b2 };
+	mkSupAt *a[2] = { a1, a2 };
+	mkVec3 y[2] = { y1, y2 };
+	double p[2][3], u[2], v[2], q[2], iq[2];
+	mkPairNorm in[2], out[2];
+	for (int l = 0; l < 2; ++l) {
+		const double (*P)[3] = b[l]->P;
+		for (int j = 0; j < 3; ++j) {
+			p[l][j] = P[0][j] * y[l].x + P[1][j] * y[l].y + P[2][j] * y[l].z;
+			a[l]->sg[j] = p[l][j] < 0.0 ? -1.0 : 1.0;
+		}
+		u[l] = fabs(p[l][0]);
+		v[l] = fabs(p[l][1]);
+		q[l] = b[l]->q2;
+		iq[l] = b[l]->iq2;
+	}
+	mkPair2(u, v, q, iq, in);
+	for (int l = 0; l < 2; ++l) {
+		u[l] = in[l].norm;
+		v[l] = fabs(p[l][2]);
+		q[l] = b[l]->q1;
+		iq[l] = b[l]->iq1;
+	}
+	mkPair2(u, v, q, iq, out);
+	for (int l = 0; l < 2; ++l) {
+		const double (*P)[3] = b[l]->P;
+		mkSupAt *A = a[l];
+		A->in = in[l];
+		A->out = out[l];
+		double g0 = out[l].w[0] * A->sg[0] * in[l].w[0];
+		double g1 = out[l].w[0] * A->sg[1] * in[l].w[1];
+		double g2 = A->sg[2] * out[l].w[1];
+		A->s = mkVec3_Make(P[0][0] * g0 + P[0][1] * g1 + P[0][2] * g2,
+			P[1][0] * g0 + P[1][1] * g1 + P[1][2] * g2,
+			P[2][0] * g0 + P[2][1] * g1 + P[2][2] * g2);
+		A->h = mkVec3_Dot(y[l], A->s);
+	}
 }
 
-/* a^T H b for a symmetric 3 x 3 H. */
-static double mkQuadH(double H[3][3], mkVec3 a, mkVec3 b)
+static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkPairAt *e)
 {
-	double hb0 = H[0][0] * b.x + H[0][1] * b.y + H[0][2] * b.z;
-	double hb1 = H[1][0] * b.x + H[1][1] * b.y + H[1][2] * b.z;
-	double hb2 = H[2][0] * b.x + H[2][1] * b.y + H[2][2] * b.z;
-	return a.x * hb0 + a.y * hb1 + a.z * hb2;
+	if (!c->k1.ellipsoid && !c->k2.ellipsoid) {
+		mkSupBody_Eval2(&c->k1, m, &e->a1, &c->k2, mkVec3_Neg(m), &e->a2);
+	} else {
+		mkSupBody_Eval(&c->k1, m, &e->a1);
+		mkSupBody_Eval(&c->k2, mkVec3_Neg(m), &e->a2);
+	}
+	e->x = mkVec3_Sub(e->a1.s, e->a2.s);
+	e->H = mkVec3_Dot(m, e->x);
+	return e->H;
 }
 
 /* The Jacobian of x in the plane of (t1, t2): A[i][j] = ti^T J tj. */
-static void mkPair_Tangent(const mkPairCtx *c, mkPairHess *J, mkVec3 t1, mkVec3 t2, double A[2][2])
+static void mkPair_Tangent(const mkPairCtx *c, const mkPairAt *e, mkVec3 t1, mkVec3 t2, double A[2][2])
 {
-	mkVec3 a1 = mkMat3_MulTVec(c->b1.M, t1), a2 = mkMat3_MulTVec(c->b1.M, t2);
-	mkVec3 e1 = mkMat3_MulTVec(c->b2.M, t1), e2 = mkMat3_MulTVec(c->b2.M, t2);
-	A[0][0] = mkQuadH(J->H1, a1, a1) + mkQuadH(J->H2, e1, e1);
-	A[0][1] = A[1][0] = mkQuadH(J->H1, a1, a2) + mkQuadH(J->H2, e1, e2);
-	A[1][1] = mkQuadH(J->H1, a2, a2) + mkQuadH(J->H2, e2, e2);
+	double a[3] = { 0.0, 0.0, 0.0 };
+	mkSupAt_Tangent(&c->k1, &e->a1, t1, t2, a);
+	mkSupAt_Tangent(&c->k2, &e->a2, t1, t2, a);
+	A[0][0] = a[0];
+	A[0][1] = A[1][0] = a[1];
+	A[1][1] = a[2];
 }
 
 /* An orthonormal basis (t1, t2) of the plane orthogonal to the unit n
@@ -343,8 +513,8 @@ static double mkTrustStep(const double g[2], double A[2][2], double radius, doub
 
 /* The state at a unit normal n. */
 typedef struct mkNormalState {
-	mkVec3 n, x, s1, s2, t1, t2;
-	mkPairHess J;
+	mkVec3 n, t1, t2;
+	mkPairAt e;      /* supports at n (s1 = e.a1.s) and -n (s2 = e.a2.s) */
 	double f;        /* <n, d - x> */
 	double g[2];     /* tangential components of d - x */
 } mkNormalState;
@@ -352,28 +522,29 @@ typedef struct mkNormalState {
 static void mkNormal_Eval(const mkPairCtx *c, mkVec3 n, mkNormalState *st)
 {
 	st->n = n;
-	double H = mkPair_Eval(c, n, &st->x, &st->s1, &st->s2, &st->J);
+	double H = mkPair_Eval(c, n, &st->e);
 	st->f = mkVec3_Dot(n, c->d) - H;
 	mkTangents(n, &st->t1, &st->t2);
-	mkVec3 r = mkVec3_Sub(c->d, st->x);
+	mkVec3 r = mkVec3_Sub(c->d, st->e.x);
 	st->g[0] = mkVec3_Dot(st->t1, r);
 	st->g[1] = mkVec3_Dot(st->t2, r);
 }
 
-/* Value only, for the trial points of the trust region. */
+/* Value only, for the trial points of the line searches and the scan. */
 static double mkNormal_Value(const mkPairCtx *c, mkVec3 n)
 {
-	mkVec3 x, s1, s2;
-	return mkVec3_Dot(n, c->d) - mkPair_Eval(c, n, &x, &s1, &s2, NULL);
+	mkPairAt e;
+	return mkVec3_Dot(n, c->d) - mkPair_Eval(c, n, &e);
 }
 
 /* The slope of f along the great circle from n towards the unit tangent e,
  * at m = normalize(n + t e): <P_m e, d - x(m)> (up to a positive factor). */
 static double mkNormal_Slope(const mkPairCtx *c, mkVec3 n, mkVec3 e, double t)
 {
-	mkVec3 m = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, t))), x, s1, s2;
-	mkPair_Eval(c, m, &x, &s1, &s2, NULL);
-	mkVec3 r = mkVec3_Sub(c->d, x);
+	mkVec3 m = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, t)));
+	mkPairAt pe;
+	mkPair_Eval(c, m, &pe);
+	mkVec3 r = mkVec3_Sub(c->d, pe.x);
 	return mkVec3_Dot(e, r) - mkVec3_Dot(e, m) * mkVec3_Dot(m, r);
 }
 
@@ -415,9 +586,122 @@ static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, 
 static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][2])
 {
 	/* Hessian of -f in the tangent plane: t^T J t + f I. */
-	mkPair_Tangent(c, &st->J, st->t1, st->t2, A);
+	mkPair_Tangent(c, &st->e, st->t1, st->t2, A);
 	A[0][0] += st->f;
 	A[1][1] += st->f;
+}
+
+/* Solves (C + (beta - f) n n^T) z = g for the tangent-plane Newton step of a
+ * pair of ellipsoids in 3D form: C = J1 + J2 + f I has n as an eigenvector
+ * (eigenvalue f), so the shifted matrix keeps the tangent plane invariant and
+ * is positive definite iff the tangent Hessian is. Returns 0 when it is not
+ * (Sylvester's criterion on the shifted matrix). */
+static int mkSolveSym3(double C[3][3], mkVec3 g, mkVec3 *z)
+{
+	double c00 = C[1][1] * C[2][2] - C[1][2] * C[1][2];
+	double c01 = C[0][2] * C[1][2] - C[0][1] * C[2][2];
+	double c02 = C[0][1] * C[1][2] - C[0][2] * C[1][1];
+	double c11 = C[0][0] * C[2][2] - C[0][2] * C[0][2];
+	double c12 = C[0][2] * C[0][1] - C[0][0] * C[1][2];
+	double c22 = C[0][0] * C[1][1] - C[0][1] * C[0][1];
+	double det = C[0][0] * c00 + C[0][1] * c01 + C[0][2] * c02;
+	double tr = C[0][0] + C[1][1] + C[2][2];
+	if (!(C[0][0] > 0.0 && c22 > 0.0 && det > 1e-12 * tr * tr * tr))
+		return 0;
+	double inv = 1.0 / det;
+	*z = mkVec3_Make((c00 * g.x + c01 * g.y + c02 * g.z) * inv,
+		(c01 * g.x + c11 * g.y + c12 * g.z) * inv,
+		(c02 * g.x + c12 * g.y + c22 * g.z) * inv);
+	return 1;
+}
+
+/* Plain Newton for a pair of ellipsoids, all in 3D and in registers: per
+ * step two products Q n, two square roots, a 3 x 3 solve. The same tests
+ * as mkNormal_Solve (the residual, or an interior step that cannot gain
+ * more than 1e-17 of the scale); the first step that fails them (Hessian
+ * not positive definite, a step beyond MK_TR_MAX or gaining less than a
+ * quarter of its prediction) hands over. Fills st at the last accepted
+ * point either way; returns 1 when converged, 0 to hand over (then *radius
+ * is the trust radius to continue with). */
+static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, int *iters, double *res,
+	double *radius)
+{
+	const double (*Q1)[3] = c->k1.Q, (*Q2)[3] = c->k2.Q;
+	const mkVec3 d = c->d;
+	double tol = MK_COLLIDE3_RESIDUAL_TOL * c->scale;
+	mkVec3 v1, v2, s1, s2, gr;
+	double h1, h2, f;
+	int done = 0;
+#define MK_ELL_EVAL(N, V1, V2, S1, S2, H1, H2, F, G) do { \
+		V1 = mkVec3_Make(Q1[0][0] * N.x + Q1[0][1] * N.y + Q1[0][2] * N.z, \
+			Q1[1][0] * N.x + Q1[1][1] * N.y + Q1[1][2] * N.z, Q1[2][0] * N.x + Q1[2][1] * N.y + Q1[2][2] * N.z); \
+		V2 = mkVec3_Make(Q2[0][0] * N.x + Q2[0][1] * N.y + Q2[0][2] * N.z, \
+			Q2[1][0] * N.x + Q2[1][1] * N.y + Q2[1][2] * N.z, Q2[2][0] * N.x + Q2[2][1] * N.y + Q2[2][2] * N.z); \
+		S1 = mkVec3_Scale(V1, 1.0 / sqrt(mkVec3_Dot(N, V1))); \
+		S2 = mkVec3_Scale(V2, -1.0 / sqrt(mkVec3_Dot(N, V2))); \
+		H1 = mkVec3_Dot(N, S1); \
+		H2 = -mkVec3_Dot(N, S2); \
+		mkVec3 r_ = mkVec3_Sub(d, mkVec3_Sub(S1, S2)); \
+		F = mkVec3_Dot(N, d) - mkVec3_Dot(N, mkVec3_Sub(S1, S2)); \
+		G = mkVec3_Sub(r_, mkVec3_Scale(N, mkVec3_Dot(N, r_))); \
+	} while (0)
+	MK_ELL_EVAL(n, v1, v2, s1, s2, h1, h2, f, gr);
+	for (int it = 0; it < MK_NEWTON_MAX; ++it) {
+		*res = sqrt(mkVec3_Dot(gr, gr));
+		if (*res <= tol) {
+			done = 1;
+			break;
+		}
+		double i1 = 1.0 / h1, i2 = 1.0 / h2, C[3][3];
+		double w = h1 + h2 - f; /* the shift: n's eigenvalue becomes h1 + h2 > 0 */
+		C[0][0] = (Q1[0][0] - s1.x * s1.x) * i1 + (Q2[0][0] - s2.x * s2.x) * i2 + f + w * n.x * n.x;
+		C[1][1] = (Q1[1][1] - s1.y * s1.y) * i1 + (Q2[1][1] - s2.y * s2.y) * i2 + f + w * n.y * n.y;
+		C[2][2] = (Q1[2][2] - s1.z * s1.z) * i1 + (Q2[2][2] - s2.z * s2.z) * i2 + f + w * n.z * n.z;
+		C[0][1] = C[1][0] = (Q1[0][1] - s1.x * s1.y) * i1 + (Q2[0][1] - s2.x * s2.y) * i2 + w * n.x * n.y;
+		C[0][2] = C[2][0] = (Q1[0][2] - s1.x * s1.z) * i1 + (Q2[0][2] - s2.x * s2.z) * i2 + w * n.x * n.z;
+		C[1][2] = C[2][1] = (Q1[1][2] - s1.y * s1.z) * i1 + (Q2[1][2] - s2.y * s2.z) * i2 + w * n.y * n.z;
+		mkVec3 z;
+		if (!mkSolveSym3(C, gr, &z))
+			break;
+		z = mkVec3_Sub(z, mkVec3_Scale(n, mkVec3_Dot(n, z)));
+		double zlen = sqrt(mkVec3_Dot(z, z));
+		if (!(zlen <= MK_TR_MAX))
+			break;
+		*iters += 1;
+		double pred = 0.5 * mkVec3_Dot(gr, z);
+		if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
+			done = 1;
+			break;
+		}
+		mkVec3 m = mkVec3_Add(n, z);
+		m = mkVec3_Scale(m, 1.0 / sqrt(mkVec3_Dot(m, m)));
+		mkVec3 w1, w2, q1, q2, gq;
+		double k1, k2, fq;
+		MK_ELL_EVAL(m, w1, w2, q1, q2, k1, k2, fq, gq);
+		double gain = fq - f;
+		double noise = 64.0 * DBL_EPSILON * (fabs(f) + c->scale);
+		if (!(pred > noise ? gain >= 0.25 * pred : gain >= -noise)) {
+			*radius = 0.25 * zlen;
+			break;
+		}
+		n = m; v1 = w1; v2 = w2; s1 = q1; s2 = q2; h1 = k1; h2 = k2; f = fq; gr = gq;
+	}
+#undef MK_ELL_EVAL
+	st->n = n;
+	mkTangents(n, &st->t1, &st->t2);
+	st->e.a1.s = s1;
+	st->e.a1.h = h1;
+	st->e.a1.v = v1;
+	st->e.a2.s = s2;
+	st->e.a2.h = h2;
+	st->e.a2.v = mkVec3_Neg(v2);
+	st->e.x = mkVec3_Sub(s1, s2);
+	st->e.H = mkVec3_Dot(n, st->e.x);
+	st->f = f;
+	mkVec3 r = mkVec3_Sub(d, st->e.x);
+	st->g[0] = mkVec3_Dot(st->t1, r);
+	st->g[1] = mkVec3_Dot(st->t2, r);
+	return done;
 }
 
 /* Maximise f from n0. Returns 1 on convergence, 0 otherwise; *iters adds
@@ -425,12 +709,76 @@ static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][
  * tangential gradient, or its smooth part after a line search). */
 static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int *iters, double *res)
 {
-	mkNormal_Eval(c, n0, st);
 	double radius = MK_TR_INIT;
 	double tol = MK_COLLIDE3_RESIDUAL_TOL * c->scale;
+	int first = *iters; /* the Newton phase's steps count against MK_COLLIDE3_MAX_ITER */
+	if (c->k1.ellipsoid && c->k2.ellipsoid) {
+		if (mkNormal_Ellipsoids(c, n0, st, iters, res, &radius))
+			return 1;
+	} else
+		mkNormal_Eval(c, n0, st);
+	/* Plain Newton first: while the tangent Hessian is positive definite,
+	 * the full step is at most MK_TR_MAX and gains at least a quarter of
+	 * its prediction, no trust region is needed (the common case: every
+	 * separated pair of ellipsoids, where the Hessian is at least f I). The
+	 * first step that fails hands over to the trust region, with a radius
+	 * that excludes it. */
+	{
+		mkNormalState buf, *cur = st, *nxt = &buf;
+		int done = 0;
+		for (int it = 0; it < MK_NEWTON_MAX; ++it) {
+			*res = mkLen2(cur->g[0], cur->g[1]);
+			if (*res <= tol) {
+				done = 1;
+				break;
+			}
+			double A[2][2];
+			mkNormal_Hessian(c, cur, A);
+			double a = A[0][0], b = A[0][1], cc = A[1][1], det = a * cc - b * b;
+			if (!(a > 0.0 && det > 1e-12 * (a * cc)))
+				break;
+			double z0 = (cc * cur->g[0] - b * cur->g[1]) / det, z1 = (a * cur->g[1] - b * cur->g[0]) / det;
+			double zlen = mkLen2(z0, z1);
+			if (!(zlen <= 1e300))
+				break;
+			*iters += 1;
+			double slope = cur->g[0] * z0 + cur->g[1] * z1; /* g.z > 0: an ascent direction */
+			double pred = 0.5 * slope;
+			if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
+				/* The convergence test (b) of the trust region below. */
+				done = 1;
+				break;
+			}
+			/* Backtracking (Armijo) along the Newton direction, the step
+			 * first cut to MK_TR_MAX. */
+			double t = zlen > MK_TR_MAX ? MK_TR_MAX / zlen : 1.0;
+			double noise = 64.0 * DBL_EPSILON * (fabs(cur->f) + c->scale);
+			int taken = 0;
+			for (int k = 0; k < MK_BACKTRACK; ++k, t *= 0.5) {
+				mkVec3 m = mkVec3_Add(cur->n, mkVec3_Add(mkVec3_Scale(cur->t1, t * z0), mkVec3_Scale(cur->t2, t * z1)));
+				mkNormal_Eval(c, mkVec3_Normalize(m), nxt);
+				double gain = nxt->f - cur->f;
+				if (t * slope > noise ? gain >= 1e-4 * t * slope : gain >= -noise) {
+					taken = 1;
+					break;
+				}
+			}
+			if (!taken) {
+				radius = t * zlen;
+				break;
+			}
+			mkNormalState *tmp = cur;
+			cur = nxt;
+			nxt = tmp;
+		}
+		if (cur != st)
+			*st = *cur;
+		if (done)
+			return 1;
+	}
 	int rejects = 0;
 	double hist[3] = { -INFINITY, -INFINITY, -INFINITY };
-	for (int it = 0; it < MK_COLLIDE3_MAX_ITER; ++it) {
+	for (int it = *iters - first; it < MK_COLLIDE3_MAX_ITER; ++it) {
 		hist[it % 3] = st->f;
 		*res = mkLen2(st->g[0], st->g[1]);
 		if (*res <= tol)
@@ -508,19 +856,25 @@ static int mkIsFinite3(mkVec3 v)
 	return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
 }
 
-double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
+static double mkScale(const mkBody3 *b1, const mkBody3 *b2)
 {
 	double r[2];
-	const mkBody3 *b[2] = { &b1, &b2 };
+	const mkBody3 *b[2] = { b1, b2 };
 	for (int k = 0; k < 2; ++k) {
 		double fro = 0.0;
 		for (int i = 0; i < 3; ++i)
 			for (int j = 0; j < 3; ++j)
 				fro += b[k]->M.m[i][j] * b[k]->M.m[i][j];
 		mkShape3 s = b[k]->shape;
-		r[k] = fmax(s.a, fmax(s.b, s.c)) * sqrt(fro);
+		double big = s.a > s.b ? s.a : s.b;
+		r[k] = (big > s.c ? big : s.c) * sqrt(fro);
 	}
-	return mkVec3_Length(mkVec3_Sub(b2.t, b1.t)) + r[0] + r[1];
+	return mkVec3_Length(mkVec3_Sub(b2->t, b1->t)) + r[0] + r[1];
+}
+
+double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
+{
+	return mkScale(&b1, &b2);
 }
 
 double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n)
@@ -543,16 +897,14 @@ void mkCollision3_Clear(mkCollision3 *out)
 	out->restarts = -1;
 }
 
-static mkPairCtx mkPairCtx_Make(mkBody3 b1, mkBody3 b2)
+static void mkPairCtx_Init(mkPairCtx *c, const mkBody3 *b1, const mkBody3 *b2)
 {
-	mkPairCtx c;
-	c.b1 = b1;
-	c.b2 = b2;
-	c.s1 = mkSupShape_Make(b1.shape);
-	c.s2 = mkSupShape_Make(b2.shape);
-	c.d = mkVec3_Sub(b2.t, b1.t);
-	c.scale = mkCollide3_Scale(b1, b2);
-	return c;
+	c->b1 = b1;
+	c->b2 = b2;
+	mkSupBody_Init(&c->k1, b1);
+	mkSupBody_Init(&c->k2, b2);
+	c->d = mkVec3_Sub(b2->t, b1->t);
+	c->scale = mkScale(b1, b2);
 }
 
 mkContact mkContact_FromDistance(double sd, double scale)
@@ -581,13 +933,17 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 /* Extra starts for an overlap: the reversed centre line, the bodies' axis
  * directions (both signs), the diagonals of their frames and a lattice over
  * the sphere; Newton restarts from the best MK_RESTARTS of them by f that
- * are not close (within about 18 degrees) to the answer or to each other. */
-enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 4 };
+ * are not close (within about 18 degrees) to the answer or to each other.
+ * For superquadrics f is evaluated at the structured candidates and at
+ * the MK_SCAN_EXACT lattice points that rank best on the ellipsoids of the
+ * same axes. */
+enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 4, MK_SCAN_EXACT = 16 };
 
 mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {
 	mkCollision3_Clear(out);
-	mkPairCtx c = mkPairCtx_Make(b1, b2);
+	mkPairCtx c;
+	mkPairCtx_Init(&c, &b1, &b2);
 	out->scale = c.scale;
 	if (!isfinite(c.scale))
 		return MK_ERR_UNSUPPORTED;
@@ -620,13 +976,48 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 					mkVec3_Add(mkVec3_Scale(col[1], q & 2 ? -1.0 : 1.0), mkVec3_Scale(col[2], q & 4 ? -1.0 : 1.0))));
 		}
 		/* and a Fibonacci lattice of MK_FIB directions over the sphere */
+		/* (the angle q times the golden angle by rotation, not 64 sincos) */
+		double cg = cos(2.399963229728653), sg = sin(2.399963229728653), ca = 1.0, sa = 0.0;
 		for (int q = 0; q < MK_FIB; ++q) {
 			double z = 1.0 - (2.0 * q + 1.0) / MK_FIB, r = sqrt(1.0 - z * z);
-			double ang = q * 2.399963229728653; /* the golden angle */
-			cand[nc++] = mkVec3_Make(r * cos(ang), r * sin(ang), z);
+			cand[nc++] = mkVec3_Make(r * ca, r * sa, z);
+			double cn = ca * cg - sa * sg;
+			sa = sa * cg + ca * sg;
+			ca = cn;
 		}
-		for (int i = 0; i < nc; ++i)
-			val[i] = mkIsFinite3(cand[i]) ? mkNormal_Value(&c, cand[i]) : -INFINITY;
+		if (c.k1.ellipsoid && c.k2.ellipsoid) {
+			for (int i = 0; i < nc; ++i)
+				val[i] = mkIsFinite3(cand[i]) ? mkNormal_Value(&c, cand[i]) : -INFINITY;
+		} else {
+			/* Superquadrics: f exactly at the structured candidates (the
+			 * reversed centre line, axes and diagonals: where box-like
+			 * bodies have their optima), and at the MK_SCAN_EXACT lattice
+			 * points that rank best by f of the ellipsoids with the same
+			 * axes and maps (a square root per body instead of eight
+			 * transcendental functions). */
+			mkPairCtx e = c;
+			mkBody3 p1 = b1, p2 = b2;
+			p1.shape.eps1 = p1.shape.eps2 = p2.shape.eps1 = p2.shape.eps2 = 1.0;
+			mkSupBody_Init(&e.k1, &p1);
+			mkSupBody_Init(&e.k2, &p2);
+			double proxy[MK_CAND], sorted[MK_CAND];
+			for (int i = 0; i < nc; ++i)
+				sorted[i] = proxy[i] = mkIsFinite3(cand[i]) ? mkNormal_Value(&e, cand[i]) : -INFINITY;
+			/* the MK_SCAN_EXACT-th largest proxy value (partial selection) */
+			for (int a = 0; a < MK_SCAN_EXACT; ++a) {
+				int bi = a;
+				for (int j = a + 1; j < nc; ++j)
+					if (sorted[j] > sorted[bi])
+						bi = j;
+				double x = sorted[a];
+				sorted[a] = sorted[bi];
+				sorted[bi] = x;
+			}
+			double cut = sorted[MK_SCAN_EXACT - 1];
+			for (int i = 0; i < nc; ++i)
+				val[i] = (i < MK_CAND - MK_FIB || proxy[i] >= cut) && proxy[i] > -INFINITY ? mkNormal_Value(&c, cand[i])
+					: -INFINITY;
+		}
 		mkVec3 picked[MK_RESTARTS];
 		int npicked = 0;
 		for (int r = 0; r < MK_RESTARTS; ++r) {
@@ -661,8 +1052,8 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	out->iterations = iters;
 	out->normal = best.n;
 	out->bound = best.f;
-	out->p1 = mkVec3_Add(b1.t, best.s1);
-	out->p2 = mkVec3_Add(b2.t, best.s2);
+	out->p1 = mkVec3_Add(b1.t, best.e.a1.s);
+	out->p2 = mkVec3_Add(b2.t, best.e.a2.s);
 	out->residual = res / c.scale;
 	if (!ok || !isfinite(best.f) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
 		return MK_ERR_CONVERGENCE;
@@ -695,8 +1086,8 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 /* psi(s) = H(u + s1 t1 + s2 t2) and its pieces at s. */
 typedef struct mkRayState {
 	double s[2], H, g[2];
-	mkVec3 m, x, s1, s2;
-	mkPairHess J;
+	mkVec3 m;
+	mkPairAt e;      /* supports at m and -m, x = e.x */
 } mkRayState;
 
 /* The frame of the ray, and the contact-space points seen so far (a ring):
@@ -754,18 +1145,18 @@ static void mkRay_Eval(const mkPairCtx *c, mkRayFrame *f, const double s[2], mkR
 	st->s[0] = s[0];
 	st->s[1] = s[1];
 	st->m = mkRay_Point(f, s);
-	st->H = mkPair_Eval(c, st->m, &st->x, &st->s1, &st->s2, &st->J);
-	mkRay_Keep(f, st->x);
+	st->H = mkPair_Eval(c, st->m, &st->e);
+	mkRay_Keep(f, st->e.x);
 	/* Gradient of -psi (the solver maximises -psi). */
-	st->g[0] = -mkVec3_Dot(f->t1, st->x);
-	st->g[1] = -mkVec3_Dot(f->t2, st->x);
+	st->g[0] = -mkVec3_Dot(f->t1, st->e.x);
+	st->g[1] = -mkVec3_Dot(f->t2, st->e.x);
 }
 
 static double mkRay_Value(const mkPairCtx *c, mkRayFrame *f, const double s[2])
 {
-	mkVec3 x, a1, a2;
-	double H = mkPair_Eval(c, mkRay_Point(f, s), &x, &a1, &a2, NULL);
-	mkRay_Keep(f, x);
+	mkPairAt e;
+	double H = mkPair_Eval(c, mkRay_Point(f, s), &e);
+	mkRay_Keep(f, e.x);
 	return H;
 }
 
@@ -773,10 +1164,10 @@ static double mkRay_SlopeAt(const mkPairCtx *c, mkRayFrame *f, const double base
 	mkVec3 ew, double t)
 {
 	double s[2] = { base[0] + t * e[0], base[1] + t * e[1] };
-	mkVec3 x, a1, a2;
-	mkPair_Eval(c, mkRay_Point(f, s), &x, &a1, &a2, NULL);
-	mkRay_Keep(f, x);
-	return mkVec3_Dot(ew, x);
+	mkPairAt pe;
+	mkPair_Eval(c, mkRay_Point(f, s), &pe);
+	mkRay_Keep(f, pe.x);
+	return mkVec3_Dot(ew, pe.x);
 }
 
 /* psi along s + t e (e a unit vector of the plane): convex in t; minimised
@@ -788,7 +1179,7 @@ static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, c
 	mkVec3 ew = mkVec3_Add(mkVec3_Scale(f->t1, e[0]), mkVec3_Scale(f->t2, e[1]));
 	double base[2] = { st->s[0], st->s[1] };
 #define MK_RAY_SLOPE(t) mkRay_SlopeAt(c, f, base, e, ew, (t))
-	if (mkVec3_Dot(ew, st->x) > 0.0) {
+	if (mkVec3_Dot(ew, st->e.x) > 0.0) {
 		e[0] = -e[0];
 		e[1] = -e[1];
 		ew = mkVec3_Neg(ew);
@@ -820,7 +1211,8 @@ static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, c
 mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {
 	mkCollision3_Clear(out);
-	mkPairCtx c = mkPairCtx_Make(b1, b2);
+	mkPairCtx c;
+	mkPairCtx_Init(&c, &b1, &b2);
 	out->scale = c.scale;
 	if (!isfinite(c.scale))
 		return MK_ERR_UNSUPPORTED;
@@ -856,7 +1248,7 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		}
 		iters += 1;
 		double A[2][2];
-		mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
+		mkPair_Tangent(&c, &st.e, fr.t1, fr.t2, A);
 		double step[2];
 		double sn = mkLen2(st.s[0], st.s[1]);
 		double pred = mkTrustStep(st.g, A, radius * (1.0 + sn), step);
@@ -884,12 +1276,12 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		}
 		if (rejects >= 2 || radius < 1e-12 || (it >= MK_LINE_AFTER && rho < 0.75)) {
 			double lam[2], v0[2], v1[2];
-			mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
+			mkPair_Tangent(&c, &st.e, fr.t1, fr.t2, A);
 			mkEig2(A, lam, v0, v1);
 			double before = st.H;
 			int tight = mkRay_LineSearch(&c, &fr, &st, v1, fmax(radius, 1e-6) * (1.0 + sn));
 			int moved = st.H < before;
-			mkPair_Tangent(&c, &st.J, fr.t1, fr.t2, A);
+			mkPair_Tangent(&c, &st.e, fr.t1, fr.t2, A);
 			mkEig2(A, lam, v0, v1);
 			double flat = fabs(v0[0] * st.g[0] + v0[1] * st.g[1]);
 			double oldest = fmax(hist[0], fmax(hist[1], hist[2]));
@@ -906,8 +1298,8 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	out->iterations = iters;
 	mkVec3 n = mkVec3_Normalize(st.m);
 	out->normal = n;
-	out->p1 = mkVec3_Add(b1.t, st.s1);
-	out->p2 = mkVec3_Add(b2.t, st.s2);
+	out->p1 = mkVec3_Add(b1.t, st.e.a1.s);
+	out->p2 = mkVec3_Add(b2.t, st.e.a2.s);
 	out->residual = res / c.scale;
 	/* H = |m| (h1(n) + h2(-n)); f(n) = <n, d> - H / |m|. */
 	double ml = mkVec3_Length(st.m);

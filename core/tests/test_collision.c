@@ -13,7 +13,9 @@
  *    found by a grid and a pattern search over mkCollide3_Bound, which is
  *    built on mkBody3_SupportValue, beats it by more than 1e-12 of the
  *    scale), its witness points must lie on the bodies (gauge from
- *    mkBody3_Implicit within 1e-9), and the two-sided certificate must hold. */
+ *    mkBody3_Implicit within 1e-9), and the two-sided certificate must hold;
+ *  - ellipsoid pairs (their own code path) against the general superquadric
+ *    code on exponents 1 - 1e-12. */
 #include <mink/mink.h>
 
 #include <float.h>
@@ -281,6 +283,55 @@ static void test_overlaps(void)
 	ENSURE(missed == 0);
 }
 
+/* Ellipsoid pairs take their own code (support through Q = M diag(a,b,c)^2 M^T
+ * and a Newton loop in 3D); a superquadric with eps1 = eps2 = 1 - 1e-12 is
+ * the same body up to 1e-12 of its size and takes the general code (pair
+ * norms, tangent-plane Newton and trust region). The reference for each
+ * ellipsoid pair is that general answer: |d log|p|_q / dq| <= ln(3) / q^2
+ * bounds each support value's change by about 0.3 |q - 2| |p|, so the signed
+ * distances differ by at most about 1.1e-12 of the scale (tolerance 1e-11);
+ * statuses agree outside that band. Separated, overlapping and sheared pairs. */
+static void test_ellipsoid_path(void)
+{
+	unsigned long long seed = 777;
+	const double near1 = 1.0 - 1e-12;
+	double worst = 0.0;
+	for (int trial = 0; trial < 240; ++trial) {
+		mkShape3 s1, s2;
+		draw_shapes(&seed, 1, &s1, &s2);
+		int kind = trial % 3; /* 0 separated draws, 1 overlapping, 2 sheared */
+		double lo = kind == 1 ? -2.0 : 5.0, hi = kind == 1 ? 2.0 : 15.0;
+		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1));
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi));
+		mkMat3 M1 = mk_rand_rot(&seed), M2 = mk_rand_rot(&seed);
+		if (kind == 2) {
+			mkMat3 S = mkMat3_Identity();
+			S.m[0][1] = mk_test_uniform(&seed, -0.8, 0.8);
+			S.m[1][2] = mk_test_uniform(&seed, -0.8, 0.8);
+			S.m[2][2] = mk_test_uniform(&seed, 0.5, 1.5);
+			M1 = mkMat3_Mul(M1, S);
+			M2 = mkMat3_Mul(S, M2);
+		}
+		mkBody3 e1 = mkBody3_Make(s1, M1, c1), e2 = mkBody3_Make(s2, M2, c2);
+		mkBody3 g1 = e1, g2 = e2;
+		g1.shape.eps1 = g1.shape.eps2 = g2.shape.eps1 = g2.shape.eps2 = near1;
+		mkCollision3 ce, cg;
+		ENSURE(mkCollide3_Normal(e1, e2, &ce) == MK_OK);
+		ENSURE(mkCollide3_Normal(g1, g2, &cg) == MK_OK);
+		double diff = fabs(ce.distance - cg.distance) / ce.scale;
+		ENSURE_LE(diff, 1e-11);
+		if (diff > worst)
+			worst = diff;
+		if (fabs(cg.distance) > 1e-11 * cg.scale)
+			ENSURE(ce.status == cg.status);
+		/* The ellipsoid answer is a bound (independent evaluation). */
+		ENSURE_NEAR(mkCollide3_Bound(e1, e2, ce.normal), ce.distance, 1e-12 * ce.scale);
+		ENSURE_NEAR(mk_gauge(e1, ce.p1), 1.0, 1e-9);
+		ENSURE_NEAR(mk_gauge(e2, ce.p2), 1.0, 1e-9);
+	}
+	printf("ellipsoid path: largest |sd - sd(eps = 1 - 1e-12)| = %.2e of the scale\n", worst);
+}
+
 /* Bodies under general linear maps (shear and uneven scaling, not only
  * rotations): the same stationarity check against the grid search. */
 static void test_general_maps(void)
@@ -372,6 +423,7 @@ int main(void)
 	test_random_pairs();
 	test_overlaps();
 	test_general_maps();
+	test_ellipsoid_path();
 	test_near_touching();
 	test_failures_reported();
 	return mk_summary("test_collision");
