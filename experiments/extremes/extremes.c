@@ -1,10 +1,14 @@
 /* extremes.c - one cell of the extremes experiment (extremes.h): the
- * registry's methods run on the cell's pair, each output scored at 256 bits. */
+ * registry's methods run on the cell's pair, each output scored at 256 bits;
+ * and the cells on several threads, their rows in cell order. */
+#define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include "extremes.h"
 
 #include <mink/mpref_measure.h>
 
 #include <math.h>
+#include <pthread.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -24,6 +28,7 @@ void mkExtremesOptions_Default(mkExtremesOptions *o)
 	o->n3 = 5;
 	o->s2 = 64;
 	o->s3 = 5;
+	o->threads = 2;
 	for (int i = 0; i < MK_EXTREMES_METHODS_MAX; ++i)
 		o->method_on[i] = 1;
 }
@@ -80,6 +85,8 @@ typedef struct mkCellRun {
 	mkPointSet out;
 	double *u;       /* body 1's surface parameters of the closed forms: ux, uy, uz */
 	long ucap;
+	refScoreMemo *memo; /* the searches of the (cell, set) so far: a point that
+	                       an earlier method gave bit for bit is not searched again */
 } mkCellRun;
 
 /* The row of one method on one (cell, set). */
@@ -152,8 +159,8 @@ static int mkExtremes_Method(mkCellRun *cr, int plus, const mkMethod *m, long n,
 			: mkSample3_Grid((int)n, cr->u, cr->u + count, cr->u + 2 * count)) != MK_OK)
 			return -2;
 	}
-	return refSum_Score(&cr->cell.b1, &cr->cell.b2, plus, cr->out.x, cr->out.y, dim == 3 ? cr->out.z : NULL,
-		cr->out.count, ux, uy, uz, sc) == 0 ? 0 : -2;
+	return refSum_ScoreMemo(&cr->cell.b1, &cr->cell.b2, plus, cr->out.x, cr->out.y, dim == 3 ? cr->out.z : NULL,
+		cr->out.count, ux, uy, uz, cr->memo, sc) == 0 ? 0 : -2;
 }
 
 static int mkExtremes_Accepts(const mkMethod *m, const mkCellRun *cr, int plus)
@@ -173,6 +180,11 @@ int mkExtremes_RunCell(const mkExtremesOptions *o, int dim, int cell, mkCsv *csv
 		|| mkSpec_Parse(cr.cell.spec1, dim, "body1", &cr.s1, msg, sizeof msg) != MK_OK
 		|| mkSpec_Parse(cr.cell.spec2, dim, "body2", &cr.s2, msg, sizeof msg) != MK_OK) {
 		fprintf(stderr, "extremes: %dD cell %d cannot be built\n", dim, cell);
+		return -1;
+	}
+	cr.memo = refScoreMemo_New();
+	if (!cr.memo) {
+		fprintf(stderr, "extremes: out of memory\n");
 		return -1;
 	}
 	int failed = 0;
@@ -206,7 +218,144 @@ int mkExtremes_RunCell(const mkExtremesOptions *o, int dim, int cell, mkCsv *csv
 			tally->nonfinite += rc == MK_OK ? sc.nonfinite : 0;
 		}
 	}
+	long hits, misses;
+	refScoreMemo_Counts(cr.memo, &hits, &misses);
+	tally->reused += hits;
+	tally->searches += misses;
+	refScoreMemo_Free(cr.memo);
 	mkPointSet_Free(&cr.out);
 	free(cr.u);
+	return failed ? -1 : 0;
+}
+
+/* ---- the cells on several threads ---------------------------------------- */
+
+/* One unit's rows, gathered in memory until the units before it are written. */
+typedef struct mkUnitOut {
+	char *text;
+	size_t len;
+	long rows;
+	int misuse, failed, done;
+	mkExtremesTally tally;
+} mkUnitOut;
+
+typedef struct mkUnitPool {
+	const mkExtremesOptions *o;
+	const int *dims, *cells;
+	long count, next;
+	int stop;
+	int columns;
+	mkUnitOut *out;
+	pthread_mutex_t lock;
+	pthread_cond_t ready;
+} mkUnitPool;
+
+static void mkExtremes_RunUnit(mkUnitPool *p, long k)
+{
+	mkUnitOut *u = &p->out[k];
+	mkCsv csv;
+	memset(&csv, 0, sizeof csv);
+	csv.columns = p->columns;
+	csv.file.fp = open_memstream(&u->text, &u->len);
+	if (!csv.file.fp) {
+		fprintf(stderr, "extremes: out of memory\n");
+		u->failed = 1;
+		return;
+	}
+	u->failed = mkExtremes_RunCell(p->o, p->dims[k], p->cells[k], &csv, &u->tally) != 0;
+	if (fclose(csv.file.fp) != 0)
+		u->failed = 1;
+	u->rows = csv.rows;
+	u->misuse = csv.misuse || csv.field != 0;
+}
+
+static void *mkExtremes_Worker(void *arg)
+{
+	mkUnitPool *p = arg;
+	pthread_mutex_lock(&p->lock);
+	while (!p->stop && p->next < p->count) {
+		long k = p->next++;
+		pthread_mutex_unlock(&p->lock);
+		mkExtremes_RunUnit(p, k);
+		pthread_mutex_lock(&p->lock);
+		p->out[k].done = 1;
+		if (p->out[k].failed)
+			p->stop = 1;
+		pthread_cond_broadcast(&p->ready);
+	}
+	pthread_mutex_unlock(&p->lock);
+	return NULL;
+}
+
+int mkExtremes_RunUnits(const mkExtremesOptions *o, const int *dims, const int *cells, long count,
+	mkCsv *csv, mkExtremesTally *tally, void (*step)(void *ctx), void *ctx)
+{
+	mkUnitPool p;
+	memset(&p, 0, sizeof p);
+	p.o = o;
+	p.dims = dims;
+	p.cells = cells;
+	p.count = count;
+	while (mkExtremes_Columns[p.columns])
+		p.columns += 1;
+	p.out = calloc((size_t)(count > 0 ? count : 1), sizeof *p.out);
+	long nt = o->threads < 1 ? 1 : o->threads;
+	if (nt > count)
+		nt = count > 0 ? count : 1;
+	pthread_t *th = malloc((size_t)nt * sizeof *th);
+	if (!p.out || !th) {
+		free(p.out);
+		free(th);
+		fprintf(stderr, "extremes: out of memory\n");
+		return -1;
+	}
+	pthread_mutex_init(&p.lock, NULL);
+	pthread_cond_init(&p.ready, NULL);
+	long started = 0;
+	int failed = 0;
+	for (; started < nt; ++started)
+		if (pthread_create(&th[started], NULL, mkExtremes_Worker, &p) != 0)
+			break;
+	if (started == 0) {
+		fprintf(stderr, "extremes: cannot start a thread\n");
+		failed = 1;
+	}
+	/* Write the units in order as they complete. */
+	for (long k = 0; k < count && !failed; ++k) {
+		pthread_mutex_lock(&p.lock);
+		while (!p.out[k].done)
+			pthread_cond_wait(&p.ready, &p.lock);
+		pthread_mutex_unlock(&p.lock);
+		mkUnitOut *u = &p.out[k];
+		if (u->failed) {
+			failed = 1;
+			break;
+		}
+		if (u->len > 0)
+			fwrite(u->text, 1, u->len, csv->file.fp);
+		csv->rows += u->rows;
+		csv->misuse |= u->misuse;
+		tally->rows += u->tally.rows;
+		tally->failed += u->tally.failed;
+		tally->nonfinite += u->tally.nonfinite;
+		tally->rejected += u->tally.rejected;
+		tally->searches += u->tally.searches;
+		tally->reused += u->tally.reused;
+		free(u->text);
+		u->text = NULL;
+		if (step)
+			step(ctx);
+	}
+	pthread_mutex_lock(&p.lock);
+	p.stop = 1;
+	pthread_mutex_unlock(&p.lock);
+	for (long i = 0; i < started; ++i)
+		pthread_join(th[i], NULL);
+	for (long k = 0; k < count; ++k)
+		free(p.out[k].text);
+	pthread_mutex_destroy(&p.lock);
+	pthread_cond_destroy(&p.ready);
+	free(p.out);
+	free(th);
 	return failed ? -1 : 0;
 }

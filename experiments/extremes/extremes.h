@@ -35,6 +35,7 @@ typedef struct mkExtremesOptions {
 	long n2, n3;        /* closed forms: 2D angles, 3D grid side */
 	long s2, s3;        /* sampled methods: samples per body (3D grid side) */
 	long cells;         /* 0: every cell; else only the first `cells` of each dim (tests) */
+	long threads;       /* cells run at once (default 2); rows stay in cell order */
 	int method_on[MK_EXTREMES_METHODS_MAX]; /* by registry index */
 } mkExtremesOptions;
 
@@ -57,12 +58,22 @@ long mkExtremes_Units(const mkExtremesOptions *o, int *dims, int *cells);
 /* Counters a run keeps for its sidecar. */
 typedef struct mkExtremesTally {
 	long rows, failed, nonfinite, rejected;
+	long searches, reused; /* per-point 256-bit searches run, and answered from the memo */
 } mkExtremesTally;
 
 /* Every row of one (dim, cell): both sets (as selected), every selected
  * method that accepts the pair. Returns 0, or -1 when the cell cannot be
  * built (a grid or SPEC fault: a bug, the run fails) or memory runs out. */
 int mkExtremes_RunCell(const mkExtremesOptions *o, int dim, int cell, mkCsv *csv, mkExtremesTally *tally);
+
+/* Every unit k in [0, count) (dims[k], cells[k]) on `threads` threads,
+ * the rows written to csv in unit order whatever the thread count (each
+ * unit's rows are gathered in memory, then appended in order). step(ctx)
+ * is called by the calling thread after each unit is written. Returns 0,
+ * or -1 when a unit failed (the units after it are not run) or a thread
+ * could not be started. */
+int mkExtremes_RunUnits(const mkExtremesOptions *o, const int *dims, const int *cells, long count,
+	mkCsv *csv, mkExtremesTally *tally, void (*step)(void *ctx), void *ctx);
 
 /* The stability section of results/tables.md: per method and dim, the
  * cells kept within 1e-12 of the scale, the worst cell, the non-finite

@@ -23,6 +23,11 @@ static const mkDriver mkExtremesDriver = {
 	"have no row; the sidecar counts them (rejected_pairs).",
 };
 
+static void mkExtremes_Step(void *run)
+{
+	mkRun_Step(run, 1);
+}
+
 int main(int argc, char **argv)
 {
 	mkExtremesOptions o;
@@ -42,6 +47,8 @@ int main(int argc, char **argv)
 		MK_FLAG_LONG("--s3", "N", "sampled methods in 3D: grid side per body, 3..64 (default 5)", &o.s3, 3, 64),
 		MK_FLAG_LONG("--cells", "C", "only the first C cells of each dimension, 1..100000 (default all)", &o.cells,
 			1, 100000),
+		MK_FLAG_LONG("--threads", "K", "cells run at once, 1..64 (default 2); the rows do not depend on it", &o.threads,
+			1, 64),
 	};
 	mkRun run;
 	MK_RUN_BEGIN(&run, &mkExtremesDriver, flags, argc, argv);
@@ -76,13 +83,17 @@ int main(int argc, char **argv)
 	mkMeta_SetInt(&run.meta, "s2", o.s2);
 	mkMeta_SetInt(&run.meta, "s3", o.s3);
 	mkMeta_SetDouble(&run.meta, "keep_threshold", MK_EXTREMES_KEEP);
-	mkExtremesTally tally = { 0, 0, 0, 0 };
+	mkExtremesTally tally = { 0, 0, 0, 0, 0, 0 };
+	mkMeta_SetInt(&run.meta, "threads", o.threads);
 	int failed = mkRun_OpenCsv(&run, end - begin) != 0;
-	for (long k = begin; k < end && !failed; ++k, mkRun_Step(&run, 1))
-		failed = mkExtremes_RunCell(&o, dim[k], dim[total + k], &run.csv, &tally) != 0;
+	if (!failed)
+		failed = mkExtremes_RunUnits(&o, dim + begin, dim + total + begin, end - begin, &run.csv, &tally,
+			mkExtremes_Step, &run) != 0;
 	mkMeta_SetInt(&run.meta, "error_rows", tally.failed);
 	mkMeta_SetInt(&run.meta, "nonfinite_points", tally.nonfinite);
 	mkMeta_SetInt(&run.meta, "rejected_pairs", tally.rejected);
+	mkMeta_SetInt(&run.meta, "score_searches", tally.searches);
+	mkMeta_SetInt(&run.meta, "score_searches_reused", tally.reused);
 	free(dim);
 	return mkRun_End(&run, failed);
 }

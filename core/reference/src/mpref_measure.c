@@ -302,7 +302,7 @@ static void sumSupport(const refBody *b1, const refBody *b2, int plus, const ref
 	refVec_Init(&q);
 	refMat_MulTVec(&b1->M, dim, n, &w);
 	snapDirection(&w, dim);
-	refShape_Support(b1->s, &w, &sp);
+	refShape_SupportByLogs(b1->s, &w, &sp);
 	refMat_MulVec(&b1->M, dim, &sp, k);
 	for (int i = 0; i < dim; ++i)
 		mpfr_add_d(k->c[i], k->c[i], b1->t[i], RND);
@@ -311,7 +311,7 @@ static void sumSupport(const refBody *b1, const refBody *b2, int plus, const ref
 		for (int i = 0; i < dim; ++i)
 			mpfr_neg(w.c[i], w.c[i], RND);
 	snapDirection(&w, dim);
-	refShape_Support(b2->s, &w, &sp);
+	refShape_SupportByLogs(b2->s, &w, &sp);
 	refMat_MulVec(&b2->M, dim, &sp, &q);
 	for (int i = 0; i < dim; ++i) {
 		if (plus) {
@@ -765,6 +765,204 @@ int refSum_Distance(const refBody *b1, const refBody *b2, int plus,
 	return 0;
 }
 
+/* ---- the memo of refSum_ScoreMemo ---------------------------------------- */
+
+/* Kinds of memoised work: the scan (coarseNormal) of a point, the Newton
+ * stage from the exact normal at u, and distanceFrom from a double start
+ * normal with or without the derivative-free stage. */
+enum { MEMO_SCAN = 1, MEMO_EXACT_NEWTON = 2, MEMO_START_NEWTON = 3, MEMO_START_FULL = 4 };
+
+typedef struct refMemoEntry {
+	int kind;          /* 0: empty slot */
+	double p[3], s[3]; /* the point and its start (u or the start normal; unused by MEMO_SCAN) */
+	int done;          /* distanceFrom's return */
+	double phi;        /* MEMO_SCAN: coarseNormal's return */
+	double n0[3];      /* MEMO_SCAN: the normal it found */
+	refDistance d;
+} refMemoEntry;
+
+struct refScoreMemo {
+	refBody b1, b2;
+	int plus, valid;
+	refMemoEntry *slot;
+	size_t cap, used;
+	long hits, misses;
+};
+
+refScoreMemo *refScoreMemo_New(void)
+{
+	return calloc(1, sizeof(refScoreMemo));
+}
+
+void refScoreMemo_Free(refScoreMemo *memo)
+{
+	if (memo)
+		free(memo->slot);
+	free(memo);
+}
+
+void refScoreMemo_Counts(const refScoreMemo *memo, long *hits, long *misses)
+{
+	*hits = memo ? memo->hits : 0;
+	*misses = memo ? memo->misses : 0;
+}
+
+static int bodySame(const refBody *a, const refBody *b)
+{
+	if (a->s.dim != b->s.dim || a->s.e1 != b->s.e1 || a->s.e2 != b->s.e2)
+		return 0;
+	for (int i = 0; i < 3; ++i) {
+		if (a->s.a[i] != b->s.a[i] || a->t[i] != b->t[i])
+			return 0;
+		for (int j = 0; j < 3; ++j)
+			if (a->M.m[i][j] != b->M.m[i][j])
+				return 0;
+	}
+	return 1;
+}
+
+/* Bound the memo to the pair (emptied when it was another's). */
+static void memoBind(refScoreMemo *m, const refBody *b1, const refBody *b2, int plus)
+{
+	if (m->valid && m->plus == plus && bodySame(&m->b1, b1) && bodySame(&m->b2, b2))
+		return;
+	if (m->slot)
+		memset(m->slot, 0, m->cap * sizeof *m->slot);
+	m->used = 0;
+	m->b1 = *b1;
+	m->b2 = *b2;
+	m->plus = plus;
+	m->valid = 1;
+}
+
+/* Keys compare by bits (so -0 and 0 differ, as they may for the search). */
+static uint64_t memoHash(int kind, const double *p, const double *s)
+{
+	uint64_t h = 0x9e3779b97f4a7c15u * (uint64_t)kind;
+	for (int i = 0; i < 6; ++i) {
+		uint64_t w;
+		memcpy(&w, i < 3 ? &p[i] : &s[i - 3], sizeof w);
+		h ^= w + 0x9e3779b97f4a7c15u + (h << 6) + (h >> 2);
+		h *= 0xbf58476d1ce4e5b9u;
+	}
+	return h ^ (h >> 31);
+}
+
+static int memoKeyEq(const refMemoEntry *e, int kind, const double *p, const double *s)
+{
+	return e->kind == kind && memcmp(e->p, p, sizeof e->p) == 0 && memcmp(e->s, s, sizeof e->s) == 0;
+}
+
+/* The slot of (kind, p, s): its entry when present (*found = 1), else the
+ * empty slot to fill (NULL when the table cannot grow). */
+static refMemoEntry *memoSlot(refScoreMemo *m, int kind, const double *p, const double *s, int *found)
+{
+	*found = 0;
+	if (2 * (m->used + 1) > m->cap) {
+		size_t cap = m->cap ? 2 * m->cap : 256;
+		refMemoEntry *slot = calloc(cap, sizeof *slot);
+		if (!slot)
+			return NULL;
+		for (size_t i = 0; i < m->cap; ++i) {
+			const refMemoEntry *e = &m->slot[i];
+			if (!e->kind)
+				continue;
+			size_t j = memoHash(e->kind, e->p, e->s) & (cap - 1);
+			while (slot[j].kind)
+				j = (j + 1) & (cap - 1);
+			slot[j] = *e;
+		}
+		free(m->slot);
+		m->slot = slot;
+		m->cap = cap;
+	}
+	size_t j = memoHash(kind, p, s) & (m->cap - 1);
+	while (m->slot[j].kind) {
+		if (memoKeyEq(&m->slot[j], kind, p, s)) {
+			*found = 1;
+			return &m->slot[j];
+		}
+		j = (j + 1) & (m->cap - 1);
+	}
+	return &m->slot[j];
+}
+
+static void memoFill(refScoreMemo *m, refMemoEntry *e, int kind, const double *p, const double *s)
+{
+	e->kind = kind;
+	memcpy(e->p, p, sizeof e->p);
+	memcpy(e->s, s, sizeof e->s);
+	m->used++;
+	m->misses++;
+}
+
+/* coarseNormal through the memo. Returns 0, or -1 when the memo cannot grow. */
+static int memoScan(refScoreMemo *m, const refBody *b1, const refBody *b2, int plus, const double *p,
+	double *n0, double *phi)
+{
+	static const double none[3] = { 0.0, 0.0, 0.0 };
+	if (!m) {
+		*phi = coarseNormal(b1, b2, plus, p, n0);
+		return 0;
+	}
+	int found;
+	refMemoEntry *e = memoSlot(m, MEMO_SCAN, p, none, &found);
+	if (!e)
+		return -1;
+	if (found) {
+		m->hits++;
+	} else {
+		e->phi = coarseNormal(b1, b2, plus, p, e->n0);
+		memoFill(m, e, MEMO_SCAN, p, none);
+	}
+	*phi = e->phi;
+	memcpy(n0, e->n0, sizeof e->n0);
+	return 0;
+}
+
+/* distanceFrom through the memo: from the double start n0 (u NULL), or
+ * from the exact normal nn of B1 at u (newtonOnly then). Returns
+ * distanceFrom's result, or -1 when the memo cannot grow. */
+static int distanceAt(const refBody *b1, const refBody *b2, int plus, const double *p,
+	const double *n0, const double *u, double S, int newtonOnly, refDistance *out)
+{
+	if (!u)
+		return distanceFrom(b1, b2, plus, p, n0, NULL, S, newtonOnly, out);
+	/* The exact normal of B1 at u, kept at 256 bits (see distanceFrom). */
+	int dim = b1->s.dim;
+	double nd[3] = { 0.0, 0.0, 0.0 };
+	refVec uu, nn;
+	refVec_Init(&uu);
+	refVec_Init(&nn);
+	refVec_FromD(&uu, dim, u);
+	refBody_Normal(b1, &uu, &nn);
+	refVec_ToD(&nn, dim, nd);
+	int done = distanceFrom(b1, b2, plus, p, nd, &nn, S, 1, out);
+	refVec_Clear(&uu);
+	refVec_Clear(&nn);
+	return done;
+}
+
+static int memoDistance(refScoreMemo *m, const refBody *b1, const refBody *b2, int plus, const double *p,
+	const double *n0, const double *u, double S, int newtonOnly, refDistance *out)
+{
+	if (!m)
+		return distanceAt(b1, b2, plus, p, n0, u, S, newtonOnly, out);
+	int kind = u ? MEMO_EXACT_NEWTON : newtonOnly ? MEMO_START_NEWTON : MEMO_START_FULL, found;
+	const double *s = u ? u : n0;
+	refMemoEntry *e = memoSlot(m, kind, p, s, &found);
+	if (!e)
+		return -1;
+	if (found) {
+		m->hits++;
+	} else {
+		e->done = distanceAt(b1, b2, plus, p, n0, u, S, newtonOnly, &e->d);
+		memoFill(m, e, kind, p, s);
+	}
+	*out = e->d;
+	return e->done;
+}
+
 /* ---- scoring a point set ------------------------------------------------ */
 
 typedef struct refCand { int index; double bound; double n0[3]; } refCand;
@@ -789,6 +987,13 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 	const double *x, const double *y, const double *z, int count,
 	const double *ux, const double *uy, const double *uz, refScore *out)
 {
+	return refSum_ScoreMemo(b1, b2, plus, x, y, z, count, ux, uy, uz, NULL, out);
+}
+
+int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
+	const double *x, const double *y, const double *z, int count,
+	const double *ux, const double *uy, const double *uz, refScoreMemo *memo, refScore *out)
+{
 	if (!out)
 		return -1;
 	memset(out, 0, sizeof *out);
@@ -803,10 +1008,9 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 	refCand *cand = malloc(sizeof *cand * (size_t)(count > 0 ? count : 1));
 	if (!cand)
 		return -1;
-	refVec u, nn;
-	refVec_Init(&u);
-	refVec_Init(&nn);
-	int pending = 0;
+	if (memo)
+		memoBind(memo, b1, b2, plus);
+	int pending = 0, oom = 0;
 	double accMax = 0.0;
 	if (!hints) {
 		/* Without parameters (hull vertices): the scan's phi in double is
@@ -825,19 +1029,28 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 			out->points++;
 			refCand *c = &cand[pending++];
 			c->index = i;
-			double f = coarseNormal(b1, b2, plus, p, c->n0);
+			double f;
+			if (memoScan(memo, b1, b2, plus, p, c->n0, &f) != 0) {
+				oom = 1;
+				break;
+			}
 			c->bound = fabs(f) + 1e-9 * out->scale + 1e-6 * fabs(f);
 		}
 		qsort(cand, (size_t)pending, sizeof *cand, candCompare);
-		for (int i = 0; i < pending; ++i) {
+		for (int i = 0; i < pending && !oom; ++i) {
 			if (out->worst >= 0 && cand[i].bound <= out->errorAbs)
 				break;
 			int j = cand[i].index;
 			double p[3] = { x[j], y[j], dim == 3 ? z[j] : 0.0 };
 			refDistance d;
-			if (!distanceFrom(b1, b2, plus, p, cand[i].n0, NULL, out->scale, 1, &d)) {
-				distanceFrom(b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d);
+			int done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 1, &d);
+			if (done == 0) {
+				done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d);
 				out->refined++;
+			}
+			if (done < 0) {
+				oom = 1;
+				break;
 			}
 			out->searched++;
 			scoreTake(out, j, &d);
@@ -849,20 +1062,20 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 	/* Stage 1 (with parameters): Newton from the exact normal of every
 	 * point. Where it converges the distance is known; elsewhere (kinks)
 	 * keep the bound |d| <= |v| and the normal reached. */
-	for (int i = 0; i < count && hints; ++i) {
-		double p[3] = { x[i], y[i], dim == 3 ? z[i] : 0.0 }, n0[3] = { 0.0, 0.0, 0.0 };
+	for (int i = 0; i < count && hints && !oom; ++i) {
+		double p[3] = { x[i], y[i], dim == 3 ? z[i] : 0.0 };
 		if (!finite3(p, dim)) {
 			out->nonfinite++;
 			continue;
 		}
 		out->points++;
 		double ud[3] = { ux[i], uy[i], dim == 3 ? uz[i] : 0.0 };
-		refVec_FromD(&u, dim, ud);
-		refBody_Normal(b1, &u, &nn);
-		refVec_ToD(&nn, dim, n0);
 		refDistance d;
 		out->searched++;
-		if (distanceFrom(b1, b2, plus, p, n0, &nn, out->scale, 1, &d)) {
+		int done = memoDistance(memo, b1, b2, plus, p, NULL, ud, out->scale, 1, &d);
+		if (done < 0) {
+			oom = 1;
+		} else if (done) {
 			scoreTake(out, i, &d);
 			if (d.accuracy > accMax)
 				accMax = d.accuracy;
@@ -876,13 +1089,16 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 	/* Stage 2: the derivative-free search, in decreasing order of the bound,
 	 * until the bound falls below the largest distance known. */
 	qsort(cand, (size_t)pending, sizeof *cand, candCompare);
-	for (int i = 0; i < pending; ++i) {
+	for (int i = 0; i < pending && !oom; ++i) {
 		if (out->worst >= 0 && cand[i].bound <= out->errorAbs)
 			break; /* every remaining point is bounded below the maximum */
 		int j = cand[i].index;
 		double p[3] = { x[j], y[j], dim == 3 ? z[j] : 0.0 };
 		refDistance d;
-		distanceFrom(b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d);
+		if (memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d) < 0) {
+			oom = 1;
+			break;
+		}
 		out->refined++;
 		scoreTake(out, j, &d);
 		if (d.accuracy > accMax)
@@ -892,9 +1108,12 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 		out->errorRel = out->errorAbs / out->scale;
 		out->accuracy = accMax / out->scale;
 	}
-	refVec_Clear(&u);
-	refVec_Clear(&nn);
 	free(cand);
+	if (oom) {
+		memset(out, 0, sizeof *out);
+		out->worst = -1;
+		return -1;
+	}
 	return 0;
 }
 

@@ -19,6 +19,8 @@
  *     edges of a near-cube, where only the derivative-free stage finds it.
  *  5. The condition on a translation-dominated pair, worked by hand: the
  *     boundary moves exactly with t1, by one ulp of each coordinate.
+ *  6. The searches' support point by logarithms against the one by powers.
+ *  7. The memo of refSum_ScoreMemo: scores bit for bit those without it.
  * Tolerances: the rounding of p itself (2^-53 |p| per coordinate, so
  * 2^-52 sqrt(dim) |p| in all) plus four times the search's target (1e-5 of
  * the distance or 1e-21 of the scale, mink/mpref_measure.h). */
@@ -354,6 +356,139 @@ static void checkScore(void)
 	ENSURE(refSum_Distance(&b, &b, 0, p, zero, &d) == -1);
 }
 
+/* 6: refShape_SupportByLogs, the searches' support point, against
+ * refShape_Support (powers taken one by one with mpfr_pow, correctly
+ * rounded each) on exponents towards both ends of the range, semi-axes
+ * 1e-6 ... 1e6 and directions with zero and tiny components. The logarithm
+ * form is exact to about |q log|a d|| 2^-256 relative (mink/mpref.h: below
+ * 2^-227 here, q <= 2e6 and |log| < 50); the powers one by one to a few
+ * ulps of 2^-256 times the same amplification. 2^-200 of the point's size
+ * leaves a margin of 2^27 over both and is still 1e-60: far below any
+ * distance the searches resolve (1e-21 of the scale). */
+static void checkSupportByLogs(void)
+{
+	static const double eps[] = { 1e-6, 1e-3, 0.1, 0.5, 1.0, 1.5, 1.9, 1.999, 2.0 - 1e-6 };
+	static const double axes[] = { 1.0, 1e-6, 1e6, 0.37 };
+	refRng rng = { 2024 };
+	int ne = (int)(sizeof eps / sizeof eps[0]), checked = 0;
+	double worst = 0.0;
+	refVec d, x, y, diff;
+	refVec_Init(&d);
+	refVec_Init(&x);
+	refVec_Init(&y);
+	refVec_Init(&diff);
+	for (int dim = 2; dim <= 3; ++dim)
+		for (int i = 0; i < ne; ++i)
+			for (int j = 0; j < (dim == 3 ? ne : 1); ++j)
+				for (int k = 0; k < 12; ++k) {
+					refShape s;
+					memset(&s, 0, sizeof s);
+					s.dim = dim;
+					s.e1 = eps[i];
+					s.e2 = dim == 3 ? eps[j] : 0.0;
+					for (int c = 0; c < dim; ++c)
+						s.a[c] = axes[(k + c) % 4];
+					double u[3] = { 0.0, 0.0, 0.0 };
+					randomUnit(&rng, dim, u);
+					/* a zero component (k = 0, 1, 2) or a tiny one (k = 3, 4) */
+					if (k < dim)
+						u[k] = 0.0;
+					else if (k == 3 || k == 4)
+						u[k - 3] *= 1e-15;
+					refVec_FromD(&d, dim, u);
+					refShape_Support(s, &d, &x);
+					refShape_SupportByLogs(s, &d, &y);
+					for (int c = 0; c < 3; ++c)
+						mpfr_sub(diff.c[c], x.c[c], y.c[c], MPFR_RNDN);
+					double size = refVec_NormD(&x, dim), err = refVec_NormD(&diff, dim) / size;
+					ENSURE_LE(err, 0x1p-200, "%dD eps %g %g axes %g %g %g: by logs %.3e relative off",
+						dim, s.e1, s.e2, s.a[0], s.a[1], s.a[2], err);
+					if (err > worst)
+						worst = err;
+					checked++;
+				}
+	printf("support by logarithms: %d points, largest relative difference from the powers %.3e\n", checked, worst);
+	refVec_Clear(&d);
+	refVec_Clear(&x);
+	refVec_Clear(&y);
+	refVec_Clear(&diff);
+}
+
+/* 7: the memo of refSum_ScoreMemo changes no bit of a score: the same
+ * outputs scored with and without it, twice in a row (the second time from
+ * the memo alone), then another pair through the same memo (it must empty
+ * itself, not answer from the first pair). Points: boundary points of each
+ * pair moved by 1e-12 ... 1e-9 of the scale (near-box and ellipsoid edges
+ * included, where the derivative-free stage runs). */
+static int scoreSame(const refScore *a, const refScore *b)
+{
+	return a->scale == b->scale && a->errorAbs == b->errorAbs && a->errorRel == b->errorRel
+		&& a->accuracy == b->accuracy && a->worst == b->worst && a->worstDist == b->worstDist
+		&& a->points == b->points && a->nonfinite == b->nonfinite && a->searched == b->searched
+		&& a->refined == b->refined;
+}
+
+static void checkMemo(void)
+{
+	refScoreMemo *memo = refScoreMemo_New();
+	ENSURE(memo != NULL);
+	for (int dim = 2; dim <= 3; ++dim)
+		for (int pair = 0; pair < 2; ++pair)
+			for (int plus = 0; plus <= 1; ++plus) {
+				double t1[3] = { 0.3, -0.2, 0.1 }, t2[3] = { -1.0, 2.0, 0.5 };
+				refBody b1 = makeBody(dim, 1.0, 0.4, 0.7, pair ? 1e-6 : 0.5, pair ? 1e-6 : 1.5, 0.4, t1);
+				refBody b2 = makeBody(dim, 0.6, 0.9, 0.3, pair ? 1.0 : 1.9, 1.0, 1.3, t2);
+				int n = dim == 2 ? 24 : 5, count = dim == 2 ? n : n * n;
+				double ux[25], uy[25], uz[25], x[25], y[25], z[25];
+				refSample_Params(dim, n, ux, uy, dim == 3 ? uz : NULL);
+				double S = refSum_Scale(&b1, &b2, plus);
+				for (int k = 0; k < count; ++k) {
+					refVec u, xv, nv;
+					refVec_Init(&u);
+					refVec_Init(&xv);
+					refVec_Init(&nv);
+					double ud[3] = { ux[k], uy[k], dim == 3 ? uz[k] : 0.0 }, p[3] = { 0.0, 0.0, 0.0 };
+					refVec_FromD(&u, dim, ud);
+					refSum_Point(&b1, &b2, plus, 1, &u, &xv, NULL, &nv);
+					double delta = 1e-12 * S * (1 + k % 5) * (k % 2 ? 1.0 : -1.0) * (k == 3 ? 1000.0 : 1.0);
+					for (int i = 0; i < dim; ++i) {
+						mpfr_t t;
+						mpfr_init2(t, REF_PREC);
+						mpfr_mul_d(t, nv.c[i], delta, MPFR_RNDN);
+						mpfr_add(t, t, xv.c[i], MPFR_RNDN);
+						p[i] = mpfr_get_d(t, MPFR_RNDN);
+						mpfr_clear(t);
+					}
+					x[k] = p[0];
+					y[k] = p[1];
+					z[k] = p[2];
+					refVec_Clear(&u);
+					refVec_Clear(&xv);
+					refVec_Clear(&nv);
+				}
+				for (int h = 0; h < 2; ++h) {
+					const double *hx = h ? ux : NULL, *hy = h ? uy : NULL, *hz = h && dim == 3 ? uz : NULL;
+					refScore plain, first, again;
+					long hits0, misses0, hits1, misses1;
+					ENSURE(refSum_Score(&b1, &b2, plus, x, y, dim == 3 ? z : NULL, count, hx, hy, hz, &plain) == 0);
+					refScoreMemo_Counts(memo, &hits0, &misses0);
+					ENSURE(refSum_ScoreMemo(&b1, &b2, plus, x, y, dim == 3 ? z : NULL, count, hx, hy, hz, memo,
+						&first) == 0);
+					ENSURE(refSum_ScoreMemo(&b1, &b2, plus, x, y, dim == 3 ? z : NULL, count, hx, hy, hz, memo,
+						&again) == 0);
+					refScoreMemo_Counts(memo, &hits1, &misses1);
+					ENSURE_MSG(scoreSame(&plain, &first) && scoreSame(&plain, &again),
+						"%dD pair %d plus %d hints %d: memo changed the score (%.17g %.17g %.17g)", dim, pair, plus,
+						h, plain.errorAbs, first.errorAbs, again.errorAbs);
+					/* the second call ran no search: every one came from the memo */
+					ENSURE(hits1 - hits0 >= plain.searched + plain.refined && misses1 - misses0 > 0);
+					ENSURE(plain.worst >= 0);
+				}
+			}
+	refScoreMemo_Free(memo);
+	refScoreMemo_Free(NULL);
+}
+
 /* 5: the condition of a pair dominated by its translation. B1 a circle of
  * radius 1 at t1 = (1.5 2^30, 1.5 2^30), B2 a circle of radius 0.5; the
  * contact set is the disc of radius 1.5 around t1. One ulp of each
@@ -415,5 +550,7 @@ int main(void)
 	checkFaces();
 	checkScore();
 	checkCondition();
+	checkSupportByLogs();
+	checkMemo();
 	return refTest_Result("ref_measure");
 }

@@ -93,6 +93,29 @@ int refSum_Score(const refBody *b1, const refBody *b2, int plus,
 	const double *x, const double *y, const double *z, int count,
 	const double *ux, const double *uy, const double *uz, refScore *out);
 
+/* A memo of the per-point work of refSum_Score for one pair and set: the
+ * scan's start normal and phi per point, and the result of every distance
+ * search keyed by the point, its start (the surface parameter u, or the
+ * start normal in double) and the stage. Every one of these is a
+ * deterministic function of those keys and of the pair, so a score with the
+ * memo is bit for bit the score without it; the memo only skips repeating
+ * a search for a point some earlier output of the same pair already had
+ * (several methods often give the same point to the last bit, sampled hulls
+ * from different libraries the same vertices). The memo holds copies of the
+ * bodies and of plus: given another pair or set it empties itself first.
+ * Not shared between threads. */
+typedef struct refScoreMemo refScoreMemo;
+refScoreMemo *refScoreMemo_New(void);
+void refScoreMemo_Free(refScoreMemo *memo);
+/* Searches answered from the memo and searches run, since it was made. */
+void refScoreMemo_Counts(const refScoreMemo *memo, long *hits, long *misses);
+
+/* refSum_Score with a memo (NULL: none; then exactly refSum_Score). Returns
+ * -1 also when the memo cannot grow (out of memory). */
+int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
+	const double *x, const double *y, const double *z, int count,
+	const double *ux, const double *uy, const double *uz, refScoreMemo *memo, refScore *out);
+
 /* The problem's condition: a measured sensitivity, not a derivative bound.
  * Every input of the pair (semi-axes, exponents, map entries, translation
  * of both bodies; B2's translation only for plus) is moved by one ulp, up or
