@@ -324,6 +324,52 @@ static double mkRefBfgs(mkRefState *st, mkVec3 *n, int budget)
 	return st->lb;
 }
 
+/* 1 when the origin lies inside a tetrahedron of the points y[0..n) with
+ * every barycentric coordinate >= 1e-12 (all 4-subsets tried): then a ball
+ * around the origin lies in D, so the bodies overlap. */
+static int mkRefEncloses(const mkVec3 *y, int n)
+{
+	for (int a = 0; a < n; ++a)
+		for (int b = a + 1; b < n; ++b)
+			for (int c = b + 1; c < n; ++c)
+				for (int d = c + 1; d < n; ++d) {
+					/* -y_a = sum_j mu_j (y_j - y_a), j in b, c, d. */
+					mkVec3 e1 = mkVec3_Sub(y[b], y[a]), e2 = mkVec3_Sub(y[c], y[a]), e3 = mkVec3_Sub(y[d], y[a]);
+					double M[3][3] = { { e1.x, e2.x, e3.x }, { e1.y, e2.y, e3.y }, { e1.z, e2.z, e3.z } };
+					double r[3] = { -y[a].x, -y[a].y, -y[a].z }, mu[3];
+					if (!mkSolve(M, r, 3, mu))
+						continue;
+					double l0 = 1.0 - mu[0] - mu[1] - mu[2];
+					if (fmin(fmin(l0, mu[0]), fmin(mu[1], mu[2])) >= 1e-12)
+						return 1;
+				}
+	return 0;
+}
+
+/* Overlap certificate when GJK met the origin on a segment or triangle (or
+ * at a point) of its hull, as happens for pairs placed symmetrically along
+ * an axis: the kept points and the points of D towards 12 directions in
+ * general position (an icosahedron turned by a fixed rotation). */
+static int mkRefEncloseGeneric(mkRefState *st, const mkVec3 *kept, int m)
+{
+	static const double ico[6][3] = { { 0, 1, 1.618033988749895 }, { 0, -1, 1.618033988749895 },
+		{ 1, 1.618033988749895, 0 }, { -1, 1.618033988749895, 0 }, { 1.618033988749895, 0, 1 },
+		{ -1.618033988749895, 0, 1 } };
+	mkVec3 y[16];
+	int n = 0;
+	for (int i = 0; i < m; ++i)
+		y[n++] = kept[i];
+	mkMat3 R = mkMat3_FromQuat(0.9, 0.31, -0.22, 0.17);
+	for (int i = 0; i < 12; ++i) {
+		mkVec3 v = mkVec3_Make(ico[i % 6][0], ico[i % 6][1], ico[i % 6][2]);
+		v = mkVec3_Normalize(mkMat3_MulVec(R, i < 6 ? v : mkVec3_Neg(v)));
+		mkRefPoint q;
+		mkRefEval(st, v, &q);
+		y[n++] = q.z;
+	}
+	return mkRefEncloses(y, n);
+}
+
 /* GJK on D from the unit direction n0. Fills the least |z| found (ub, its
  * body points) and returns 1 when the origin was enclosed (overlap
  * certified), 0 otherwise. */
@@ -367,8 +413,14 @@ static int mkRefGjk(mkRefState *st, mkVec3 n0, double scale, double *ub, mkVec3 
 		for (int i = 0; i < m; ++i)
 			y[i] = keep[i];
 		n = m;
-		if (!(nz > 0.0) || m == 4)
-			break; /* origin on the hull's boundary (touching within rounding) */
+		if (!(nz > 1e-15 * scale) || m == 4) {
+			/* The origin on a segment or triangle of the hull (or a
+			 * flat tetrahedron): D holds it; certify a ball around it. */
+			mkVec3 kz[4];
+			for (int i = 0; i < m; ++i)
+				kz[i] = y[i].z;
+			return mkRefEncloseGeneric(st, kz, m);
+		}
 		/* The direction: for a triangle, its plane's normal (accurate when
 		 * the triangle is wide and z small); else z / |z|. */
 		mkVec3 dir = mkVec3_Scale(z, 1.0 / nz);
