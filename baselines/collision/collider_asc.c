@@ -42,19 +42,24 @@
 /* Largest real root of l^3 + a l^2 + b l + c, polished by two Newton steps. */
 static double mkCubicLargest(double a, double b, double c)
 {
-	double p = b - a * a / 3.0, q = 2.0 * a * a * a / 27.0 - a * b / 3.0 + c;
-	double disc = 0.25 * q * q + p * p * p / 27.0, x;
+	const double third = 1.0 / 3.0;
+	double a3 = a * third;
+	double p = b - a * a3, q = (2.0 * a3 * a3 - b) * a3 + c;
+	double p3 = p * third;
+	double disc = 0.25 * q * q + p3 * p3 * p3, x;
 	if (disc > 0.0) {
 		double r = sqrt(disc);
 		x = cbrt(-0.5 * q + r) + cbrt(-0.5 * q - r);
 	} else if (p == 0.0) {
 		x = 0.0;
 	} else {
-		double m = 2.0 * sqrt(-p / 3.0);
-		double arg = fmax(-1.0, fmin(1.0, 3.0 * q / (p * m)));
-		x = m * cos(acos(arg) / 3.0);
+		/* Three real roots: x = m cos(acos(3 q / (p m)) / 3), the largest. */
+		double m = 2.0 * sqrt(-p3);
+		double arg = 3.0 * q / (p * m);
+		arg = arg < -1.0 ? -1.0 : arg > 1.0 ? 1.0 : arg;
+		x = m * cos(acos(arg) * third);
 	}
-	x -= a / 3.0;
+	x -= a3;
 	for (int it = 0; it < 2; ++it) {
 		double f = ((x + a) * x + b) * x + c, df = (3.0 * x + 2.0 * a) * x + b;
 		if (df != 0.0)
