@@ -27,8 +27,8 @@
  * The maximum of p on l > 0. p(0) = c0 < 0 and p -> -inf. The two negative
  * roots hold a critical point of p between them, so at most the largest
  * root x of the cubic p' lies in l > 0, and max over l > 0 of p is p(x)
- * when x > 0, else p(0) < 0. x by the cubic formula, then two Newton steps
- * on p'. Separated iff p(x) > tol, overlapping iff p(x) < -tol, touching in
+ * when x > 0, else p(0) < 0. x by the cubic formula (cos(acos(.) / 3) by
+ * a polynomial, no trigonometric call), then two Newton steps on p'. Separated iff p(x) > tol, overlapping iff p(x) < -tol, touching in
  * between, where tol bounds the rounding of p(x) and of its coefficients:
  * 32 eps times the product over the rows of |x J + B'| of the row sums (a
  * bound on every product term of the Leibniz expansion of det(x J + B')).
@@ -53,11 +53,20 @@ static double mkCubicLargest(double a, double b, double c)
 	} else if (p == 0.0) {
 		x = 0.0;
 	} else {
-		/* Three real roots: x = m cos(acos(3 q / (p m)) / 3), the largest. */
+		/* Three real roots: x = m cos(acos(arg) / 3), arg = 3 q / (p m), the
+		 * largest. With s = cos(acos(arg) / 2) = sqrt((1 + arg) / 2),
+		 * cos(acos(arg) / 3) = cos(2 acos(s) / 3), which is analytic in s on
+		 * [0, 1] (acos(s)^2 is analytic at s = 1): its degree-6 Chebyshev
+		 * interpolant in y = 2 s - 1 is within 1.9e-7, and the two Newton
+		 * steps below square that twice. No acos, no cos. */
 		double m = 2.0 * sqrt(-p3);
 		double arg = 3.0 * q / (p * m);
 		arg = arg < -1.0 ? -1.0 : arg > 1.0 ? 1.0 : arg;
-		x = m * cos(acos(arg) * third);
+		double y = 2.0 * sqrt(0.5 + 0.5 * arg) - 1.0;
+		double cs = ((((((-3.2867047034201846e-05 * y + 1.3097751764412635e-04) * y - 5.020910405583326e-04) * y
+			+ 2.4588651388908517e-03) * y - 1.5509445182466138e-02) * y + 2.4741001122299905e-01) * y
+			+ 7.660444431189781e-01);
+		x = m * cs;
 	}
 	x -= a3;
 	for (int it = 0; it < 2; ++it) {
@@ -141,7 +150,7 @@ static const char *mkEigen(void) { return mkCollide_EigenVersion(); }
 const mkCollider mkCollider_Asc = {
 	"asc", "ASC: algebraic separation of two ellipsoids, max of the quartic det(l A + B) on l > 0 in closed form",
 	"in body 1's unit-ball coordinates: coefficients from the principal minors of body 2's quadric; max over l > 0 at "
-	"the largest root of p' (cubic formula plus 2 Newton steps); touching iff |max| <= 32 eps prod of the row sums of "
+	"the largest root of p' (cubic formula, cos(acos(.)/3) by a degree-6 polynomial in sqrt((1 + .)/2), plus 2 Newton steps); touching iff |max| <= 32 eps prod of the row sums of "
 	"|x J + B'|",
 	MK_GIVES_STATUS, MK_PAIRS_ELLIPSOIDS, 0, NULL, mkRunAsc, NULL
 };
