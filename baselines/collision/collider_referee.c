@@ -19,15 +19,18 @@
  * exponents near 0.1 included), it does not stall where a search over n on
  * the nearly kinked f does. When the bracket is still wide, a pattern search
  * with directions rotated at every step (8 directions in the tangent plane
- * and the ascent direction of f) raises the lower bound, and its support
- * points go back into the hull for the upper bound.
+ * and the ascent direction of f) raises the lower bound and GJK restarts
+ * from its best normal (twice at most).
  *
  * Overlapping pairs: overlap is certified when the origin lies inside a
- * tetrahedron of points of D (all barycentric coordinates >= 1e-12). The
+ * tetrahedron of points of D (all barycentric coordinates >= 1e-12; when GJK
+ * meets the origin on a segment or triangle, as in symmetric placements,
+ * with 12 more support points in general position). The
  * penetration depth has several local optima on the sphere; the referee
  * evaluates f on a 2000-point Fibonacci sphere, the centre line, the bodies'
- * axes and GJK's last directions, and refines the best 6 apart from each
- * other by the rotating pattern search; the answer is the best f found, a
+ * face normals and GJK's last directions, and refines the best 6 apart from
+ * each other by BFGS on f (gradient: the tangential part of w(n)), the
+ * rotating pattern search and BFGS again; the answer is the best f found, a
  * certified lower bound of sd (an upper bound of the depth), but that no
  * deeper optimum was missed is not certified (gap NaN).
  *
@@ -38,10 +41,8 @@
  * some width), normal = argmax f, p1/p2 = the body points of the
  * least |z| (convex combinations of support points; separated), or the
  * support points at the normal (overlaps), iterations = support-map pairs
- * evaluated. Status: separated iff max f > 0 (certain), overlapping iff the
- * origin was enclosed (certain), else from the sign of sd's estimate under
- * the touching band; MK_ERR_CONVERGENCE if neither the status nor a finite
- * bound is found. */
+ * evaluated. Status: max f under the touching band (mkContact_FromDistance);
+ * MK_ERR_CONVERGENCE when no finite f was found. */
 #include <float.h>
 #include <math.h>
 
@@ -187,13 +188,13 @@ static mkVec3 mkRefOrtho(mkVec3 n)
 	return mkVec3_Normalize(mkVec3_Cross(n, a));
 }
 
-/* Pattern search for max f from n with initial step `step` (radians):
- * 8 directions in the tangent plane, turned by the golden angle at every
- * step, and the ascent direction d - x(n) projected on the tangent plane
- * (x(n) = -w(n), the contact-space point); a step that raises f is taken and
- * doubles, otherwise it halves, down to 1e-15 rad. Returns the best f; n is
- * moved to its normal. Each support point evaluated is offered to `keep`
- * (the separated case's hull) when not NULL. */
+/* Pattern search for max f from n with initial step `step` (radians), at
+ * most `budget` evaluations: 8 directions in the tangent plane, turned by
+ * the golden angle at every step, and first the ascent direction (f's
+ * gradient on the sphere is the tangential part of w(n)); a step that raises
+ * f is taken and doubles (up to the initial step), otherwise the step halves,
+ * down to 1e-15 rad. Returns the best f of this search; n is moved to its
+ * normal. */
 static double mkRefPattern(mkRefState *st, mkVec3 *n, double step, int budget)
 {
 	mkRefPoint q;
@@ -201,8 +202,7 @@ static double mkRefPattern(mkRefState *st, mkVec3 *n, double step, int budget)
 	int evals = 1;
 	while (step > 1e-15 && evals < budget) {
 		mkVec3 t1 = mkRefOrtho(*n), t2 = mkVec3_Cross(*n, t1);
-		/* The ascent direction: tangential part of d - x(n) = w(n) + ... ;
-		 * f's gradient on the sphere is the tangential part of w(n). */
+		/* The ascent direction: the tangential part of w(n). */
 		mkVec3 g = mkVec3_Sub(q.z, mkVec3_Scale(*n, mkVec3_Dot(q.z, *n)));
 		double gl = mkVec3_Length(g);
 		int moved = 0;
