@@ -14,7 +14,8 @@
  * keeps at most 4 points of D, takes z = the point of least norm of their
  * convex hull (every subset tried, the smallest valid one kept), adds
  * w(z/|z|), and stops when the bracket [max f, min |z|] is narrower than
- * 1e-14 of the scale or stops shrinking. Since D's faces and edges are met
+ * 1e-14 of the scale or stops shrinking (no 1e-3 gain in 8 steps once within
+ * 1e-11 of the scale, 40 before). Since D's faces and edges are met
  * by hulls of support points (nearly flat faces of superquadrics with
  * exponents near 0.1 included), it does not stall where a search over n on
  * the nearly kinked f does. When the bracket is still wide, a pattern search
@@ -49,7 +50,7 @@
 #include "colliders_internal.h"
 
 #define MK_REF_TOL 1e-14         /* bracket target, times the scale */
-#define MK_REF_GJK_ITER 400      /* GJK iterations at most */
+#define MK_REF_GJK_ITER 2000     /* GJK iterations at most */
 #define MK_REF_FIB 2000          /* overlap: directions of the global sweep */
 #define MK_REF_STARTS 6          /* overlap: starts of the local search */
 #define MK_REF_PATTERN_EVAL 3000 /* evaluations of one pattern search at most */
@@ -439,7 +440,10 @@ static int mkRefGjk(mkRefState *st, mkVec3 n0, double scale, double *ub, mkVec3 
 		if (bracket <= MK_REF_TOL * scale)
 			break;
 		if (bracket >= prev_bracket * (1.0 - 1e-3)) {
-			if (++stall >= 8)
+			/* Stalled: 8 steps without a 1e-3 gain once the bracket is
+			 * within 1e-11 of the scale (rounding), 40 before (slow
+			 * progress on needles and plates, aspect ratios ~1e5). */
+			if (++stall >= (bracket <= 1e-11 * scale ? 8 : 40))
 				break;
 		} else {
 			stall = 0;
@@ -600,7 +604,7 @@ static mkResult mkRun(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3
 const mkCollider mkCollider_Referee = {
 	"referee", "Referee: sd bracketed by GJK on B2 - B1 (upper) and max of <n, w(n)> (lower); support maps only",
 	"separated: Gilbert/GJK distance on B2 - B1 with exact least-norm subsets, lower bound max f(n) at its directions, "
-	"until the bracket is below 1e-14 of the scale or stalls (8 steps), then rotating pattern search (8 directions + "
+	"until the bracket is below 1e-14 of the scale or stalls (8 steps without a 1e-3 gain below 1e-11, 40 above; 2000 at most), then rotating pattern search (8 directions + "
 	"ascent, <= 3000 evaluations, 2 rounds) and GJK again; overlap certified by a tetrahedron of support points "
 	"around the origin (barycentric >= 1e-12); depth: 2000-point Fibonacci sweep + centre line + body axes, pattern "
 	"search from the best 6 starts apart by 0.05 rad; distance = certified lower bound, gap = bracket (separated)",
