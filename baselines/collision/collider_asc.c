@@ -39,7 +39,20 @@
 
 #include "colliders_internal.h"
 
-/* Largest real root of l^3 + a l^2 + b l + c, polished by two Newton steps. */
+/* Largest real root of l^3 + a l^2 + b l + c, polished by two Newton steps.
+ *
+ * Three real roots (the case of separated ellipsoids): with l = t - a/3 the
+ * depressed cubic t^3 + P t + Q has the roots t_k = m cos(phi - 2 pi k / 3),
+ * m = 2 sqrt(-P/3), phi = acos(3 Q / (P m)) / 3 in [0, pi/3]. cos(phi) comes
+ * from a polynomial (below) and sin(phi) = sqrt(1 - cos^2), so t_0 >= t_1 >=
+ * t_2 cost no trigonometric call. P and Q carry an absolute rounding error
+ * of order eps a^2, so a root much smaller than |a| (needles and plates: the
+ * roots of p' then span 14 decades) is lost in them; only the root of
+ * largest magnitude is accurate. When x0 = t_0 - a/3 is below 1e-2 of
+ * |a/3| + m (cancelled) and t_2 (the smallest) has the larger magnitude, the
+ * largest root comes from the quadratic left after dividing it out,
+ * l^2 + B l + C with C = -c / x2, B = (C - b) / x2 (exact coefficients b, c;
+ * no cancellation against a), by the stable quadratic formula. */
 static double mkCubicLargest(double a, double b, double c)
 {
 	const double third = 1.0 / 3.0;
@@ -48,17 +61,18 @@ static double mkCubicLargest(double a, double b, double c)
 	double p3 = p * third;
 	double disc = 0.25 * q * q + p3 * p3 * p3, x;
 	if (disc > 0.0) {
+		/* One real root: the ellipsoids are not separated, and p <= 0 on
+		 * l > 0 wherever it is evaluated; x need not be accurate. */
 		double r = sqrt(disc);
-		x = cbrt(-0.5 * q + r) + cbrt(-0.5 * q - r);
+		x = cbrt(-0.5 * q + r) + cbrt(-0.5 * q - r) - a3;
 	} else if (p == 0.0) {
-		x = 0.0;
+		x = -a3;
 	} else {
-		/* Three real roots: x = m cos(acos(arg) / 3), arg = 3 q / (p m), the
-		 * largest. With s = cos(acos(arg) / 2) = sqrt((1 + arg) / 2),
-		 * cos(acos(arg) / 3) = cos(2 acos(s) / 3), which is analytic in s on
-		 * [0, 1] (acos(s)^2 is analytic at s = 1): its degree-6 Chebyshev
-		 * interpolant in y = 2 s - 1 is within 1.9e-7, and the two Newton
-		 * steps below square that twice. No acos, no cos. */
+		/* cos(phi) = cos(acos(arg) / 3): with s = cos(acos(arg) / 2) =
+		 * sqrt((1 + arg) / 2), cos(acos(arg) / 3) = cos(2 acos(s) / 3),
+		 * analytic in s on [0, 1] (acos(s)^2 is analytic at s = 1): its
+		 * degree-6 Chebyshev interpolant in y = 2 s - 1 is within 1.9e-7, and
+		 * the Newton steps square that. */
 		double m = 2.0 * sqrt(-p3);
 		double arg = 3.0 * q / (p * m);
 		arg = arg < -1.0 ? -1.0 : arg > 1.0 ? 1.0 : arg;
@@ -66,9 +80,31 @@ static double mkCubicLargest(double a, double b, double c)
 		double cs = ((((((-3.2867047034201846e-05 * y + 1.3097751764412635e-04) * y - 5.020910405583326e-04) * y
 			+ 2.4588651388908517e-03) * y - 1.5509445182466138e-02) * y + 2.4741001122299905e-01) * y
 			+ 7.660444431189781e-01);
-		x = m * cs;
+		double x0 = m * cs - a3;
+		x = x0;
+		/* x0 lost digits to cancellation (|x0| << |a3| + m): the root of
+		 * largest magnitude is then t_2's. */
+		double sn = 0.0, x2 = 0.0;
+		if (fabs(x0) < 1e-2 * (fabs(a3) + m)) {
+			sn = sqrt(cs < 1.0 ? 1.0 - cs * cs : 0.0);
+			x2 = m * (-0.5 * cs - 0.8660254037844386 * sn) - a3;
+		}
+		if (fabs(x2) > fabs(x0)) {
+			/* Polish x2, divide it out, solve the quadratic stably. */
+			for (int it = 0; it < 2; ++it) {
+				double f = ((x2 + a) * x2 + b) * x2 + c, df = (3.0 * x2 + 2.0 * a) * x2 + b;
+				if (df != 0.0)
+					x2 -= f / df;
+			}
+			if (x2 != 0.0) {
+				double C = -c / x2, B = (C - b) / x2;
+				double D = B * B - 4.0 * C;
+				double h = -0.5 * (B + (B >= 0.0 ? 1.0 : -1.0) * sqrt(D > 0.0 ? D : 0.0));
+				double r1 = h, r2 = h != 0.0 ? C / h : h;
+				x = r1 > r2 ? r1 : r2;
+			}
+		}
 	}
-	x -= a3;
 	for (int it = 0; it < 2; ++it) {
 		double f = ((x + a) * x + b) * x + c, df = (3.0 * x + 2.0 * a) * x + b;
 		if (df != 0.0)

@@ -141,6 +141,37 @@ static void test_referee_hand(void)
 		}
 }
 
+/* Needle against plate (aspect ratios 1e5 to 3e5), crossed, on the x axis:
+ * the extents along x are the semi-axes 0.002 and 300, and by symmetry the
+ * normal is x: sd = x - 300.002; the pair moved rigidly keeps it. ASC must
+ * never be on the wrong side (touching allowed: its band is wide here). */
+static void test_needle_plate(void)
+{
+	mkShape3 needle = { 0.002, 500, 0.003, 1, 1 }, plate = { 300, 0.001, 200, 1, 1 };
+	const double gaps[] = { 1.0, 1e-3, 1e-6, -1e-3 };
+	unsigned long long seed = 23;
+	for (int rot = 0; rot < 4; ++rot) {
+		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_rand_rot(&seed);
+		for (size_t k = 0; k < sizeof gaps / sizeof gaps[0]; ++k) {
+			mkBody3 b1 = mkBody3_Make(needle, R, mkVec3_Make(0, 0, 0));
+			mkBody3 b2 = mkBody3_Make(plate, R, mkMat3_MulVec(R, mkVec3_Make(300.002 + gaps[k], 0, 0)));
+			char what[64];
+			snprintf(what, sizeof what, "needle and plate, gap %g, rotation %d", gaps[k], rot);
+			if (gaps[k] > 0) {
+				mk_check_referee(b1, b2, gaps[k], what);
+			} else {
+				/* Overlapping by 1e-3 along x: certified. */
+				mkCollision3 o;
+				ENSURE(mk_run_status("referee", b1, b2, &o) == MK_CONTACT_OVERLAPPING);
+				ENSURE(o.residual == 0.0);
+			}
+			mkCollision3 a;
+			mkContact got = mk_run_status("asc", b1, b2, &a);
+			ENSURE(got == MK_CONTACT_TOUCHING || got == (gaps[k] > 0 ? MK_CONTACT_SEPARATED : MK_CONTACT_OVERLAPPING));
+		}
+	}
+}
+
 static void mk_draw(unsigned long long *seed, int deep, mkBody3 *b1, mkBody3 *b2)
 {
 	mkShape3 s1 = { mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), 1, 1 };
@@ -224,6 +255,7 @@ int main(void)
 {
 	test_fcl_cases();
 	test_referee_hand();
+	test_needle_plate();
 	test_asc_random();
 	test_asc_near();
 	return mk_summary("test_asc_referee");
