@@ -11,7 +11,7 @@
 
 const char *const mkCollision_Columns[] = {
 	"pair", "trial", "algorithm", "seconds", "status", "distance", "referee_distance", "error", "agrees",
-	"success", "iterations", "limited", NULL
+	"success", "iterations", "limited", "referee_certain", NULL
 };
 const char *const mkCollision_PairNames[MK_COLLISION_KINDS] = { "ellipsoids", "superquadrics", "near", "deep" };
 
@@ -90,7 +90,11 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 		"by secant steps on the referee's signed distance to s*size within 1e-3 relative, s = "
 		"+-1e-1..+-1e-6 by (trial/2)%12, size = the smallest semi-axis of the two bodies");
 	mkMeta_Set(meta, "deep", "centres U(-1,1)^3 and U(-2,2)^3");
-	mkMeta_Set(meta, "error", "|distance - referee_distance| / mkCollide3_Scale of the pair");
+	mkMeta_Set(meta, "error", "|distance - referee_distance| / mkCollide3_Scale of the pair; empty (and agrees "
+		"empty) where the referee is not certain");
+	mkMeta_Set(meta, "referee_certain", "1 when the referee's answer is certified: separated with its bracket "
+		"[lower, upper] of sd narrower than 1e-10 of the scale, or an overlap certified by an enclosing tetrahedron "
+		"of support points; referee_distance is its certified lower bound of sd either way");
 	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread");
 	buf[0] = '\0';
 	for (int i = 0; i < o->nlimits; ++i)
@@ -223,8 +227,13 @@ static const char *mkStatusName(mkResult r, mkContact s)
 typedef struct mkTruth {
 	mkCollision3 ref;
 	double scale;
-	int decided;  /* |sd| > margin * scale: statuses are compared */
+	int certain;  /* the referee's bracket is within MK_REFEREE_CERTAIN of the
+	                 scale, or its overlap is certified */
+	int decided;  /* certain and |sd| > margin * scale: statuses are compared */
 } mkTruth;
+
+/* The widest referee bracket (times the scale) judged against. */
+#define MK_REFEREE_CERTAIN 1e-10
 
 static void mkCsv_Maybe(mkCsv *csv, double v)
 {
@@ -249,7 +258,7 @@ static void mkWriteRow(mkCsv *csv, int kind, long trial, const mkCollider *c, do
 	mkCsv_Str(csv, status);
 	mkCsv_Maybe(csv, dist);
 	mkCsv_Double(csv, truth->ref.distance);
-	mkCsv_Maybe(csv, fabs(dist - truth->ref.distance) / truth->scale);
+	mkCsv_Maybe(csv, truth->certain ? fabs(dist - truth->ref.distance) / truth->scale : NAN);
 	if (skipped || !truth->decided) {
 		mkCsv_Empty(csv);
 	} else {
@@ -269,6 +278,7 @@ static void mkWriteRow(mkCsv *csv, int kind, long trial, const mkCollider *c, do
 		mkCsv_Empty(csv);
 	else
 		mkCsv_Int(csv, limit);
+	mkCsv_Int(csv, truth->certain);
 	mkCsv_EndRow(csv);
 }
 
@@ -289,7 +299,10 @@ int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *
 		return -1;
 	}
 	truth.scale = mkCollide3_Scale(b1, b2);
-	truth.decided = fabs(truth.ref.distance) > o->margin * truth.scale;
+	/* The referee's residual: its bracket width / scale (separated), 0 for a
+	 * certified overlap, NaN otherwise (colliders.h). */
+	truth.certain = truth.ref.residual <= MK_REFEREE_CERTAIN;
+	truth.decided = truth.certain && fabs(truth.ref.distance) > o->margin * truth.scale;
 	for (int i = 0; i < mkColliders_Count(); ++i) {
 		const mkCollider *c = mkColliders_At(i);
 		if (c->referee || !mkCollider_Accepts(c, b1, b2, NULL, 0))

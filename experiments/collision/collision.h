@@ -4,9 +4,11 @@
  * One trial is one pair of bodies of one pair kind; every registry entry
  * that takes the pair runs on it (its `prepare` outside the timer, its `run`
  * timed alone with the wall clock of mink_exp/clock.h, one thread), and one
- * row per trial and entry is written. The registry's referee (-min over unit
- * n of h1(n) + h2(-n), support functions only) gives the reference signed
- * distance of every pair; it is not itself a row. Entries that do not take a
+ * row per trial and entry is written. The registry's referee (a certified
+ * bracket of the signed distance from the support maps only) gives the
+ * reference signed distance of every pair; it is not itself a row. Pairs
+ * where it is not certain (column referee_certain 0) are not judged: no
+ * error, no agreement. Entries that do not take a
  * pair (mkCollider_Accepts: asc, asc-eigen and fcl on superquadrics) get no
  * row; every entry that takes it gets one, a failure being status `failed`.
  *
@@ -31,7 +33,7 @@
 #include <mink/mink.h>
 #include <mink_exp/exp.h>
 
-#define MK_COLLISION_SCHEMA 2
+#define MK_COLLISION_SCHEMA 3
 #define MK_COLLISION_KINDS 4
 /* Room for --limit pairs (NAME=N). */
 #define MK_COLLISION_LIMITS 8

@@ -182,6 +182,48 @@ static long mkFirstRow(const mkTable *t, int calg, const char *entry)
 	return -1;
 }
 
+/* How many pairs of each kind the referee could not certify (column
+ * referee_certain 0); those are not judged. Results written before the
+ * column existed say so. */
+static void mkCollision_Uncertain(mkDoc *d, const mkTable *t)
+{
+	int cc = mkTable_Col(t, "referee_certain"), cpair = mkTable_Col(t, "pair"), ctrial = mkTable_Col(t, "trial");
+	if (cc < 0) {
+		mkDoc_Para(d, "Referee certainty: not recorded (results written before the referee's certificate).");
+		return;
+	}
+	char text[512] = "";
+	for (int k = 0; k < MK_COLLISION_KINDS; ++k) {
+		long maxt = -1;
+		for (long r = 0; r < t->rows; ++r)
+			if (strcmp(mkTable_Str(t, r, cpair), mkCollision_PairNames[k]) == 0 && mkTable_Num(t, r, ctrial) > maxt)
+				maxt = (long)mkTable_Num(t, r, ctrial);
+		if (maxt < 0)
+			continue;
+		/* 1: seen, 2: seen and uncertain. */
+		char *mark = calloc((size_t)maxt + 1, 1);
+		if (!mark)
+			return;
+		for (long r = 0; r < t->rows; ++r) {
+			double tr = mkTable_Num(t, r, ctrial);
+			if (strcmp(mkTable_Str(t, r, cpair), mkCollision_PairNames[k]) != 0 || !(tr >= 0))
+				continue;
+			long i = (long)tr;
+			mark[i] = mark[i] == 2 || mkTable_Num(t, r, cc) == 0.0 ? 2 : 1;
+		}
+		long seen = 0, unc = 0;
+		for (long i = 0; i <= maxt; ++i) {
+			seen += mark[i] != 0;
+			unc += mark[i] == 2;
+		}
+		free(mark);
+		snprintf(text + strlen(text), sizeof text - strlen(text), "%s%s %ld of %ld", text[0] ? ", " : "",
+			mkCollision_PairNames[k], unc, seen);
+	}
+	mkDoc_Para(d, "Pairs the referee could not certify (bracket wider than 1e-10 of the scale, or an overlap "
+		"without an enclosing tetrahedron), left out of agreement and errors: %s.", text[0] ? text : "none");
+}
+
 /* Per pair kind and entry (entries of the data, in order of first
  * appearance). */
 static void mkCollision_Details(mkDoc *d, const mkTable *t, const mkMeta *m)
@@ -194,6 +236,7 @@ static void mkCollision_Details(mkDoc *d, const mkTable *t, const mkMeta *m)
 		"|distance − referee| / scale over separated (distance) and overlapping (penetration) pairs, for "
 		"entries that return one; skipped = trials beyond a --limit (%s).", margin ? margin : "(not recorded)",
 		limits ? limits : "not recorded");
+	mkCollision_Uncertain(d, t);
 	mkDoc_TableBegin(d, "Collision and distance: the registry's entries against the referee.", 10, head);
 	int calg = mkTable_Col(t, "algorithm");
 	size_t room = (size_t)(t->rows > 0 ? t->rows : 1) * sizeof(double);

@@ -54,7 +54,13 @@ typedef struct mkCollider {
 	const char *params;    /* its parameters as text, for a result sidecar */
 	unsigned gives;        /* mkColliderGives */
 	unsigned pairs;        /* mkColliderPairs */
-	int referee;           /* 1 for the referee (slow; the truth of a run) */
+	int referee;           /* 1 for the referee (slow; the truth of a run). Its
+	                          answer: distance = bound = a certified lower
+	                          bound of sd; separated: gap = the width of its
+	                          certified bracket [bound, bound + gap];
+	                          residual = gap / scale (separated), 0 for a
+	                          certified overlap, NaN when not certified, so a
+	                          pair is certain iff residual <= the width asked */
 	/* Work done before the timed call for this pair (NULL: none). */
 	mkResult (*prepare)(mkBody3 b1, mkBody3 b2, mkColliderScratch *scratch);
 	/* The query; bodies valid and accepted, scratch prepared. */

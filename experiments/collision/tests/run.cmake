@@ -22,7 +22,7 @@ endfunction()
 mk_run(${WORK}/c.csv --trials 2 --seed 7 --limit implicit=1)
 file(STRINGS ${WORK}/c.csv lines)
 list(GET lines 0 head)
-if(NOT head STREQUAL "pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited")
+if(NOT head STREQUAL "pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited,referee_certain")
   message(FATAL_ERROR "header is '${head}'")
 endif()
 list(LENGTH lines n)
@@ -33,11 +33,15 @@ foreach(line IN LISTS lines)
   if(line MATCHES "^superquadrics,[0-9]+,(asc|asc-eigen|fcl),|^(near|deep),1,(asc|asc-eigen|fcl),")
     message(FATAL_ERROR "an ellipsoid-only entry ran on superquadrics: ${line}")
   endif()
-  if(line MATCHES "^[a-z]+,1,implicit," AND NOT line MATCHES "^[a-z]+,1,implicit,,skipped,,[-0-9.e]+,,,,,1$")
+  if(line MATCHES "^[a-z]+,1,implicit," AND NOT line MATCHES "^[a-z]+,1,implicit,,skipped,,[-0-9.e]+,,,,,1,1$")
     message(FATAL_ERROR "implicit past its limit is not a skipped row: ${line}")
   endif()
-  if(line MATCHES "^[a-z]+,0,implicit," AND NOT line MATCHES ",(separated|touching|overlapping|failed),.*,1$")
+  if(line MATCHES "^[a-z]+,0,implicit," AND NOT line MATCHES ",(separated|touching|overlapping|failed),.*,1,1$")
     message(FATAL_ERROR "implicit within its limit is not a measured row: ${line}")
+  endif()
+  # Every row: the referee certain on these pairs (column referee_certain).
+  if(NOT line MATCHES "^pair," AND NOT line MATCHES ",1$")
+    message(FATAL_ERROR "the referee is not certain: ${line}")
   endif()
   # Every measured row: a time, a status, the referee's distance.
   if(NOT line MATCHES "^pair," AND NOT line MATCHES ",skipped,"
@@ -62,7 +66,7 @@ endforeach()
 # on deep trial 1 of seed 7 (residual above 1e-10 after 100 Jacobians; seen
 # when this test was written): status failed, no distance, success 0, and
 # agrees 0 since the referee decides that pair.
-if(NOT "${lines}" MATCHES "deep,1,minksum-normal-lm,[0-9.e-]+,failed,,-[0-9.e]+,,0,0,,")
+if(NOT "${lines}" MATCHES "deep,1,minksum-normal-lm,[0-9.e-]+,failed,,-[0-9.e]+,,0,0,,,1")
   message(FATAL_ERROR "deep trial 1: minksum-normal-lm is not a failed row")
 endif()
 file(STRINGS ${WORK}/c.csv.meta rot REGEX "^rotation_draw: paper$")
@@ -77,8 +81,9 @@ endif()
 # (trial / 2) % 12, even index positive): the referee's signed distance has
 # the sign the construction asked for, and minksum-normal agrees with the
 # referee on every pair (all are outside the 1e-9 margin). The referee is
-# the registry's grid-and-pattern search, which shares nothing with the
-# Newton solver but the support function.
+# the registry's certified bracket (GJK on B2 - B1 and a global search of
+# the lower bound), which shares nothing with the Newton solver but the
+# support maps.
 mk_run(${WORK}/near.csv --pair near --trials 24 --seed 5 --limit implicit=0)
 file(STRINGS ${WORK}/near.csv near REGEX "^near,[0-9]+,minksum-normal,")
 list(LENGTH near n)
