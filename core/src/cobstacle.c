@@ -14,6 +14,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "kernel.h"
+
 #define ROUND_REL 1e-13   /* rounding allowance per unit of coordinate size */
 #define MIN_ANGLE 1e-12   /* normals closer than this (radians) are not split */
 #define MAX_SPLITS 10     /* uniform 3D: 8 * 4^10 triangles */
@@ -88,6 +90,7 @@ typedef struct Work {
 	int *poly, pcap;
 	double *o[3]; int ocap[3]; /* 3D outer vertices */
 	int *fin, fcap;            /* 3D final (conforming) triangles */
+	double *pb; int pbcap;     /* paper mode: B1's half, the poses' directions, their points */
 } Work;
 
 static void work_free(Work *w)
@@ -96,7 +99,7 @@ static void work_free(Work *w)
 	free(w->next); free(w->act); free(w->act2); free(w->tri); free(w->tri2); free(w->leaf);
 	free(w->edges.key); free(w->edges.val); free(w->dedges.key); free(w->dedges.val); free(w->poly);
 	for (int i = 0; i < 3; ++i) free(w->o[i]);
-	free(w->fin);
+	free(w->fin); free(w->pb);
 	memset(w, 0, sizeof *w);
 }
 
@@ -978,6 +981,11 @@ typedef struct Run {
 	double robot_err[2], *obs_err;
 	double *paper_u[3];      /* paper mode parameters */
 	int paper_n;
+	/* paper mode: a task is one obstacle and `chunk` orientations, whose
+	 * robot maps R_o M are poses2/poses3 (relative o), computed once */
+	int chunk, nchunks, group;
+	mkMat2 *poses2;
+	mkMat3 *poses3;
 	mkCSpaceResult *res;
 	TaskOut *outs;           /* per boundary, store = 1 */
 	long ntasks;
@@ -1075,6 +1083,61 @@ static mkResult do_task(Run *R, Work *w, long task)
 	return MK_OK;
 }
 
+/* Paper mode: obstacle i against the orientations of chunk c. The
+ * obstacle's half of the batch is computed once (mkKOne*_Init) and the
+ * robot's half over `group` orientations per kernel call (mkKOne*_Run);
+ * the points are, bit for bit, those of one mkSum*_Batch call per
+ * orientation (kernel.h). Each boundary's seconds are the task's wall time
+ * shared equally among its orientations. */
+static mkResult do_paper_task(Run *R, Work *w, long task)
+{
+	const mkCSpaceOptions *o = R->opt;
+	int c = (int)(task / R->nob), i = (int)(task % R->nob), dim = R->dim;
+	int ob = c * R->chunk, oe = ob + R->chunk < R->nor ? ob + R->chunk : R->nor;
+	double t0 = now_s();
+	int n = dim == 2 ? R->paper_n : R->paper_n * R->paper_n, G = R->group;
+	long need = (long)dim * n * (2 + 2 * (long)G);
+	if (need > 0x7fffffffL || !grow_d(&w->pb, &w->pbcap, (int)need)) return MK_ERR_MEMORY;
+	double *scratch = w->pb + (long)2 * dim * n, *pts = scratch + (long)dim * n * G;
+	double *px = pts, *py = pts + (long)n * G, *pz = pts + (long)2 * n * G;
+	mkSumOptions so = {MK_SET_CONTACT, o->form, MK_PARAM_SURFACE, o->impl, MK_PRECISION_DOUBLE};
+	mkKOne2 one2;
+	mkKOne3 one3;
+	mkResult r = dim == 2
+		? mkKOne2_Init(&one2, R->obs2[2 * i], R->robot2[0].shape, &so, R->paper_u[0], R->paper_u[1], n, w->pb)
+		: mkKOne3_Init(&one3, R->obs3[2 * i], R->robot3[0].shape, &so, R->paper_u[0], R->paper_u[1], R->paper_u[2],
+			n, w->pb);
+	if (r != MK_OK) return r;
+	for (int o0 = ob; o0 < oe; o0 += G) {
+		int m = oe - o0 < G ? oe - o0 : G;
+		if (dim == 2) mkKOne2_Run(&one2, R->poses2 + o0, m, scratch, px, py);
+		else mkKOne3_Run(&one3, R->poses3 + o0, m, scratch, px, py, pz);
+		for (int k = 0; k < m; ++k) {
+			long b = (long)(o0 + k) * R->nob + i; /* one bound: the inner */
+			const double *qx = px + (long)k * n, *qy = py + (long)k * n, *qz = dim == 3 ? pz + (long)k * n : NULL;
+			double sum = 0.0;
+			for (int j = 0; j < n; ++j) sum += qx[j] + qy[j] + (qz ? qz[j] : 0.0);
+			if (o->store) {
+				double *xyz = malloc((size_t)n * (size_t)dim * sizeof(double) + 1);
+				if (!xyz) return MK_ERR_MEMORY;
+				for (int j = 0; j < n; ++j) {
+					xyz[dim * j] = qx[j];
+					xyz[dim * j + 1] = qy[j];
+					if (dim == 3) xyz[3 * j + 2] = qz[j];
+				}
+				R->outs[b].xyz = xyz;
+			}
+			R->res->count[b] = n;
+			R->res->model_error[b] = R->obs_err[2 * i] + R->robot_err[0];
+			R->res->error[b] = NAN;
+			R->res->checksum[b] = sum;
+		}
+	}
+	double each = (now_s() - t0) / (double)(oe - ob);
+	for (int k = ob; k < oe; ++k) R->res->seconds[(long)k * R->nob + i] = each;
+	return MK_OK;
+}
+
 static void *worker(void *arg)
 {
 	Run *R = arg;
@@ -1090,7 +1153,7 @@ static void *worker(void *arg)
 		if (t >= R->ntasks) break;
 		long e = t + blk < R->ntasks ? t + blk : R->ntasks;
 		for (; t < e; ++t) {
-			mkResult r = do_task(R, &w, t);
+			mkResult r = R->opt->mode == MK_CSPACE_PAPER ? do_paper_task(R, &w, t) : do_task(R, &w, t);
 			if (r != MK_OK) {
 				pthread_mutex_lock(&R->lock);
 				if (!R->failed) R->failed = r;
@@ -1215,6 +1278,24 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 			if (!(R.paper_u[d] = malloc((size_t)np * sizeof(double)))) { r = MK_ERR_MEMORY; goto done; }
 		if (dim == 2) mkSample2_Angles(opt->uniform, R.paper_u[0], R.paper_u[1]);
 		else mkSample3_Grid(opt->uniform, R.paper_u[0], R.paper_u[1], R.paper_u[2]);
+		/* the robot's maps, once per orientation (not per obstacle) */
+		if (dim == 2) R.poses2 = malloc((size_t)R.nor * sizeof *R.poses2 + 1);
+		else R.poses3 = malloc((size_t)R.nor * sizeof *R.poses3 + 1);
+		if (dim == 2 ? !R.poses2 : !R.poses3) { r = MK_ERR_MEMORY; goto done; }
+		for (int k = 0; k < R.nor; ++k) {
+			if (dim == 2) R.poses2[k] = mkMat2_Mul(mkScene2_Orientation(scene, begin + k), R.robot2[0].M);
+			else R.poses3[k] = mkMat3_Mul(mkScene3_Orientation(scene, begin + k), R.robot3[0].M);
+		}
+		/* group: orientations per kernel call, so that group * points is a
+		 * multiple of 32 (the widest kernel's block: no padded lanes) and
+		 * at least 512; chunk: 16 groups per task, so that the obstacle's
+		 * half (once per task) is a small part of it */
+		int g0 = 32;
+		for (long m = np; g0 > 1 && m % 2 == 0; m /= 2) g0 /= 2;   /* 32 / gcd(np, 32) */
+		R.group = np >= 512 ? 1 : g0 * (int)((512 + g0 * np - 1) / (g0 * np));
+		if (R.group > MK_KONE_POSES) R.group = MK_KONE_POSES / g0 * g0;
+		R.chunk = 16 * R.group < R.nor ? 16 * R.group : (R.nor > 0 ? R.nor : 1);
+		R.nchunks = (R.nor + R.chunk - 1) / R.chunk;
 	}
 
 	long nb = (long)nob * R.nor * R.bounds;
@@ -1228,7 +1309,7 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 	if (!out->count || !out->error || !out->model_error || !out->seconds || !out->checksum) { r = MK_ERR_MEMORY; goto done; }
 	if (opt->store && !(R.outs = calloc((size_t)nb + 1, sizeof *R.outs))) { r = MK_ERR_MEMORY; goto done; }
 	R.res = out;
-	R.ntasks = (long)nob * R.nor;
+	R.ntasks = opt->mode == MK_CSPACE_PAPER ? (long)nob * R.nchunks : (long)nob * R.nor;
 	pthread_mutex_init(&R.lock, NULL);
 	int nth = opt->threads;
 	if (nth > R.ntasks) nth = R.ntasks > 0 ? (int)R.ntasks : 1;
@@ -1280,6 +1361,7 @@ done:
 	}
 	free(R.obs_err); free(R.obs2); free(R.obs3);
 	for (int d = 0; d < 3; ++d) free(R.paper_u[d]);
+	free(R.poses2); free(R.poses3);
 	if (r != MK_OK) mkCSpaceResult_Free(out);
 	return r;
 }
