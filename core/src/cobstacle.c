@@ -1112,11 +1112,19 @@ static mkResult do_paper_task(Run *R, Work *w, long task)
 		int m = oe - o0 < G ? oe - o0 : G;
 		if (dim == 2) mkKOne2_Run(&one2, R->poses2 + o0, m, scratch, px, py);
 		else mkKOne3_Run(&one3, R->poses3 + o0, m, scratch, px, py, pz);
+		/* checksums: each boundary's coordinates summed in order, as do_task
+		 * sums them; the m sums are independent chains, advanced together */
+		double sums[MK_KONE_POSES];
+		for (int k = 0; k < m; ++k) sums[k] = 0.0;
+		for (int j = 0; j < n; ++j)
+			for (int k = 0; k < m; ++k) {
+				long q = (long)k * n + j;
+				sums[k] += px[q] + py[q] + (dim == 3 ? pz[q] : 0.0);
+			}
 		for (int k = 0; k < m; ++k) {
 			long b = (long)(o0 + k) * R->nob + i; /* one bound: the inner */
 			const double *qx = px + (long)k * n, *qy = py + (long)k * n, *qz = dim == 3 ? pz + (long)k * n : NULL;
-			double sum = 0.0;
-			for (int j = 0; j < n; ++j) sum += qx[j] + qy[j] + (qz ? qz[j] : 0.0);
+			double sum = sums[k];
 			if (o->store) {
 				double *xyz = malloc((size_t)n * (size_t)dim * sizeof(double) + 1);
 				if (!xyz) return MK_ERR_MEMORY;
