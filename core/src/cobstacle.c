@@ -91,6 +91,7 @@ typedef struct Work {
 	double *o[3]; int ocap[3]; /* 3D outer vertices */
 	int *fin, fcap;            /* 3D final (conforming) triangles */
 	double *pb; int pbcap;     /* paper mode: B1's half, the poses' directions, their points */
+	double *err2; int ecap;    /* 2D adaptive: the error of the arc i -> next[i] */
 } Work;
 
 static void work_free(Work *w)
@@ -99,7 +100,7 @@ static void work_free(Work *w)
 	free(w->next); free(w->act); free(w->act2); free(w->tri); free(w->tri2); free(w->leaf);
 	free(w->edges.key); free(w->edges.val); free(w->dedges.key); free(w->dedges.val); free(w->poly);
 	for (int i = 0; i < 3; ++i) free(w->o[i]);
-	free(w->fin); free(w->pb);
+	free(w->fin); free(w->pb); free(w->err2);
 	memset(w, 0, sizeof *w);
 }
 
@@ -162,6 +163,107 @@ static mkVec2 tangent_vertex(mkVec2 ni, mkVec2 pi, mkVec2 nj, mkVec2 pj)
 
 static double size2(mkVec2 a) { return fabs(a.x) + fabs(a.y); }
 
+/* The normal at which the chord p_i p_j is split: the chord's outward
+ * normal when it lies between the two normals (always, in exact
+ * arithmetic), else the bisector. */
+static mkVec2 split_normal2(mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj)
+{
+	mkVec2 d = mkVec2_Sub(pj, pi);
+	mkVec2 m = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
+	if (!(mkVec2_Cross(ni, m) > 0.0 && mkVec2_Cross(m, nj) > 0.0))
+		m = mkVec2_Normalize(mkVec2_Add(ni, nj));
+	return m;
+}
+
+/* The certified error of the arc between consecutive normals ni, nj (points
+ * pi, pj), given the split normal m and its point xm = x(m). */
+static double edge_err2(mkBound bound, mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj, mkVec2 m, mkVec2 xm)
+{
+	mkVec2 d = mkVec2_Sub(pj, pi);
+	mkVec2 chord = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
+	int is_chord = mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y);
+	/* Proof 3: for normals u between ni and nj, h_K(u) minus the
+	 * best of <u, pi>, <u, pj> is at most c / (4 cos(theta/2)) */
+	double c = mkVec2_Dot(mkVec2_Sub(ni, nj), mkVec2_Sub(pi, pj));
+	double half = 0.5 * mkVec2_Length(mkVec2_Add(ni, nj));
+	double g = (c > 0.0 ? c : 0.0) / (4.0 * half);
+	int wide = !(mkVec2_Dot(ni, nj) >= 0.0); /* a step over 90 degrees: Proof 3 only */
+	if (!(mkVec2_Cross(ni, nj) > 0.0)) g = INFINITY; /* 180 degrees or more: nothing certified */
+	if (wide) {
+		/* keep g */
+	} else if (bound == MK_BOUND_INNER) {
+		/* Proof 1: the chord gap h_K(m) - <m, p>, m the chord normal */
+		if (is_chord) {
+			double lo = fmin(mkVec2_Dot(m, pi), mkVec2_Dot(m, pj));
+			double gap = mkVec2_Dot(m, xm) - lo;
+			if (gap < 0.0) gap = 0.0;
+			if (gap < g) g = gap;
+		}
+	} else {
+		/* Proof 2: the tangent vertex's distance to conv{pi, x(m), pj} */
+		mkVec2 v = tangent_vertex(ni, pi, nj, pj);
+		double dv = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
+		if (dv < g) g = dv;
+	}
+	return g + ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
+}
+
+static mkVec2 wn2(const Work *w, int i) { return mkVec2_Make(w->n[0][i], w->n[1][i]); }
+static mkVec2 wp2(const Work *w, int i) { return mkVec2_Make(w->p[0][i], w->p[1][i]); }
+
+/* The pruning pass of the adaptive 2D boundary. Refinement halves normal
+ * steps, so many final arcs have errors well below tol (a quarter of it
+ * for a step halved once more than needed). A vertex v between u and x is
+ * dropped when the merged arc u -> x is certified (Proofs 1-3, the same
+ * criterion as refinement) within tol; err[i] is the error of the arc
+ * i -> next[i]. Passes alternate between odd and even positions of the
+ * cycle from node 0 (node 0 stays: the output starts at it), so that the
+ * candidates of one pass are never neighbours and each merged arc is
+ * checked against its final endpoints; it stops after a pass pair without
+ * drops. Deterministic: the same drops whatever the thread. */
+static mkResult prune2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, double *err,
+	int *count)
+{
+	int cnt = *count, idle = 0;
+	for (int pass = 0; idle < 2 && cnt > 3; ++pass) {
+		/* candidates: positions 1, 3, 5, ... or 2, 4, ... of the cycle */
+		if (!grow_i(&w->act, &w->acap, cnt) || !work_batch(w, cnt, 2)) return MK_ERR_MEMORY;
+		int na = 0, prev = 0, i = w->next[0];
+		for (int k = 1; k < cnt; ++k) {
+			int j = w->next[i];
+			if (k % 2 == (pass % 2 == 0 ? 1 : 0)) {
+				mkVec2 nu = wn2(w, prev), nx = wn2(w, j);
+				/* the merged step must stay below 90 degrees (Proof 1) */
+				if (mkVec2_Dot(nu, nx) >= 0.0 && mkVec2_Cross(nu, nx) > 0.0) {
+					mkVec2 m = split_normal2(nu, nx, wp2(w, prev), wp2(w, j));
+					w->m[0][na] = m.x; w->m[1][na] = m.y;
+					w->act[na++] = prev;
+				}
+			}
+			prev = i;
+			i = j;
+		}
+		if (na == 0) { ++idle; continue; }
+		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], na, w->q[0], w->q[1]);
+		if (r != MK_OK) return r;
+		int dropped = 0;
+		for (int a = 0; a < na; ++a) {
+			int u = w->act[a], v = w->next[u], x = w->next[v];
+			double e = edge_err2(bound, wn2(w, u), wn2(w, x), wp2(w, u), wp2(w, x), mkVec2_Make(w->m[0][a], w->m[1][a]),
+				mkVec2_Make(w->q[0][a], w->q[1][a]));
+			if (e <= tol) {
+				w->next[u] = x;
+				err[u] = e;
+				++dropped;
+			}
+		}
+		cnt -= dropped;
+		idle = dropped ? 0 : idle + 1;
+	}
+	*count = cnt;
+	return MK_OK;
+}
+
 /* Adaptive (uniform_n == 0) or uniform boundary. Results in w: node order by
  * w->next from node 0, *count nodes. */
 static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, int max_points,
@@ -192,11 +294,7 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 		 * the two normals (always, in exact arithmetic), else the bisector */
 		for (int a = 0; a < na; ++a) {
 			int i = w->act[a], j = w->next[i];
-			mkVec2 ni = {w->n[0][i], w->n[1][i]}, nj = {w->n[0][j], w->n[1][j]};
-			mkVec2 d = {w->p[0][j] - w->p[0][i], w->p[1][j] - w->p[1][i]};
-			mkVec2 m = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
-			if (!(mkVec2_Cross(ni, m) > 0.0 && mkVec2_Cross(m, nj) > 0.0))
-				m = mkVec2_Normalize(mkVec2_Add(ni, nj));
+			mkVec2 m = split_normal2(wn2(w, i), wn2(w, j), wp2(w, i), wp2(w, j));
 			w->m[0][a] = m.x; w->m[1][a] = m.y;
 		}
 		r = eval2(b1, b2, impl, w->m[0], w->m[1], na, w->q[0], w->q[1]);
@@ -208,37 +306,13 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 			mkVec2 ni = {w->n[0][i], w->n[1][i]}, nj = {w->n[0][j], w->n[1][j]};
 			mkVec2 pi = {w->p[0][i], w->p[1][i]}, pj = {w->p[0][j], w->p[1][j]};
 			mkVec2 m = {w->m[0][a], w->m[1][a]}, xm = {w->q[0][a], w->q[1][a]};
-			mkVec2 d = mkVec2_Sub(pj, pi);
-			mkVec2 chord = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
-			int is_chord = mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y);
-			/* Proof 3: for normals u between ni and nj, h_K(u) minus the
-			 * best of <u, pi>, <u, pj> is at most c / (4 cos(theta/2)) */
-			double c = mkVec2_Dot(mkVec2_Sub(ni, nj), mkVec2_Sub(pi, pj));
-			double half = 0.5 * mkVec2_Length(mkVec2_Add(ni, nj));
-			double g = (c > 0.0 ? c : 0.0) / (4.0 * half);
-			int wide = !(mkVec2_Dot(ni, nj) >= 0.0); /* a step over 90 degrees: Proof 3 only */
-			if (!(mkVec2_Cross(ni, nj) > 0.0)) g = INFINITY; /* 180 degrees or more: nothing certified */
-			if (wide) {
-				/* keep g */
-			} else if (bound == MK_BOUND_INNER) {
-				/* Proof 1: the chord gap h_K(m) - <m, p>, m the chord normal */
-				if (is_chord) {
-					double lo = fmin(mkVec2_Dot(m, pi), mkVec2_Dot(m, pj));
-					double gap = mkVec2_Dot(m, xm) - lo;
-					if (gap < 0.0) gap = 0.0;
-					if (gap < g) g = gap;
-				}
-			} else {
-				/* Proof 2: the tangent vertex's distance to conv{pi, x(m), pj} */
-				mkVec2 v = tangent_vertex(ni, pi, nj, pj);
-				double dv = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
-				if (dv < g) g = dv;
-			}
-			double err = g + ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
+			double err = edge_err2(bound, ni, nj, pi, pj, m, xm);
 			double ang = atan2(mkVec2_Cross(ni, nj), mkVec2_Dot(ni, nj));
 			int split = uniform_n == 0 && err > tol && ang > MIN_ANGLE && nv < max_points;
 			if (!split) {
 				if (err > maxerr || err != err) maxerr = err;
+				if (!grow_d(&w->err2, &w->ecap, nv)) return MK_ERR_MEMORY;
+				w->err2[i] = err;
 				continue;
 			}
 			if (!work_verts(w, nv + 1, 2) || !grow_i(&w->next, &w->ncap, nv + 1)) return MK_ERR_MEMORY;
@@ -253,6 +327,13 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 		int *t = w->act; w->act = w->act2; w->act2 = t;
 		int tc = w->acap; w->acap = w->a2cap; w->a2cap = tc;
 		na = nn;
+	}
+	if (uniform_n == 0 && !given_x) {
+		mkResult rp = prune2(w, b1, b2, impl, bound, tol, w->err2, &nv);
+		if (rp != MK_OK) return rp;
+		maxerr = 0.0;
+		for (int k = 0, i = 0; k < nv; ++k, i = w->next[i])
+			if (w->err2[i] > maxerr || w->err2[i] != w->err2[i]) maxerr = w->err2[i];
 	}
 	*count = nv;
 	*error = maxerr;
