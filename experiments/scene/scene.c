@@ -146,14 +146,22 @@ typedef struct mkSceneXRun {
 	int param;
 	double error, seconds, cpu, checksum;
 	long points;
+	int worst_obstacle, worst_orientation;   /* the boundary of the largest error */
 } mkSceneXRun;
 
-static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkSceneXRun *out, char *msg,
-	size_t msglen)
+/* Orientations [begin, end) of the scene, or of its obstacle `only` alone
+ * (only >= 0). */
+static mkResult mkSceneX_RunPart(const mkScene *s, const mkCSpaceOptions *o, int only, int begin, int end,
+	mkSceneXRun *out, char *msg, size_t msglen)
 {
 	mkCSpaceResult r;
+	mkScene one = *s;
+	if (only >= 0) {
+		one.obstacles = s->obstacles + only;
+		one.obstacle_count = 1;
+	}
 	double t0 = mkClock_Wall(), c0 = mkCpuNow();
-	mkResult rc = mkCSpace_Run(s, o, 0, s->orientation_count, &r, msg, msglen);
+	mkResult rc = mkCSpace_Run(&one, o, begin, end, &r, msg, msglen);
 	out->seconds = mkClock_Wall() - t0;
 	out->cpu = mkCpuNow() - c0;
 	if (rc != MK_OK)
@@ -167,8 +175,19 @@ static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkS
 		out->checksum += r.checksum[b];
 	}
 	out->error = mkCSpaceResult_MaxError(&r);
+	long wb = 0;
+	for (long b = 1; b < nb; ++b)
+		if (r.error[b] > r.error[wb]) wb = b;
+	out->worst_obstacle = only >= 0 ? only : (int)(wb / r.bounds % r.obstacles);
+	out->worst_orientation = begin + (int)(wb / r.bounds / r.obstacles);
 	mkCSpaceResult_Free(&r);
 	return MK_OK;
+}
+
+static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkSceneXRun *out, char *msg,
+	size_t msglen)
+{
+	return mkSceneX_RunPart(s, o, -1, 0, s->orientation_count, out, msg, msglen);
 }
 
 /* The 1-minute load average (other processes take cores from a wall
@@ -210,35 +229,77 @@ static void mkSceneX_RowA(mkCsv *csv, const mkScene *s, double tol, const char *
 	mkSceneX_Row(csv, "A", mode, v);
 }
 
-/* The smallest uniform sampling whose worst-case error is at most target:
- * 2D n normals, doubling from 4 then bisecting; 3D splits 0, 1, ... The
- * search stops (capped) at 2D n = 65536, 3D 10 splits, or before a sampling
- * whose points (n or 4^s 4 + 2 per boundary) would exceed `budget`: *best
- * is then the last sampling tried, whose error is still above target. *best gets the run; returns 1 when
- * capped. */
-static int mkSceneX_Smallest(const mkScene *s, mkCSpaceOptions *o, double target, long budget, mkSceneXRun *best,
+/* Points of one boundary at uniform level L: 2D L normals, 3D the
+ * octahedron split L times. */
+static double mkSceneX_Per(int three, int L) { return three ? 4.0 * pow(4.0, L) + 2.0 : (double)L; }
+
+/* The smallest uniform sampling whose worst-case error over the scene is at
+ * most target: 2D n normals, doubling from 4 then bisecting; 3D splits 0,
+ * 1, ... A level fails as soon as one boundary exceeds target, so the
+ * search climbs on the boundary that failed last (the scene's worst at the
+ * last whole-scene run) and runs the whole scene only where that boundary
+ * passes: only the result is confirmed on every boundary. The search
+ * stops (capped) before a whole-scene run of more than `budget` points, or
+ * past the largest level (2D n = 2^22, 3D 10 splits): *best is then the
+ * largest level known to fail, with the points the whole scene would have
+ * there and the error of its failing boundary (a lower bound of the
+ * scene's error at that level; seconds, CPU seconds and checksum NaN when
+ * only that boundary was run). Returns 1 when capped. Assumes, as any such
+ * search does, that the error does not grow with the level. */
+static int mkSceneX_Smallest(const mkScene *s, mkCSpaceOptions *o, double target, double budget, mkSceneXRun *best,
 	mkResult *rc, char *msg, size_t msglen)
 {
-	mkSceneXRun cur;
+	mkSceneXRun cur, fail;
 	o->mode = MK_CSPACE_UNIFORM;
 	*rc = MK_OK;
-	int three = s->dim == 3, lo = three ? -1 : 3, hi = three ? 0 : 4;
-	long nb = (long)s->obstacle_count * s->orientation_count;
+	int three = s->dim == 3, lo = three ? -1 : 3, hi = -1, L = three ? 0 : 4, wi = -1, wo = -1;
+	double nb = (double)s->obstacle_count * s->orientation_count;
+	memset(&fail, 0, sizeof fail);
 	for (;;) {
-		o->uniform = hi;
-		if ((*rc = mkSceneX_RunOnce(s, o, best, msg, msglen)) != MK_OK)
-			return 0;
-		if (best->error <= target)
+		o->uniform = L;
+		int failed = 0;
+		if (wi >= 0) { /* the last failing boundary first */
+			if ((*rc = mkSceneX_RunPart(s, o, wi, wo, wo + 1, &cur, msg, msglen)) != MK_OK)
+				return 0;
+			if (cur.error > target) {
+				failed = 1;
+				fail = cur;
+				fail.points = (long)(nb * mkSceneX_Per(three, L));
+				fail.seconds = fail.cpu = fail.checksum = NAN;
+			} else if (nb * mkSceneX_Per(three, L) > budget) {
+				break; /* capped: the confirming run is too large */
+			}
+		}
+		if (!failed) {
+			if ((*rc = mkSceneX_RunOnce(s, o, &cur, msg, msglen)) != MK_OK)
+				return 0;
+			if (cur.error <= target) {
+				hi = L;
+				*best = cur;
+				break;
+			}
+			failed = 1;
+			fail = cur;
+			wi = cur.worst_obstacle;
+			wo = cur.worst_orientation;
+		}
+		lo = L;
+		L = three ? L + 1 : 2 * L;
+		if (L > (three ? 10 : 1 << 22))
 			break;
-		int next = three ? hi + 1 : 2 * hi;
-		double per = three ? 4.0 * pow(4.0, next) + 2.0 : (double)next;
-		if (next > (three ? 10 : 65536) || per * (double)nb > (double)budget)
-			return 1;
-		lo = hi;
-		hi = next;
 	}
-	while (hi - lo > 1) {
+	if (hi < 0) {
+		*best = fail;
+		return 1;
+	}
+	while (hi - lo > 1) { /* 2D: bisect between a failing and a passing n */
 		o->uniform = (lo + hi) / 2;
+		if ((*rc = mkSceneX_RunPart(s, o, wi, wo, wo + 1, &cur, msg, msglen)) != MK_OK)
+			return 0;
+		if (cur.error > target) {
+			lo = o->uniform;
+			continue;
+		}
 		if ((*rc = mkSceneX_RunOnce(s, o, &cur, msg, msglen)) != MK_OK)
 			return 0;
 		if (cur.error <= target) {
@@ -246,6 +307,8 @@ static int mkSceneX_Smallest(const mkScene *s, mkCSpaceOptions *o, double target
 			*best = cur;
 		} else {
 			lo = o->uniform;
+			wi = cur.worst_obstacle;
+			wo = cur.worst_orientation;
 		}
 	}
 	return 0;
@@ -263,7 +326,8 @@ mkResult mkSceneX_Compare(const mkScene *s, double tol, int threads, mkCsv *csv,
 	if (rc != MK_OK)
 		return rc;
 	ad.param = -1;
-	int capped = mkSceneX_Smallest(s, &o, ad.error, 10 * ad.points, &un, &rc, msg, msglen);
+	int capped = mkSceneX_Smallest(s, &o, ad.error, s->dim == 3 ? MK_SCENEX_BUDGET3 : MK_SCENEX_BUDGET2, &un, &rc,
+		msg, msglen);
 	if (rc != MK_OK)
 		return rc;
 	mkSceneX_RowA(csv, s, tol, "adaptive", threads, &ad, tol, 0, 1.0);
