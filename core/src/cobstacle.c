@@ -19,6 +19,7 @@
 #define ROUND_REL 1e-13   /* rounding allowance per unit of coordinate size */
 #define MIN_ANGLE 1e-12   /* normals closer than this (radians) are not split */
 #define MAX_SPLITS 10     /* uniform 3D: 8 * 4^10 triangles */
+#define DENSE2 0.125      /* 2D adaptive: candidates refined to DENSE2 * tol, then the fewest kept (prune2) */
 
 static mkResult fail(mkResult r, char *msg, size_t msglen, const char *fmt, ...)
 {
@@ -92,6 +93,7 @@ typedef struct Work {
 	int *fin, fcap;            /* 3D final (conforming) triangles */
 	double *pb; int pbcap;     /* paper mode: B1's half, the poses' directions, their points */
 	double *err2; int ecap;    /* 2D adaptive: the error of the arc i -> next[i] */
+	int *sel, scap;            /* 2D adaptive: the selection pass's arrays */
 } Work;
 
 static void work_free(Work *w)
@@ -100,7 +102,7 @@ static void work_free(Work *w)
 	free(w->next); free(w->act); free(w->act2); free(w->tri); free(w->tri2); free(w->leaf);
 	free(w->edges.key); free(w->edges.val); free(w->dedges.key); free(w->dedges.val); free(w->poly);
 	for (int i = 0; i < 3; ++i) free(w->o[i]);
-	free(w->fin); free(w->pb); free(w->err2);
+	free(w->fin); free(w->pb); free(w->err2); free(w->sel);
 	memset(w, 0, sizeof *w);
 }
 
@@ -211,56 +213,88 @@ static double edge_err2(mkBound bound, mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 p
 static mkVec2 wn2(const Work *w, int i) { return mkVec2_Make(w->n[0][i], w->n[1][i]); }
 static mkVec2 wp2(const Work *w, int i) { return mkVec2_Make(w->p[0][i], w->p[1][i]); }
 
-/* The pruning pass of the adaptive 2D boundary. Refinement halves normal
- * steps, so many final arcs have errors well below tol (a quarter of it
- * for a step halved once more than needed). A vertex v between u and x is
- * dropped when the merged arc u -> x is certified (Proofs 1-3, the same
- * criterion as refinement) within tol; err[i] is the error of the arc
- * i -> next[i]. Passes alternate between odd and even positions of the
- * cycle from node 0 (node 0 stays: the output starts at it), so that the
- * candidates of one pass are never neighbours and each merged arc is
- * checked against its final endpoints; it stops after a pass pair without
- * drops. Deterministic: the same drops whatever the thread. */
+/* The selection pass of the adaptive 2D boundary. Refinement only halves
+ * normal steps, so many final arcs are certified well below tol (a quarter
+ * of it for a step halved once more than needed). Among the refined
+ * vertices this keeps the fewest whose consecutive arcs are each certified
+ * within tol by the same criterion as refinement (Proofs 1-3 with x(m) of
+ * the merged chord's normal m), vertex 0 kept (the output starts at it):
+ * the arcs k -> k + s of the cycle order are tried for s = 2, 3, ... while
+ * the arc of span s - 1 from k was within tol and the normal step stays
+ * below 90 degrees (one batch of x(m) per span), then a shortest path
+ * from position 0 around to itself over the arcs within tol (and the
+ * refined arcs, span 1, always) picks the vertices. The chosen merged arcs
+ * are evaluated once more for their errors (err[i]: the arc i -> next[i]).
+ * Deterministic: the same choice whatever the thread. */
 static mkResult prune2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, double *err,
 	int *count)
 {
-	int cnt = *count, idle = 0;
-	for (int pass = 0; idle < 2 && cnt > 3; ++pass) {
-		/* candidates: positions 1, 3, 5, ... or 2, 4, ... of the cycle */
-		if (!grow_i(&w->act, &w->acap, cnt) || !work_batch(w, cnt, 2)) return MK_ERR_MEMORY;
-		int na = 0, prev = 0, i = w->next[0];
-		for (int k = 1; k < cnt; ++k) {
-			int j = w->next[i];
-			if (k % 2 == (pass % 2 == 0 ? 1 : 0)) {
-				mkVec2 nu = wn2(w, prev), nx = wn2(w, j);
-				/* the merged step must stay below 90 degrees (Proof 1) */
-				if (mkVec2_Dot(nu, nx) >= 0.0 && mkVec2_Cross(nu, nx) > 0.0) {
-					mkVec2 m = split_normal2(nu, nx, wp2(w, prev), wp2(w, j));
-					w->m[0][na] = m.x; w->m[1][na] = m.y;
-					w->act[na++] = prev;
-				}
-			}
-			prev = i;
-			i = j;
-		}
-		if (na == 0) { ++idle; continue; }
-		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], na, w->q[0], w->q[1]);
-		if (r != MK_OK) return r;
-		int dropped = 0;
-		for (int a = 0; a < na; ++a) {
-			int u = w->act[a], v = w->next[u], x = w->next[v];
-			double e = edge_err2(bound, wn2(w, u), wn2(w, x), wp2(w, u), wp2(w, x), mkVec2_Make(w->m[0][a], w->m[1][a]),
-				mkVec2_Make(w->q[0][a], w->q[1][a]));
-			if (e <= tol) {
-				w->next[u] = x;
-				err[u] = e;
-				++dropped;
-			}
-		}
-		cnt -= dropped;
-		idle = dropped ? 0 : idle + 1;
+	int cnt = *count;
+	if (cnt < 4) return MK_OK;
+	/* sel: ord[cnt + 1], reach[cnt], dp[cnt + 1], from[cnt + 1] */
+	if (!grow_i(&w->sel, &w->scap, 4 * cnt + 3) || !grow_i(&w->act, &w->acap, cnt) || !grow_i(&w->act2, &w->a2cap, cnt)
+		|| !work_batch(w, cnt, 2))
+		return MK_ERR_MEMORY;
+	int *ord = w->sel, *reach = ord + cnt + 1, *dp = reach + cnt, *from = dp + cnt + 1;
+	for (int k = 0, i = 0; k < cnt; ++k, i = w->next[i]) ord[k] = i;
+	ord[cnt] = 0;
+	int na = 0;
+	for (int k = 0; k < cnt; ++k) {
+		reach[k] = 1;
+		if (err[ord[k]] <= tol) w->act[na++] = k;
 	}
-	*count = cnt;
+	for (int span = 2; na > 0 && span < cnt; ++span) {
+		int nb = 0;
+		for (int a = 0; a < na; ++a) {
+			int k = w->act[a], q = k + span;
+			if (q > cnt) continue; /* arcs over vertex 0 are not used */
+			mkVec2 nu = wn2(w, ord[k]), nx = wn2(w, ord[q]);
+			if (!(mkVec2_Dot(nu, nx) >= 0.0 && mkVec2_Cross(nu, nx) > 0.0)) continue; /* Proof 1: below 90 degrees */
+			mkVec2 m = split_normal2(nu, nx, wp2(w, ord[k]), wp2(w, ord[q]));
+			w->m[0][nb] = m.x; w->m[1][nb] = m.y;
+			w->act2[nb++] = k;
+		}
+		if (nb == 0) break;
+		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], nb, w->q[0], w->q[1]);
+		if (r != MK_OK) return r;
+		na = 0;
+		for (int a = 0; a < nb; ++a) {
+			int k = w->act2[a], q = k + span;
+			double e = edge_err2(bound, wn2(w, ord[k]), wn2(w, ord[q]), wp2(w, ord[k]), wp2(w, ord[q]),
+				mkVec2_Make(w->m[0][a], w->m[1][a]), mkVec2_Make(w->q[0][a], w->q[1][a]));
+			if (e <= tol) {
+				reach[k] = span;
+				w->act[na++] = k;
+			}
+		}
+	}
+	/* fewest arcs from position 0 to position cnt (vertex 0 again) */
+	for (int q = 0; q <= cnt; ++q) { dp[q] = q == 0 ? 0 : cnt + 1; from[q] = -1; }
+	for (int p = 0; p < cnt; ++p)
+		for (int sp = 1; sp <= reach[p] && p + sp <= cnt; ++sp)
+			if (dp[p] + 1 < dp[p + sp]) { dp[p + sp] = dp[p] + 1; from[p + sp] = p; }
+	/* relink, and the merged arcs' errors */
+	int nb = 0;
+	for (int q = cnt; q > 0; q = from[q]) {
+		int p = from[q];
+		w->next[ord[p]] = ord[q];
+		if (q - p > 1) {
+			mkVec2 nu = wn2(w, ord[p]), nx = wn2(w, ord[q]);
+			mkVec2 m = split_normal2(nu, nx, wp2(w, ord[p]), wp2(w, ord[q]));
+			w->m[0][nb] = m.x; w->m[1][nb] = m.y;
+			w->act2[nb++] = p;
+		}
+	}
+	if (nb > 0) {
+		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], nb, w->q[0], w->q[1]);
+		if (r != MK_OK) return r;
+		for (int a = 0; a < nb; ++a) {
+			int u = ord[w->act2[a]], x = w->next[u];
+			err[u] = edge_err2(bound, wn2(w, u), wn2(w, x), wp2(w, u), wp2(w, x), mkVec2_Make(w->m[0][a], w->m[1][a]),
+				mkVec2_Make(w->q[0][a], w->q[1][a]));
+		}
+	}
+	*count = dp[cnt];
 	return MK_OK;
 }
 
@@ -308,7 +342,7 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 			mkVec2 m = {w->m[0][a], w->m[1][a]}, xm = {w->q[0][a], w->q[1][a]};
 			double err = edge_err2(bound, ni, nj, pi, pj, m, xm);
 			double ang = atan2(mkVec2_Cross(ni, nj), mkVec2_Dot(ni, nj));
-			int split = uniform_n == 0 && err > tol && ang > MIN_ANGLE && nv < max_points;
+			int split = uniform_n == 0 && err > DENSE2 * tol && ang > MIN_ANGLE && nv < max_points;
 			if (!split) {
 				if (err > maxerr || err != err) maxerr = err;
 				if (!grow_d(&w->err2, &w->ecap, nv)) return MK_ERR_MEMORY;

@@ -147,6 +147,7 @@ typedef struct mkSceneXRun {
 	double error, seconds, cpu, checksum;
 	long points;
 	int worst_obstacle, worst_orientation;   /* the boundary of the largest error */
+	int ntop, top_obstacle[MK_SCENEX_TOP], top_orientation[MK_SCENEX_TOP]; /* the largest errors, largest first */
 } mkSceneXRun;
 
 /* Orientations [begin, end) of the scene, or of its obstacle `only` alone
@@ -175,11 +176,23 @@ static mkResult mkSceneX_RunPart(const mkScene *s, const mkCSpaceOptions *o, int
 		out->checksum += r.checksum[b];
 	}
 	out->error = mkCSpaceResult_MaxError(&r);
-	long wb = 0;
-	for (long b = 1; b < nb; ++b)
-		if (r.error[b] > r.error[wb]) wb = b;
-	out->worst_obstacle = only >= 0 ? only : (int)(wb / r.bounds % r.obstacles);
-	out->worst_orientation = begin + (int)(wb / r.bounds / r.obstacles);
+	long top[MK_SCENEX_TOP];
+	int nt = 0;
+	for (long b = 0; b < nb; ++b) { /* insertion into the list of the largest, first index on ties */
+		int k = nt < MK_SCENEX_TOP ? nt++ : MK_SCENEX_TOP;
+		while (k > 0 && r.error[b] > r.error[top[k - 1]]) {
+			if (k < MK_SCENEX_TOP) top[k] = top[k - 1];
+			--k;
+		}
+		if (k < MK_SCENEX_TOP) top[k] = b;
+	}
+	out->ntop = nt;
+	for (int k = 0; k < nt; ++k) {
+		out->top_obstacle[k] = only >= 0 ? only : (int)(top[k] / r.bounds % r.obstacles);
+		out->top_orientation[k] = begin + (int)(top[k] / r.bounds / r.obstacles);
+	}
+	out->worst_obstacle = out->top_obstacle[0];
+	out->worst_orientation = out->top_orientation[0];
 	mkCSpaceResult_Free(&r);
 	return MK_OK;
 }
@@ -234,84 +247,66 @@ static void mkSceneX_RowA(mkCsv *csv, const mkScene *s, double tol, const char *
 static double mkSceneX_Per(int three, int L) { return three ? 4.0 * pow(4.0, L) + 2.0 : (double)L; }
 
 /* The smallest uniform sampling whose worst-case error over the scene is at
- * most target: 2D n normals, doubling from 4 then bisecting; 3D splits 0,
- * 1, ... A level fails as soon as one boundary exceeds target, so the
- * search climbs on the boundary that failed last (the scene's worst at the
- * last whole-scene run) and runs the whole scene only where that boundary
- * passes: only the result is confirmed on every boundary. The search
- * stops (capped) before a whole-scene run of more than `budget` points, or
- * past the largest level (2D n = 2^22, 3D 10 splits): *best is then the
- * largest level known to fail, with the points the whole scene would have
- * there and the error of its failing boundary (a lower bound of the
- * scene's error at that level; seconds, CPU seconds and checksum NaN when
- * only that boundary was run). Returns 1 when capped. Assumes, as any such
- * search does, that the error does not grow with the level. */
+ * most target, every level tried in turn: 2D n = 4, 5, 6, ... normals (the
+ * sets of normals are not nested, and the error is not monotone in n), 3D
+ * splits 0, 1, 2, ... A level fails as soon as one boundary exceeds
+ * target, so each level is first tried on the boundaries that failed at
+ * the last whole-scene run (its MK_SCENEX_TOP largest errors), and the
+ * whole scene runs only where all of those pass: the result is confirmed
+ * on every boundary, and every smaller level failed on some boundary. The
+ * search stops (capped) before a whole-scene run of more than `budget`
+ * points, or past the largest level (2D n = 2^22, 3D 10 splits): *best is
+ * then the largest level tried, which failed (as did all below it), with
+ * the points the whole scene would have there and the error of its failing
+ * boundary (a lower bound of the scene's error at that level; seconds, CPU
+ * seconds and checksum NaN when only that boundary was run). Returns 1
+ * when capped. */
 static int mkSceneX_Smallest(const mkScene *s, mkCSpaceOptions *o, double target, double budget, mkSceneXRun *best,
 	mkResult *rc, char *msg, size_t msglen)
 {
 	mkSceneXRun cur, fail;
 	o->mode = MK_CSPACE_UNIFORM;
 	*rc = MK_OK;
-	int three = s->dim == 3, lo = three ? -1 : 3, hi = -1, L = three ? 0 : 4, wi = -1, wo = -1;
+	int three = s->dim == 3, L = three ? 0 : 4, nf = 0, fo[MK_SCENEX_TOP], fr[MK_SCENEX_TOP];
 	double nb = (double)s->obstacle_count * s->orientation_count;
 	memset(&fail, 0, sizeof fail);
-	for (;;) {
+	for (;; L = L + 1) {
+		if (L > (three ? 10 : 1 << 22)) {
+			*best = fail;
+			return 1;
+		}
 		o->uniform = L;
 		int failed = 0;
-		if (wi >= 0) { /* the last failing boundary first */
-			if ((*rc = mkSceneX_RunPart(s, o, wi, wo, wo + 1, &cur, msg, msglen)) != MK_OK)
+		for (int k = 0; k < nf && !failed; ++k) { /* the last failing boundaries first */
+			if ((*rc = mkSceneX_RunPart(s, o, fo[k], fr[k], fr[k] + 1, &cur, msg, msglen)) != MK_OK)
 				return 0;
 			if (cur.error > target) {
 				failed = 1;
 				fail = cur;
 				fail.points = (long)(nb * mkSceneX_Per(three, L));
 				fail.seconds = fail.cpu = fail.checksum = NAN;
-			} else if (nb * mkSceneX_Per(three, L) > budget) {
-				break; /* capped: the confirming run is too large */
 			}
 		}
-		if (!failed) {
-			if ((*rc = mkSceneX_RunOnce(s, o, &cur, msg, msglen)) != MK_OK)
-				return 0;
-			if (cur.error <= target) {
-				hi = L;
-				*best = cur;
-				break;
-			}
-			failed = 1;
-			fail = cur;
-			wi = cur.worst_obstacle;
-			wo = cur.worst_orientation;
-		}
-		lo = L;
-		L = three ? L + 1 : 2 * L;
-		if (L > (three ? 10 : 1 << 22))
-			break;
-	}
-	if (hi < 0) {
-		*best = fail;
-		return 1;
-	}
-	while (hi - lo > 1) { /* 2D: bisect between a failing and a passing n */
-		o->uniform = (lo + hi) / 2;
-		if ((*rc = mkSceneX_RunPart(s, o, wi, wo, wo + 1, &cur, msg, msglen)) != MK_OK)
-			return 0;
-		if (cur.error > target) {
-			lo = o->uniform;
+		if (failed)
 			continue;
+		if (nf > 0 && nb * mkSceneX_Per(three, L) > budget) {
+			*best = fail; /* capped: the confirming run is too large */
+			return 1;
 		}
 		if ((*rc = mkSceneX_RunOnce(s, o, &cur, msg, msglen)) != MK_OK)
 			return 0;
 		if (cur.error <= target) {
-			hi = o->uniform;
 			*best = cur;
-		} else {
-			lo = o->uniform;
-			wi = cur.worst_obstacle;
-			wo = cur.worst_orientation;
+			return 0;
+		}
+		fail = cur;
+		nf = 0;
+		for (int k = 0; k < cur.ntop; ++k) {
+			fo[nf] = cur.top_obstacle[k];
+			fr[nf] = cur.top_orientation[k];
+			++nf;
 		}
 	}
-	return 0;
 }
 
 mkResult mkSceneX_Compare(const mkScene *s, double tol, int threads, mkCsv *csv, char *msg, size_t msglen)

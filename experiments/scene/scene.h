@@ -53,6 +53,8 @@
 /* Part A: the most points a whole-scene uniform run may use (2D, 3D) */
 #define MK_SCENEX_BUDGET2 1e8
 #define MK_SCENEX_BUDGET3 6e7
+/* Part A: failing boundaries tried first at the next level */
+#define MK_SCENEX_TOP 16
 /* Part B levels whose 1-thread run is shorter (seconds) have no meaningful
  * parallel efficiency: thread start-up is a visible part of them */
 #define MK_SCENEX_TINY_S 0.1
