@@ -13,7 +13,8 @@
  * superquadric/superellipse and ellipsoid/ellipse bodies (the kernels'
  * special forms), point counts that make whole and partial kernel groups
  * and tasks (2D 1, 7, 50, 600 angles; 3D grids 2, 3, 10, 23), 150
- * orientations (several tasks per obstacle), 1 and 2 threads. */
+ * orientations (several tasks per obstacle), 1 and 2 threads; and the
+ * orientations run in two pieces (as shards are) equal the whole run. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -103,6 +104,24 @@ static void check(const mkScene *s, int side, mkImpl impl, mkForm form, int thre
 			robot_ellipse ? "ellipse" : "super", bad, badsum);
 	ENSURE(bad == 0);
 	ENSURE(badsum == 0);
+	/* two pieces of the orientations (as --shard runs them) equal the whole */
+	int cut = s->orientation_count * 2 / 5;
+	long diff = 0;
+	for (int piece = 0; piece < 2; ++piece) {
+		mkCSpaceResult h;
+		int b0 = piece ? cut : 0, b1 = piece ? s->orientation_count : cut;
+		ENSURE(mkCSpace_Run(s, &o, b0, b1, &h, msg, sizeof msg) == MK_OK);
+		long off = (long)b0 * s->obstacle_count;
+		for (long b = 0; b < (long)(b1 - b0) * s->obstacle_count; ++b) {
+			diff += h.count[b] != r.count[off + b] || h.checksum[b] != r.checksum[off + b];
+			for (int j = 0; j < h.count[b] && j < r.count[off + b]; ++j) {
+				long k = h.first[b] + j, kr = r.first[off + b] + j;
+				diff += h.x[k] != r.x[kr] || h.y[k] != r.y[kr] || (dim == 3 && h.z[k] != r.z[kr]);
+			}
+		}
+		mkCSpaceResult_Free(&h);
+	}
+	ENSURE(diff == 0);
 	for (int d = 0; d < 3; ++d) { free(u[d]); free(q[d]); }
 	mkCSpaceResult_Free(&r);
 }
