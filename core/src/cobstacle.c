@@ -14,9 +14,12 @@
 #include <string.h>
 #include <time.h>
 
+#include "kernel.h"
+
 #define ROUND_REL 1e-13   /* rounding allowance per unit of coordinate size */
 #define MIN_ANGLE 1e-12   /* normals closer than this (radians) are not split */
 #define MAX_SPLITS 10     /* uniform 3D: 8 * 4^10 triangles */
+#define DENSE2 0.125      /* 2D adaptive: candidates refined to DENSE2 * tol, then the fewest kept (prune2) */
 
 static mkResult fail(mkResult r, char *msg, size_t msglen, const char *fmt, ...)
 {
@@ -88,6 +91,9 @@ typedef struct Work {
 	int *poly, pcap;
 	double *o[3]; int ocap[3]; /* 3D outer vertices */
 	int *fin, fcap;            /* 3D final (conforming) triangles */
+	double *pb; int pbcap;     /* paper mode: B1's half, the poses' directions, their points */
+	double *err2; int ecap;    /* 2D adaptive: the error of the arc i -> next[i] */
+	int *sel, scap;            /* 2D adaptive: the selection pass's arrays */
 } Work;
 
 static void work_free(Work *w)
@@ -96,7 +102,7 @@ static void work_free(Work *w)
 	free(w->next); free(w->act); free(w->act2); free(w->tri); free(w->tri2); free(w->leaf);
 	free(w->edges.key); free(w->edges.val); free(w->dedges.key); free(w->dedges.val); free(w->poly);
 	for (int i = 0; i < 3; ++i) free(w->o[i]);
-	free(w->fin);
+	free(w->fin); free(w->pb); free(w->err2); free(w->sel);
 	memset(w, 0, sizeof *w);
 }
 
@@ -159,6 +165,139 @@ static mkVec2 tangent_vertex(mkVec2 ni, mkVec2 pi, mkVec2 nj, mkVec2 pj)
 
 static double size2(mkVec2 a) { return fabs(a.x) + fabs(a.y); }
 
+/* The normal at which the chord p_i p_j is split: the chord's outward
+ * normal when it lies between the two normals (always, in exact
+ * arithmetic), else the bisector. */
+static mkVec2 split_normal2(mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj)
+{
+	mkVec2 d = mkVec2_Sub(pj, pi);
+	mkVec2 m = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
+	if (!(mkVec2_Cross(ni, m) > 0.0 && mkVec2_Cross(m, nj) > 0.0))
+		m = mkVec2_Normalize(mkVec2_Add(ni, nj));
+	return m;
+}
+
+/* The certified error of the arc between consecutive normals ni, nj (points
+ * pi, pj), given the split normal m and its point xm = x(m). */
+static double edge_err2(mkBound bound, mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj, mkVec2 m, mkVec2 xm)
+{
+	mkVec2 d = mkVec2_Sub(pj, pi);
+	mkVec2 chord = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
+	int is_chord = mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y);
+	/* Proof 3: for normals u between ni and nj, h_K(u) minus the
+	 * best of <u, pi>, <u, pj> is at most c / (4 cos(theta/2)) */
+	double c = mkVec2_Dot(mkVec2_Sub(ni, nj), mkVec2_Sub(pi, pj));
+	double half = 0.5 * mkVec2_Length(mkVec2_Add(ni, nj));
+	double g = (c > 0.0 ? c : 0.0) / (4.0 * half);
+	int wide = !(mkVec2_Dot(ni, nj) >= 0.0); /* a step over 90 degrees: Proof 3 only */
+	if (!(mkVec2_Cross(ni, nj) > 0.0)) g = INFINITY; /* 180 degrees or more: nothing certified */
+	if (wide) {
+		/* keep g */
+	} else if (bound == MK_BOUND_INNER) {
+		/* Proof 1: the chord gap h_K(m) - <m, p>, m the chord normal */
+		if (is_chord) {
+			double lo = fmin(mkVec2_Dot(m, pi), mkVec2_Dot(m, pj));
+			double gap = mkVec2_Dot(m, xm) - lo;
+			if (gap < 0.0) gap = 0.0;
+			if (gap < g) g = gap;
+		}
+	} else {
+		/* Proof 2: the tangent vertex's distance to conv{pi, x(m), pj} */
+		mkVec2 v = tangent_vertex(ni, pi, nj, pj);
+		double dv = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
+		if (dv < g) g = dv;
+	}
+	return g + ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
+}
+
+static mkVec2 wn2(const Work *w, int i) { return mkVec2_Make(w->n[0][i], w->n[1][i]); }
+static mkVec2 wp2(const Work *w, int i) { return mkVec2_Make(w->p[0][i], w->p[1][i]); }
+
+/* The selection pass of the adaptive 2D boundary. Refinement only halves
+ * normal steps, so many final arcs are certified well below tol (a quarter
+ * of it for a step halved once more than needed). Among the refined
+ * vertices this keeps the fewest whose consecutive arcs are each certified
+ * within tol by the same criterion as refinement (Proofs 1-3 with x(m) of
+ * the merged chord's normal m), vertex 0 kept (the output starts at it):
+ * the arcs k -> k + s of the cycle order are tried for s = 2, 3, ... while
+ * the arc of span s - 1 from k was within tol and the normal step stays
+ * below 90 degrees (one batch of x(m) per span), then a shortest path
+ * from position 0 around to itself over the arcs within tol (and the
+ * refined arcs, span 1, always) picks the vertices. The chosen merged arcs
+ * are evaluated once more for their errors (err[i]: the arc i -> next[i]).
+ * Deterministic: the same choice whatever the thread. */
+static mkResult prune2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, double *err,
+	int *count)
+{
+	int cnt = *count;
+	if (cnt < 4) return MK_OK;
+	/* sel: ord[cnt + 1], reach[cnt], dp[cnt + 1], from[cnt + 1] */
+	if (!grow_i(&w->sel, &w->scap, 4 * cnt + 3) || !grow_i(&w->act, &w->acap, cnt) || !grow_i(&w->act2, &w->a2cap, cnt)
+		|| !work_batch(w, cnt, 2))
+		return MK_ERR_MEMORY;
+	int *ord = w->sel, *reach = ord + cnt + 1, *dp = reach + cnt, *from = dp + cnt + 1;
+	for (int k = 0, i = 0; k < cnt; ++k, i = w->next[i]) ord[k] = i;
+	ord[cnt] = 0;
+	int na = 0;
+	for (int k = 0; k < cnt; ++k) {
+		reach[k] = 1;
+		if (err[ord[k]] <= tol) w->act[na++] = k;
+	}
+	for (int span = 2; na > 0 && span < cnt; ++span) {
+		int nb = 0;
+		for (int a = 0; a < na; ++a) {
+			int k = w->act[a], q = k + span;
+			if (q > cnt) continue; /* arcs over vertex 0 are not used */
+			mkVec2 nu = wn2(w, ord[k]), nx = wn2(w, ord[q]);
+			if (!(mkVec2_Dot(nu, nx) >= 0.0 && mkVec2_Cross(nu, nx) > 0.0)) continue; /* Proof 1: below 90 degrees */
+			mkVec2 m = split_normal2(nu, nx, wp2(w, ord[k]), wp2(w, ord[q]));
+			w->m[0][nb] = m.x; w->m[1][nb] = m.y;
+			w->act2[nb++] = k;
+		}
+		if (nb == 0) break;
+		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], nb, w->q[0], w->q[1]);
+		if (r != MK_OK) return r;
+		na = 0;
+		for (int a = 0; a < nb; ++a) {
+			int k = w->act2[a], q = k + span;
+			double e = edge_err2(bound, wn2(w, ord[k]), wn2(w, ord[q]), wp2(w, ord[k]), wp2(w, ord[q]),
+				mkVec2_Make(w->m[0][a], w->m[1][a]), mkVec2_Make(w->q[0][a], w->q[1][a]));
+			if (e <= tol) {
+				reach[k] = span;
+				w->act[na++] = k;
+			}
+		}
+	}
+	/* fewest arcs from position 0 to position cnt (vertex 0 again) */
+	for (int q = 0; q <= cnt; ++q) { dp[q] = q == 0 ? 0 : cnt + 1; from[q] = -1; }
+	for (int p = 0; p < cnt; ++p)
+		for (int sp = 1; sp <= reach[p] && p + sp <= cnt; ++sp)
+			if (dp[p] + 1 < dp[p + sp]) { dp[p + sp] = dp[p] + 1; from[p + sp] = p; }
+	/* relink, and the merged arcs' errors */
+	int nb = 0;
+	for (int q = cnt; q > 0; q = from[q]) {
+		int p = from[q];
+		w->next[ord[p]] = ord[q];
+		if (q - p > 1) {
+			mkVec2 nu = wn2(w, ord[p]), nx = wn2(w, ord[q]);
+			mkVec2 m = split_normal2(nu, nx, wp2(w, ord[p]), wp2(w, ord[q]));
+			w->m[0][nb] = m.x; w->m[1][nb] = m.y;
+			w->act2[nb++] = p;
+		}
+	}
+	if (nb > 0) {
+		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], nb, w->q[0], w->q[1]);
+		if (r != MK_OK) return r;
+		for (int a = 0; a < nb; ++a) {
+			int u = ord[w->act2[a]], x = w->next[u];
+			err[u] = edge_err2(bound, wn2(w, u), wn2(w, x), wp2(w, u), wp2(w, x), mkVec2_Make(w->m[0][a], w->m[1][a]),
+				mkVec2_Make(w->q[0][a], w->q[1][a]));
+		}
+	}
+	*count = dp[cnt];
+	return MK_OK;
+}
+
 /* Adaptive (uniform_n == 0) or uniform boundary. Results in w: node order by
  * w->next from node 0, *count nodes. */
 static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, int max_points,
@@ -189,11 +328,7 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 		 * the two normals (always, in exact arithmetic), else the bisector */
 		for (int a = 0; a < na; ++a) {
 			int i = w->act[a], j = w->next[i];
-			mkVec2 ni = {w->n[0][i], w->n[1][i]}, nj = {w->n[0][j], w->n[1][j]};
-			mkVec2 d = {w->p[0][j] - w->p[0][i], w->p[1][j] - w->p[1][i]};
-			mkVec2 m = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
-			if (!(mkVec2_Cross(ni, m) > 0.0 && mkVec2_Cross(m, nj) > 0.0))
-				m = mkVec2_Normalize(mkVec2_Add(ni, nj));
+			mkVec2 m = split_normal2(wn2(w, i), wn2(w, j), wp2(w, i), wp2(w, j));
 			w->m[0][a] = m.x; w->m[1][a] = m.y;
 		}
 		r = eval2(b1, b2, impl, w->m[0], w->m[1], na, w->q[0], w->q[1]);
@@ -205,37 +340,13 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 			mkVec2 ni = {w->n[0][i], w->n[1][i]}, nj = {w->n[0][j], w->n[1][j]};
 			mkVec2 pi = {w->p[0][i], w->p[1][i]}, pj = {w->p[0][j], w->p[1][j]};
 			mkVec2 m = {w->m[0][a], w->m[1][a]}, xm = {w->q[0][a], w->q[1][a]};
-			mkVec2 d = mkVec2_Sub(pj, pi);
-			mkVec2 chord = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
-			int is_chord = mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y);
-			/* Proof 3: for normals u between ni and nj, h_K(u) minus the
-			 * best of <u, pi>, <u, pj> is at most c / (4 cos(theta/2)) */
-			double c = mkVec2_Dot(mkVec2_Sub(ni, nj), mkVec2_Sub(pi, pj));
-			double half = 0.5 * mkVec2_Length(mkVec2_Add(ni, nj));
-			double g = (c > 0.0 ? c : 0.0) / (4.0 * half);
-			int wide = !(mkVec2_Dot(ni, nj) >= 0.0); /* a step over 90 degrees: Proof 3 only */
-			if (!(mkVec2_Cross(ni, nj) > 0.0)) g = INFINITY; /* 180 degrees or more: nothing certified */
-			if (wide) {
-				/* keep g */
-			} else if (bound == MK_BOUND_INNER) {
-				/* Proof 1: the chord gap h_K(m) - <m, p>, m the chord normal */
-				if (is_chord) {
-					double lo = fmin(mkVec2_Dot(m, pi), mkVec2_Dot(m, pj));
-					double gap = mkVec2_Dot(m, xm) - lo;
-					if (gap < 0.0) gap = 0.0;
-					if (gap < g) g = gap;
-				}
-			} else {
-				/* Proof 2: the tangent vertex's distance to conv{pi, x(m), pj} */
-				mkVec2 v = tangent_vertex(ni, pi, nj, pj);
-				double dv = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
-				if (dv < g) g = dv;
-			}
-			double err = g + ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
+			double err = edge_err2(bound, ni, nj, pi, pj, m, xm);
 			double ang = atan2(mkVec2_Cross(ni, nj), mkVec2_Dot(ni, nj));
-			int split = uniform_n == 0 && err > tol && ang > MIN_ANGLE && nv < max_points;
+			int split = uniform_n == 0 && err > DENSE2 * tol && ang > MIN_ANGLE && nv < max_points;
 			if (!split) {
 				if (err > maxerr || err != err) maxerr = err;
+				if (!grow_d(&w->err2, &w->ecap, nv)) return MK_ERR_MEMORY;
+				w->err2[i] = err;
 				continue;
 			}
 			if (!work_verts(w, nv + 1, 2) || !grow_i(&w->next, &w->ncap, nv + 1)) return MK_ERR_MEMORY;
@@ -250,6 +361,13 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 		int *t = w->act; w->act = w->act2; w->act2 = t;
 		int tc = w->acap; w->acap = w->a2cap; w->a2cap = tc;
 		na = nn;
+	}
+	if (uniform_n == 0 && !given_x) {
+		mkResult rp = prune2(w, b1, b2, impl, bound, tol, w->err2, &nv);
+		if (rp != MK_OK) return rp;
+		maxerr = 0.0;
+		for (int k = 0, i = 0; k < nv; ++k, i = w->next[i])
+			if (w->err2[i] > maxerr || w->err2[i] != w->err2[i]) maxerr = w->err2[i];
 	}
 	*count = nv;
 	*error = maxerr;
@@ -978,6 +1096,11 @@ typedef struct Run {
 	double robot_err[2], *obs_err;
 	double *paper_u[3];      /* paper mode parameters */
 	int paper_n;
+	/* paper mode: a task is one obstacle and `chunk` orientations, whose
+	 * robot maps R_o M are poses2/poses3 (relative o), computed once */
+	int chunk, nchunks, group;
+	mkMat2 *poses2;
+	mkMat3 *poses3;
 	mkCSpaceResult *res;
 	TaskOut *outs;           /* per boundary, store = 1 */
 	long ntasks;
@@ -1075,6 +1198,69 @@ static mkResult do_task(Run *R, Work *w, long task)
 	return MK_OK;
 }
 
+/* Paper mode: obstacle i against the orientations of chunk c. The
+ * obstacle's half of the batch is computed once (mkKOne*_Init) and the
+ * robot's half over `group` orientations per kernel call (mkKOne*_Run);
+ * the points are, bit for bit, those of one mkSum*_Batch call per
+ * orientation (kernel.h). Each boundary's seconds are the task's wall time
+ * shared equally among its orientations. */
+static mkResult do_paper_task(Run *R, Work *w, long task)
+{
+	const mkCSpaceOptions *o = R->opt;
+	int c = (int)(task / R->nob), i = (int)(task % R->nob), dim = R->dim;
+	int ob = c * R->chunk, oe = ob + R->chunk < R->nor ? ob + R->chunk : R->nor;
+	double t0 = now_s();
+	int n = dim == 2 ? R->paper_n : R->paper_n * R->paper_n, G = R->group;
+	long need = (long)dim * n * (2 + 2 * (long)G);
+	if (need > 0x7fffffffL || !grow_d(&w->pb, &w->pbcap, (int)need)) return MK_ERR_MEMORY;
+	double *scratch = w->pb + (long)2 * dim * n, *pts = scratch + (long)dim * n * G;
+	double *px = pts, *py = pts + (long)n * G, *pz = pts + (long)2 * n * G;
+	mkSumOptions so = {MK_SET_CONTACT, o->form, MK_PARAM_SURFACE, o->impl, MK_PRECISION_DOUBLE};
+	mkKOne2 one2;
+	mkKOne3 one3;
+	mkResult r = dim == 2
+		? mkKOne2_Init(&one2, R->obs2[2 * i], R->robot2[0].shape, &so, R->paper_u[0], R->paper_u[1], n, w->pb)
+		: mkKOne3_Init(&one3, R->obs3[2 * i], R->robot3[0].shape, &so, R->paper_u[0], R->paper_u[1], R->paper_u[2],
+			n, w->pb);
+	if (r != MK_OK) return r;
+	for (int o0 = ob; o0 < oe; o0 += G) {
+		int m = oe - o0 < G ? oe - o0 : G;
+		if (dim == 2) mkKOne2_Run(&one2, R->poses2 + o0, m, scratch, px, py);
+		else mkKOne3_Run(&one3, R->poses3 + o0, m, scratch, px, py, pz);
+		/* checksums: each boundary's coordinates summed in order, as do_task
+		 * sums them; the m sums are independent chains, advanced together */
+		double sums[MK_KONE_POSES];
+		for (int k = 0; k < m; ++k) sums[k] = 0.0;
+		for (int j = 0; j < n; ++j)
+			for (int k = 0; k < m; ++k) {
+				long q = (long)k * n + j;
+				sums[k] += px[q] + py[q] + (dim == 3 ? pz[q] : 0.0);
+			}
+		for (int k = 0; k < m; ++k) {
+			long b = (long)(o0 + k) * R->nob + i; /* one bound: the inner */
+			const double *qx = px + (long)k * n, *qy = py + (long)k * n, *qz = dim == 3 ? pz + (long)k * n : NULL;
+			double sum = sums[k];
+			if (o->store) {
+				double *xyz = malloc((size_t)n * (size_t)dim * sizeof(double) + 1);
+				if (!xyz) return MK_ERR_MEMORY;
+				for (int j = 0; j < n; ++j) {
+					xyz[dim * j] = qx[j];
+					xyz[dim * j + 1] = qy[j];
+					if (dim == 3) xyz[3 * j + 2] = qz[j];
+				}
+				R->outs[b].xyz = xyz;
+			}
+			R->res->count[b] = n;
+			R->res->model_error[b] = R->obs_err[2 * i] + R->robot_err[0];
+			R->res->error[b] = NAN;
+			R->res->checksum[b] = sum;
+		}
+	}
+	double each = (now_s() - t0) / (double)(oe - ob);
+	for (int k = ob; k < oe; ++k) R->res->seconds[(long)k * R->nob + i] = each;
+	return MK_OK;
+}
+
 static void *worker(void *arg)
 {
 	Run *R = arg;
@@ -1090,7 +1276,7 @@ static void *worker(void *arg)
 		if (t >= R->ntasks) break;
 		long e = t + blk < R->ntasks ? t + blk : R->ntasks;
 		for (; t < e; ++t) {
-			mkResult r = do_task(R, &w, t);
+			mkResult r = R->opt->mode == MK_CSPACE_PAPER ? do_paper_task(R, &w, t) : do_task(R, &w, t);
 			if (r != MK_OK) {
 				pthread_mutex_lock(&R->lock);
 				if (!R->failed) R->failed = r;
@@ -1215,6 +1401,24 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 			if (!(R.paper_u[d] = malloc((size_t)np * sizeof(double)))) { r = MK_ERR_MEMORY; goto done; }
 		if (dim == 2) mkSample2_Angles(opt->uniform, R.paper_u[0], R.paper_u[1]);
 		else mkSample3_Grid(opt->uniform, R.paper_u[0], R.paper_u[1], R.paper_u[2]);
+		/* the robot's maps, once per orientation (not per obstacle) */
+		if (dim == 2) R.poses2 = malloc((size_t)R.nor * sizeof *R.poses2 + 1);
+		else R.poses3 = malloc((size_t)R.nor * sizeof *R.poses3 + 1);
+		if (dim == 2 ? !R.poses2 : !R.poses3) { r = MK_ERR_MEMORY; goto done; }
+		for (int k = 0; k < R.nor; ++k) {
+			if (dim == 2) R.poses2[k] = mkMat2_Mul(mkScene2_Orientation(scene, begin + k), R.robot2[0].M);
+			else R.poses3[k] = mkMat3_Mul(mkScene3_Orientation(scene, begin + k), R.robot3[0].M);
+		}
+		/* group: orientations per kernel call, so that group * points is a
+		 * multiple of 32 (the widest kernel's block: no padded lanes) and
+		 * at least 512; chunk: 16 groups per task, so that the obstacle's
+		 * half (once per task) is a small part of it */
+		int g0 = 32;
+		for (long m = np; g0 > 1 && m % 2 == 0; m /= 2) g0 /= 2;   /* 32 / gcd(np, 32) */
+		R.group = np >= 512 ? 1 : g0 * (int)((512 + g0 * np - 1) / (g0 * np));
+		if (R.group > MK_KONE_POSES) R.group = MK_KONE_POSES / g0 * g0;
+		R.chunk = 16 * R.group < R.nor ? 16 * R.group : (R.nor > 0 ? R.nor : 1);
+		R.nchunks = (R.nor + R.chunk - 1) / R.chunk;
 	}
 
 	long nb = (long)nob * R.nor * R.bounds;
@@ -1228,7 +1432,7 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 	if (!out->count || !out->error || !out->model_error || !out->seconds || !out->checksum) { r = MK_ERR_MEMORY; goto done; }
 	if (opt->store && !(R.outs = calloc((size_t)nb + 1, sizeof *R.outs))) { r = MK_ERR_MEMORY; goto done; }
 	R.res = out;
-	R.ntasks = (long)nob * R.nor;
+	R.ntasks = opt->mode == MK_CSPACE_PAPER ? (long)nob * R.nchunks : (long)nob * R.nor;
 	pthread_mutex_init(&R.lock, NULL);
 	int nth = opt->threads;
 	if (nth > R.ntasks) nth = R.ntasks > 0 ? (int)R.ntasks : 1;
@@ -1280,6 +1484,7 @@ done:
 	}
 	free(R.obs_err); free(R.obs2); free(R.obs3);
 	for (int d = 0; d < 3; ++d) free(R.paper_u[d]);
+	free(R.poses2); free(R.poses3);
 	if (r != MK_OK) mkCSpaceResult_Free(out);
 	return r;
 }

@@ -67,6 +67,69 @@ void mkK3_Run_avx512(const mkKPlan3 *p, const double *ux, const double *uy, cons
 	double *x, double *y, double *z, double *kx, double *ky, double *kz);
 #endif
 
+/* The two halves of a surface-parameter batch (kernel_body.h, double builds
+ * only): B1's unit parameter, point f(u) and gradient g(u) in its own frame;
+ * B2's f~ (form normal) or f~~ (form gradient) of given directions (x may
+ * be d: in place); and B2's half with the sums for m poses (PoseRun). */
+#define MK_KHALVES_DECL(isa) \
+	void mkK2_SurfaceRun_##isa(const mkKShape2 *s, const double *ux, const double *uy, int n, \
+		double *x1, double *x2, double *g1, double *g2); \
+	void mkK2_DirRun_##isa(const mkKShape2 *s, int form, const double *d1, const double *d2, int n, \
+		double *x1, double *x2); \
+	void mkK3_SurfaceRun_##isa(const mkKShape3 *s, const double *ux, const double *uy, const double *uz, int n, \
+		double *x1, double *x2, double *x3, double *g1, double *g2, double *g3); \
+	void mkK3_DirRun_##isa(const mkKShape3 *s, int form, const double *d1, const double *d2, const double *d3, \
+		int n, double *x1, double *x2, double *x3); \
+	void mkK2_PoseRun_##isa(const mkKShape2 *s2, int form, const double *k1, const double *k2, const double *g1, \
+		const double *g2, int n, const double (*D2)[2][2], const double (*M2)[2][2], double sigma, \
+		const double *t2p, int m, double *scratch, double *x, double *y); \
+	void mkK3_PoseRun_##isa(const mkKShape3 *s2, int form, const double *const k[3], const double *const g[3], \
+		int n, const double (*D2)[3][3], const double (*M2)[3][3], double sigma, const double *t2p, int m, \
+		double *scratch, double *x, double *y, double *z);
+MK_KHALVES_DECL(scalar)
+#if defined(MINK_HAVE_X86_KERNELS)
+MK_KHALVES_DECL(avx2)
+MK_KHALVES_DECL(avx512)
+#endif
+
+/* ---- one body against many poses of another (sum.c) ---------------------
+ * mkSum2_Batch/mkSum3_Batch(b1, b2_o, opt, u, n) for m poses b2_o of B2 that
+ * differ only in their map (M2_o; the set is the contact space, so B2's
+ * centre does not enter), with B1's half of the batch computed once: the
+ * points t1 + M1 f(u) and the gradients g(u). mkKOne*_Run gives, bit for bit,
+ * the points the m batch calls give (core.test_sum_split): the same kernels
+ * per lane, the same products in the same order around them. It saves B1's
+ * half per pose and pads one tail per m poses instead of one per pose
+ * (Table 2's workload, mkCSpace_Run's paper mode). */
+typedef struct mkKOne2 {
+	mkKPlan2 p;         /* M2, D2 are set per pose */
+	mkMat2 W;           /* M1^-T, the surface parameters' D2 factor */
+	mkImpl impl;        /* resolved */
+	int n;
+	double *k[2], *g[2]; /* n each: B1's points t1 + M1 f(u), gradients g(u) */
+} mkKOne2;
+
+typedef struct mkKOne3 {
+	mkKPlan3 p;
+	mkMat3 W;
+	mkImpl impl;
+	int n;
+	double *k[3], *g[3];
+} mkKOne3;
+
+/* opt: contact set, surface parameters, form normal or gradient, double
+ * precision, an available kernel (else MK_ERR_ARGUMENT / MK_ERR_UNSUPPORTED).
+ * buf holds 2 dim n doubles, owned by the caller and used by the struct. */
+mkResult mkKOne2_Init(mkKOne2 *w, mkBody2 b1, mkShape2 s2, const mkSumOptions *opt,
+	const double *ux, const double *uy, int n, double *buf);
+mkResult mkKOne3_Init(mkKOne3 *w, mkBody3 b1, mkShape3 s2, const mkSumOptions *opt,
+	const double *ux, const double *uy, const double *uz, int n, double *buf);
+/* The m poses M2[0 .. m) (m <= MK_KONE_POSES): points of pose o at
+ * x[o n .. (o+1) n), likewise y (z). scratch holds dim n m doubles. */
+#define MK_KONE_POSES 64
+void mkKOne2_Run(const mkKOne2 *w, const mkMat2 *M2, int m, double *scratch, double *x, double *y);
+void mkKOne3_Run(const mkKOne3 *w, const mkMat3 *M2, int m, double *scratch, double *x, double *y, double *z);
+
 /* ---- the single-precision tier (MK_PRECISION_F32) ----------------------
  * The same kernels (kernel_body.h) over float lanes: the prepared constants
  * below are the double ones, rescaled (sum.c) and rounded to float once per

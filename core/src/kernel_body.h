@@ -209,11 +209,9 @@ static inline void KFN(se_dir)(const KSHAPE2 *s, int form, const KV *d1, const K
 	else KFN(se_gradinv)(s, d1, d2, x1, x2);
 }
 
-/* KP * KW points: pux[0 .. KP*KW) and so on. */
-static inline void KFN(block2)(const KPLAN2 *p, const double *pux, const double *puy,
-	double *px, double *py, double *pkx, double *pky)
+/* Load KP lane vectors of parameters and make them unit length. */
+static inline void KFN(load_unit2)(const double *pux, const double *puy, KV *u1, KV *u2)
 {
-	KV u1[KP], u2[KP];
 #ifdef KLOAD_UNIT2
 	KFOR(j) KLOAD_UNIT2(j * KW, pux, puy, u1[j], u2[j]);
 #else
@@ -232,6 +230,14 @@ static inline void KFN(block2)(const KPLAN2 *p, const double *pux, const double 
 		}
 	}
 #endif
+}
+
+/* KP * KW points: pux[0 .. KP*KW) and so on. */
+static inline void KFN(block2)(const KPLAN2 *p, const double *pux, const double *puy,
+	double *px, double *py, double *pkx, double *pky)
+{
+	KV u1[KP], u2[KP];
+	KFN(load_unit2)(pux, puy, u1, u2);
 	KV x1[KP], x2[KP], v1[KP], v2[KP]; /* v: B1's gradient (surface) or the normal */
 	if (p->param == MK_PARAM_SURFACE) {
 		KFN(se_surface)(&p->s1, u1, u2, x1, x2, v1, v2);
@@ -406,16 +412,15 @@ static inline void KFN(sq_dir)(const KSHAPE3 *s, int form, const KV *d1, const K
 
 #define KMV3(A, v1, v2, v3, i) ((A)[i][0] * (v1) + (A)[i][1] * (v2) + (A)[i][2] * (v3))
 
-static inline void KFN(block3)(const KPLAN3 *p, const double *pux, const double *puy, const double *puz,
-	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
+/* As load_unit2. */
+static inline void KFN(load_unit3)(const double *pux, const double *puy, const double *puz, KV *u1, KV *u2, KV *u3)
 {
-	KV u1[KP], u2[KP], u3[KP];
 #ifdef KLOAD_UNIT3
 	KFOR(j) KLOAD_UNIT3(j * KW, pux, puy, puz, u1[j], u2[j], u3[j]);
 #else
 	KFOR(j) {
 		u1[j] = KLOAD(pux + j * KW); u2[j] = KLOAD(puy + j * KW); u3[j] = KLOAD(puz + j * KW);
-		/* as in block2 */
+		/* as in load_unit2 */
 		KM unit = KABS(u1[j] * u1[j] + u2[j] * u2[j] + u3[j] * u3[j] - 1.0) <= KSPLAT(KUNIT_TOL);
 		if (!KALL(unit)) {
 			KV m = KFN(kmax)(KFN(kmax)(KABS(u1[j]), KABS(u2[j])), KABS(u3[j]));
@@ -427,6 +432,13 @@ static inline void KFN(block3)(const KPLAN3 *p, const double *pux, const double 
 		}
 	}
 #endif
+}
+
+static inline void KFN(block3)(const KPLAN3 *p, const double *pux, const double *puy, const double *puz,
+	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
+{
+	KV u1[KP], u2[KP], u3[KP];
+	KFN(load_unit3)(pux, puy, puz, u1, u2, u3);
 	KV x1[KP], x2[KP], x3[KP], v1[KP], v2[KP], v3[KP];
 	if (p->param == MK_PARAM_SURFACE) {
 		KFN(sq_surface)(&p->s1, u1, u2, u3, x1, x2, x3, v1, v2, v3);
@@ -479,3 +491,228 @@ void KFN(mkK3_Run)(const KPLAN3 *p, const double *ux, const double *uy, const do
 		}
 	}
 }
+
+/* ---- the two halves of a surface-parameter batch --------------------------
+ * For a caller that sums one body B1 against many poses of B2 (Table 2's
+ * workload: one obstacle, thousands of robot orientations): B1's half of
+ * block2/block3 (the unit parameter, B1's point f(u) and gradient g(u), in
+ * its own frame) is computed once per body, and B2's half (f~ or f~~ of
+ * given directions, `form`) over long arrays that hold many poses back to
+ * back, so that the tail block's padding is paid once per array instead of
+ * once per pose. Per lane the arithmetic is exactly block2's/block3's: a
+ * caller that forms the directions D2 g and the sums t1 + M1 x +
+ * (sigma M2 y + t2p) with the same products in the same order gets the same
+ * bits as mkSum2_Batch/mkSum3_Batch (tested in core.test_sum_split). Only
+ * the double builds (KHALVES) have them. A tail shorter than a block is
+ * padded with copies of the last input, as in mkK2_Run. */
+#ifdef KHALVES
+
+void KFN(mkK2_SurfaceRun)(const KSHAPE2 *s, const double *ux, const double *uy, int n,
+	double *x1, double *x2, double *g1, double *g2)
+{
+	double bu[2][KBLK], bo[4][KBLK];
+	for (int i = 0; i < n; i += KBLK) {
+		int r = n - i < KBLK ? n - i : KBLK;
+		const double *pu1 = ux + i, *pu2 = uy + i;
+		if (r < KBLK) {
+			for (int j = 0; j < KBLK; ++j) {
+				int t = i + (j < r ? j : r - 1);
+				bu[0][j] = ux[t]; bu[1][j] = uy[t];
+			}
+			pu1 = bu[0]; pu2 = bu[1];
+		}
+		KV u1[KP], u2[KP], a1[KP], a2[KP], m1[KP], m2[KP];
+		KFN(load_unit2)(pu1, pu2, u1, u2);
+		KFN(se_surface)(s, u1, u2, a1, a2, m1, m2);
+		KFOR(j) {
+			KSTORE(bo[0] + j * KW, a1[j]); KSTORE(bo[1] + j * KW, a2[j]);
+			KSTORE(bo[2] + j * KW, m1[j]); KSTORE(bo[3] + j * KW, m2[j]);
+		}
+		for (int j = 0; j < r; ++j) {
+			x1[i + j] = bo[0][j]; x2[i + j] = bo[1][j];
+			g1[i + j] = bo[2][j]; g2[i + j] = bo[3][j];
+		}
+	}
+}
+
+void KFN(mkK2_DirRun)(const KSHAPE2 *s, int form, const double *d1, const double *d2, int n,
+	double *x1, double *x2)
+{
+	int i = 0;
+	for (; i + KBLK <= n; i += KBLK) {
+		KV e1[KP], e2[KP], y1[KP], y2[KP];
+		KFOR(j) { e1[j] = KLOAD(d1 + i + j * KW); e2[j] = KLOAD(d2 + i + j * KW); }
+		KFN(se_dir)(s, form, e1, e2, y1, y2);
+		KFOR(j) { KSTORE(x1 + i + j * KW, y1[j]); KSTORE(x2 + i + j * KW, y2[j]); }
+	}
+	int r = n - i;
+	if (r > 0) {
+		double bd[2][KBLK], bo[2][KBLK];
+		for (int j = 0; j < KBLK; ++j) {
+			int t = i + (j < r ? j : r - 1);
+			bd[0][j] = d1[t]; bd[1][j] = d2[t];
+		}
+		KV e1[KP], e2[KP], y1[KP], y2[KP];
+		KFOR(j) { e1[j] = KLOAD(bd[0] + j * KW); e2[j] = KLOAD(bd[1] + j * KW); }
+		KFN(se_dir)(s, form, e1, e2, y1, y2);
+		KFOR(j) { KSTORE(bo[0] + j * KW, y1[j]); KSTORE(bo[1] + j * KW, y2[j]); }
+		for (int j = 0; j < r; ++j) { x1[i + j] = bo[0][j]; x2[i + j] = bo[1][j]; }
+	}
+}
+
+void KFN(mkK3_SurfaceRun)(const KSHAPE3 *s, const double *ux, const double *uy, const double *uz, int n,
+	double *x1, double *x2, double *x3, double *g1, double *g2, double *g3)
+{
+	double bu[3][KBLK], bo[6][KBLK];
+	for (int i = 0; i < n; i += KBLK) {
+		int r = n - i < KBLK ? n - i : KBLK;
+		const double *pu1 = ux + i, *pu2 = uy + i, *pu3 = uz + i;
+		if (r < KBLK) {
+			for (int j = 0; j < KBLK; ++j) {
+				int t = i + (j < r ? j : r - 1);
+				bu[0][j] = ux[t]; bu[1][j] = uy[t]; bu[2][j] = uz[t];
+			}
+			pu1 = bu[0]; pu2 = bu[1]; pu3 = bu[2];
+		}
+		KV u1[KP], u2[KP], u3[KP], a1[KP], a2[KP], a3[KP], m1[KP], m2[KP], m3[KP];
+		KFN(load_unit3)(pu1, pu2, pu3, u1, u2, u3);
+		KFN(sq_surface)(s, u1, u2, u3, a1, a2, a3, m1, m2, m3);
+		KFOR(j) {
+			KSTORE(bo[0] + j * KW, a1[j]); KSTORE(bo[1] + j * KW, a2[j]); KSTORE(bo[2] + j * KW, a3[j]);
+			KSTORE(bo[3] + j * KW, m1[j]); KSTORE(bo[4] + j * KW, m2[j]); KSTORE(bo[5] + j * KW, m3[j]);
+		}
+		for (int j = 0; j < r; ++j) {
+			x1[i + j] = bo[0][j]; x2[i + j] = bo[1][j]; x3[i + j] = bo[2][j];
+			g1[i + j] = bo[3][j]; g2[i + j] = bo[4][j]; g3[i + j] = bo[5][j];
+		}
+	}
+}
+
+void KFN(mkK3_DirRun)(const KSHAPE3 *s, int form, const double *d1, const double *d2, const double *d3, int n,
+	double *x1, double *x2, double *x3)
+{
+	int i = 0;
+	for (; i + KBLK <= n; i += KBLK) {
+		KV e1[KP], e2[KP], e3[KP], y1[KP], y2[KP], y3[KP];
+		KFOR(j) {
+			e1[j] = KLOAD(d1 + i + j * KW); e2[j] = KLOAD(d2 + i + j * KW); e3[j] = KLOAD(d3 + i + j * KW);
+		}
+		KFN(sq_dir)(s, form, e1, e2, e3, y1, y2, y3);
+		KFOR(j) {
+			KSTORE(x1 + i + j * KW, y1[j]); KSTORE(x2 + i + j * KW, y2[j]); KSTORE(x3 + i + j * KW, y3[j]);
+		}
+	}
+	int r = n - i;
+	if (r > 0) {
+		double bd[3][KBLK], bo[3][KBLK];
+		for (int j = 0; j < KBLK; ++j) {
+			int t = i + (j < r ? j : r - 1);
+			bd[0][j] = d1[t]; bd[1][j] = d2[t]; bd[2][j] = d3[t];
+		}
+		KV e1[KP], e2[KP], e3[KP], y1[KP], y2[KP], y3[KP];
+		KFOR(j) { e1[j] = KLOAD(bd[0] + j * KW); e2[j] = KLOAD(bd[1] + j * KW); e3[j] = KLOAD(bd[2] + j * KW); }
+		KFN(sq_dir)(s, form, e1, e2, e3, y1, y2, y3);
+		KFOR(j) { KSTORE(bo[0] + j * KW, y1[j]); KSTORE(bo[1] + j * KW, y2[j]); KSTORE(bo[2] + j * KW, y3[j]); }
+		for (int j = 0; j < r; ++j) { x1[i + j] = bo[0][j]; x2[i + j] = bo[1][j]; x3[i + j] = bo[2][j]; }
+	}
+}
+
+/* o = A v over n points (block2's/block3's e = D2 v), lane vectors while
+ * KW points remain, then one point at a time: the same products either way. */
+static void KFN(apply2)(const double A[2][2], const double *v1, const double *v2, int n, double *o1, double *o2)
+{
+	int i = 0;
+	for (; i + KW <= n; i += KW) {
+		KV a = KLOAD(v1 + i), b = KLOAD(v2 + i);
+		KSTORE(o1 + i, A[0][0] * a + A[0][1] * b);
+		KSTORE(o2 + i, A[1][0] * a + A[1][1] * b);
+	}
+	for (; i < n; ++i) {
+		double a = v1[i], b = v2[i];
+		o1[i] = A[0][0] * a + A[0][1] * b;
+		o2[i] = A[1][0] * a + A[1][1] * b;
+	}
+}
+
+static void KFN(apply3)(const double A[3][3], const double *v1, const double *v2, const double *v3, int n,
+	double *o1, double *o2, double *o3)
+{
+	int i = 0;
+	for (; i + KW <= n; i += KW) {
+		KV a = KLOAD(v1 + i), b = KLOAD(v2 + i), c = KLOAD(v3 + i);
+		KSTORE(o1 + i, KMV3(A, a, b, c, 0));
+		KSTORE(o2 + i, KMV3(A, a, b, c, 1));
+		KSTORE(o3 + i, KMV3(A, a, b, c, 2));
+	}
+	for (; i < n; ++i) {
+		double a = v1[i], b = v2[i], c = v3[i];
+		o1[i] = KMV3(A, a, b, c, 0);
+		o2[i] = KMV3(A, a, b, c, 1);
+		o3[i] = KMV3(A, a, b, c, 2);
+	}
+}
+
+/* m poses of B2 against B1's half (k: t1 + M1 f(u), g: the gradients, n
+ * each): pose o's directions D2[o] g, B2's half over all n m of them, and
+ * the points k + (sigma M2[o] y + t2p), as block2 forms them, at
+ * x[o n ..], y[o n ..]. scratch: 2 n m doubles. */
+void KFN(mkK2_PoseRun)(const KSHAPE2 *s2, int form, const double *k1, const double *k2, const double *g1,
+	const double *g2, int n, const double (*D2)[2][2], const double (*M2)[2][2], double sigma, const double *t2p,
+	int m, double *scratch, double *x, double *y)
+{
+	const long nm = (long)n * m;
+	double *e1 = scratch, *e2 = scratch + nm;
+	for (int o = 0; o < m; ++o) KFN(apply2)(D2[o], g1, g2, n, e1 + (long)o * n, e2 + (long)o * n);
+	KFN(mkK2_DirRun)(s2, form, e1, e2, (int)nm, e1, e2);
+	for (int o = 0; o < m; ++o) {
+		const double (*A)[2] = M2[o];
+		const double *y1 = e1 + (long)o * n, *y2 = e2 + (long)o * n;
+		double *px = x + (long)o * n, *py = y + (long)o * n;
+		int i = 0;
+		for (; i + KW <= n; i += KW) {
+			KV a = KLOAD(y1 + i), b = KLOAD(y2 + i);
+			KV o1 = sigma * (A[0][0] * a + A[0][1] * b) + t2p[0];
+			KV o2 = sigma * (A[1][0] * a + A[1][1] * b) + t2p[1];
+			KSTORE(px + i, KLOAD(k1 + i) + o1);
+			KSTORE(py + i, KLOAD(k2 + i) + o2);
+		}
+		for (; i < n; ++i) {
+			double a = y1[i], b = y2[i];
+			double o1 = sigma * (A[0][0] * a + A[0][1] * b) + t2p[0];
+			double o2 = sigma * (A[1][0] * a + A[1][1] * b) + t2p[1];
+			px[i] = k1[i] + o1;
+			py[i] = k2[i] + o2;
+		}
+	}
+}
+
+void KFN(mkK3_PoseRun)(const KSHAPE3 *s2, int form, const double *const k[3], const double *const g[3], int n,
+	const double (*D2)[3][3], const double (*M2)[3][3], double sigma, const double *t2p, int m, double *scratch,
+	double *x, double *y, double *z)
+{
+	const long nm = (long)n * m;
+	double *e1 = scratch, *e2 = scratch + nm, *e3 = scratch + 2 * nm;
+	for (int o = 0; o < m; ++o)
+		KFN(apply3)(D2[o], g[0], g[1], g[2], n, e1 + (long)o * n, e2 + (long)o * n, e3 + (long)o * n);
+	KFN(mkK3_DirRun)(s2, form, e1, e2, e3, (int)nm, e1, e2, e3);
+	for (int o = 0; o < m; ++o) {
+		const double (*A)[3] = M2[o];
+		const double *y1 = e1 + (long)o * n, *y2 = e2 + (long)o * n, *y3 = e3 + (long)o * n;
+		double *px = x + (long)o * n, *py = y + (long)o * n, *pz = z + (long)o * n;
+		int i = 0;
+		for (; i + KW <= n; i += KW) {
+			KV a = KLOAD(y1 + i), b = KLOAD(y2 + i), c = KLOAD(y3 + i);
+			KSTORE(px + i, KLOAD(k[0] + i) + (sigma * KMV3(A, a, b, c, 0) + t2p[0]));
+			KSTORE(py + i, KLOAD(k[1] + i) + (sigma * KMV3(A, a, b, c, 1) + t2p[1]));
+			KSTORE(pz + i, KLOAD(k[2] + i) + (sigma * KMV3(A, a, b, c, 2) + t2p[2]));
+		}
+		for (; i < n; ++i) {
+			double a = y1[i], b = y2[i], c = y3[i];
+			px[i] = k[0][i] + (sigma * KMV3(A, a, b, c, 0) + t2p[0]);
+			py[i] = k[1][i] + (sigma * KMV3(A, a, b, c, 1) + t2p[1]);
+			pz[i] = k[2][i] + (sigma * KMV3(A, a, b, c, 2) + t2p[2]);
+		}
+	}
+}
+
+#endif /* KHALVES */

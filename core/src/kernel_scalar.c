@@ -19,6 +19,7 @@
 #define KLOAD(p) (*(p))
 #define KSTORE(p, v) (*(p) = (v))
 #define KFN(name) name##_scalar
+#define KHALVES 1
 
 #include "kernel_body.h"
 

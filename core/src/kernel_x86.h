@@ -61,5 +61,6 @@ static inline void mkX_store(double *p, mkXV v) { memcpy(p, &v, sizeof v); }
 #  define MK_X86_P 4
 #endif
 #define KP MK_X86_P
+#define KHALVES 1 /* the double builds have the halves of a batch */
 
 #include "kernel_body.h"

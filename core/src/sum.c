@@ -508,3 +508,138 @@ mkVec3 mkEllipse3_SumGradient(mkMat3 A1, mkMat3 A2, mkVec3 m)
 	mkVec3 r = {0.5 * b1.x + b2.x * s2, 0.5 * b1.y + b2.y * s2, 0.5 * b1.z + b2.z * s2};
 	return r;
 }
+
+/* ---- one body against many poses of another (kernel.h) ----------------------------- */
+
+static int one_options_ok(const mkSumOptions *o)
+{
+	return options_ok(o) && o->set == MK_SET_CONTACT && o->param == MK_PARAM_SURFACE
+		&& (o->form == MK_FORM_NORMAL || o->form == MK_FORM_GRADIENT) && o->precision == MK_PRECISION_DOUBLE;
+}
+
+mkResult mkKOne2_Init(mkKOne2 *w, mkBody2 b1, mkShape2 s2, const mkSumOptions *opt,
+	const double *ux, const double *uy, int n, double *buf)
+{
+	if (!one_options_ok(opt) || n < 0 || (n > 0 && (!ux || !uy || !buf))) return MK_ERR_ARGUMENT;
+	mkImpl impl = mkImpl_Resolve(opt->impl);
+	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	mkBody2 b2 = {s2, mkMat2_Identity(), {0.0, 0.0}};
+	plan2(&w->p, b1, b2, opt);
+	w->W = mkMat2_Transpose(mkMat2_Inverse(b1.M)); /* plan2's factor of D2 */
+	w->impl = impl;
+	w->n = n;
+	for (int d = 0; d < 2; ++d) {
+		w->k[d] = buf + (size_t)d * n;
+		w->g[d] = buf + (size_t)(2 + d) * n;
+	}
+	switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+	case MK_IMPL_AVX512: mkK2_SurfaceRun_avx512(&w->p.s1, ux, uy, n, w->k[0], w->k[1], w->g[0], w->g[1]); break;
+	case MK_IMPL_AVX2: mkK2_SurfaceRun_avx2(&w->p.s1, ux, uy, n, w->k[0], w->k[1], w->g[0], w->g[1]); break;
+#endif
+	default: mkK2_SurfaceRun_scalar(&w->p.s1, ux, uy, n, w->k[0], w->k[1], w->g[0], w->g[1]); break;
+	}
+	const mkKPlan2 *p = &w->p;
+	for (int i = 0; i < n; ++i) { /* block2's k1, k2 */
+		double x1 = w->k[0][i], x2 = w->k[1][i];
+		w->k[0][i] = p->t1[0] + (p->M1[0][0] * x1 + p->M1[0][1] * x2);
+		w->k[1][i] = p->t1[1] + (p->M1[1][0] * x1 + p->M1[1][1] * x2);
+	}
+	return MK_OK;
+}
+
+void mkKOne2_Run(const mkKOne2 *w, const mkMat2 *M2, int m, double *scratch, double *x, double *y)
+{
+	double D2[MK_KONE_POSES][2][2], A[MK_KONE_POSES][2][2];
+	const double sg = w->p.sigma;
+	assert(m >= 0 && m <= MK_KONE_POSES);
+	for (int o = 0; o < m; ++o) { /* plan2's D2 and M2 */
+		mkMat2 D = mkMat2_Mul(mkMat2_Transpose(M2[o]), w->W);
+		for (int i = 0; i < 2; ++i)
+			for (int j = 0; j < 2; ++j) { D2[o][i][j] = sg * D.m[i][j]; A[o][i][j] = M2[o].m[i][j]; }
+	}
+	const mkKPlan2 *p = &w->p;
+	switch (w->impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+	case MK_IMPL_AVX512:
+		mkK2_PoseRun_avx512(&p->s2, p->form, w->k[0], w->k[1], w->g[0], w->g[1], w->n,
+			(const double (*)[2][2])D2, (const double (*)[2][2])A, sg, p->t2p, m, scratch, x, y);
+		break;
+	case MK_IMPL_AVX2:
+		mkK2_PoseRun_avx2(&p->s2, p->form, w->k[0], w->k[1], w->g[0], w->g[1], w->n,
+			(const double (*)[2][2])D2, (const double (*)[2][2])A, sg, p->t2p, m, scratch, x, y);
+		break;
+#endif
+	default:
+		mkK2_PoseRun_scalar(&p->s2, p->form, w->k[0], w->k[1], w->g[0], w->g[1], w->n,
+			(const double (*)[2][2])D2, (const double (*)[2][2])A, sg, p->t2p, m, scratch, x, y);
+		break;
+	}
+}
+
+mkResult mkKOne3_Init(mkKOne3 *w, mkBody3 b1, mkShape3 s2, const mkSumOptions *opt,
+	const double *ux, const double *uy, const double *uz, int n, double *buf)
+{
+	if (!one_options_ok(opt) || n < 0 || (n > 0 && (!ux || !uy || !uz || !buf))) return MK_ERR_ARGUMENT;
+	mkImpl impl = mkImpl_Resolve(opt->impl);
+	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	mkBody3 b2 = {s2, mkMat3_Identity(), {0.0, 0.0, 0.0}};
+	plan3(&w->p, b1, b2, opt);
+	w->W = mkMat3_Transpose(mkMat3_Inverse(b1.M)); /* plan3's factor of D2 */
+	w->impl = impl;
+	w->n = n;
+	for (int d = 0; d < 3; ++d) {
+		w->k[d] = buf + (size_t)d * n;
+		w->g[d] = buf + (size_t)(3 + d) * n;
+	}
+	switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+	case MK_IMPL_AVX512:
+		mkK3_SurfaceRun_avx512(&w->p.s1, ux, uy, uz, n, w->k[0], w->k[1], w->k[2], w->g[0], w->g[1], w->g[2]);
+		break;
+	case MK_IMPL_AVX2:
+		mkK3_SurfaceRun_avx2(&w->p.s1, ux, uy, uz, n, w->k[0], w->k[1], w->k[2], w->g[0], w->g[1], w->g[2]);
+		break;
+#endif
+	default:
+		mkK3_SurfaceRun_scalar(&w->p.s1, ux, uy, uz, n, w->k[0], w->k[1], w->k[2], w->g[0], w->g[1], w->g[2]);
+		break;
+	}
+	const mkKPlan3 *p = &w->p;
+	for (int i = 0; i < n; ++i) { /* block3's k1, k2, k3 */
+		double x1 = w->k[0][i], x2 = w->k[1][i], x3 = w->k[2][i];
+		for (int d = 0; d < 3; ++d)
+			w->k[d][i] = p->t1[d] + (p->M1[d][0] * x1 + p->M1[d][1] * x2 + p->M1[d][2] * x3);
+	}
+	return MK_OK;
+}
+
+void mkKOne3_Run(const mkKOne3 *w, const mkMat3 *M2, int m, double *scratch, double *x, double *y, double *z)
+{
+	double D2[MK_KONE_POSES][3][3], A[MK_KONE_POSES][3][3];
+	const double sg = w->p.sigma;
+	assert(m >= 0 && m <= MK_KONE_POSES);
+	for (int o = 0; o < m; ++o) { /* plan3's D2 and M2 */
+		mkMat3 D = mkMat3_Mul(mkMat3_Transpose(M2[o]), w->W);
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j) { D2[o][i][j] = sg * D.m[i][j]; A[o][i][j] = M2[o].m[i][j]; }
+	}
+	const mkKPlan3 *p = &w->p;
+	const double *const k[3] = {w->k[0], w->k[1], w->k[2]}, *const g[3] = {w->g[0], w->g[1], w->g[2]};
+	switch (w->impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+	case MK_IMPL_AVX512:
+		mkK3_PoseRun_avx512(&p->s2, p->form, k, g, w->n, (const double (*)[3][3])D2, (const double (*)[3][3])A, sg,
+			p->t2p, m, scratch, x, y, z);
+		break;
+	case MK_IMPL_AVX2:
+		mkK3_PoseRun_avx2(&p->s2, p->form, k, g, w->n, (const double (*)[3][3])D2, (const double (*)[3][3])A, sg,
+			p->t2p, m, scratch, x, y, z);
+		break;
+#endif
+	default:
+		mkK3_PoseRun_scalar(&p->s2, p->form, k, g, w->n, (const double (*)[3][3])D2, (const double (*)[3][3])A, sg,
+			p->t2p, m, scratch, x, y, z);
+		break;
+	}
+}

@@ -146,14 +146,23 @@ typedef struct mkSceneXRun {
 	int param;
 	double error, seconds, cpu, checksum;
 	long points;
+	int worst_obstacle, worst_orientation;   /* the boundary of the largest error */
+	int ntop, top_obstacle[MK_SCENEX_TOP], top_orientation[MK_SCENEX_TOP]; /* the largest errors, largest first */
 } mkSceneXRun;
 
-static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkSceneXRun *out, char *msg,
-	size_t msglen)
+/* Orientations [begin, end) of the scene, or of its obstacle `only` alone
+ * (only >= 0). */
+static mkResult mkSceneX_RunPart(const mkScene *s, const mkCSpaceOptions *o, int only, int begin, int end,
+	mkSceneXRun *out, char *msg, size_t msglen)
 {
 	mkCSpaceResult r;
+	mkScene one = *s;
+	if (only >= 0) {
+		one.obstacles = s->obstacles + only;
+		one.obstacle_count = 1;
+	}
 	double t0 = mkClock_Wall(), c0 = mkCpuNow();
-	mkResult rc = mkCSpace_Run(s, o, 0, s->orientation_count, &r, msg, msglen);
+	mkResult rc = mkCSpace_Run(&one, o, begin, end, &r, msg, msglen);
 	out->seconds = mkClock_Wall() - t0;
 	out->cpu = mkCpuNow() - c0;
 	if (rc != MK_OK)
@@ -167,8 +176,31 @@ static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkS
 		out->checksum += r.checksum[b];
 	}
 	out->error = mkCSpaceResult_MaxError(&r);
+	long top[MK_SCENEX_TOP];
+	int nt = 0;
+	for (long b = 0; b < nb; ++b) { /* insertion into the list of the largest, first index on ties */
+		int k = nt < MK_SCENEX_TOP ? nt++ : MK_SCENEX_TOP;
+		while (k > 0 && r.error[b] > r.error[top[k - 1]]) {
+			if (k < MK_SCENEX_TOP) top[k] = top[k - 1];
+			--k;
+		}
+		if (k < MK_SCENEX_TOP) top[k] = b;
+	}
+	out->ntop = nt;
+	for (int k = 0; k < nt; ++k) {
+		out->top_obstacle[k] = only >= 0 ? only : (int)(top[k] / r.bounds % r.obstacles);
+		out->top_orientation[k] = begin + (int)(top[k] / r.bounds / r.obstacles);
+	}
+	out->worst_obstacle = out->top_obstacle[0];
+	out->worst_orientation = out->top_orientation[0];
 	mkCSpaceResult_Free(&r);
 	return MK_OK;
+}
+
+static mkResult mkSceneX_RunOnce(const mkScene *s, const mkCSpaceOptions *o, mkSceneXRun *out, char *msg,
+	size_t msglen)
+{
+	return mkSceneX_RunPart(s, o, -1, 0, s->orientation_count, out, msg, msglen);
 }
 
 /* The 1-minute load average (other processes take cores from a wall
@@ -210,45 +242,71 @@ static void mkSceneX_RowA(mkCsv *csv, const mkScene *s, double tol, const char *
 	mkSceneX_Row(csv, "A", mode, v);
 }
 
-/* The smallest uniform sampling whose worst-case error is at most target:
- * 2D n normals, doubling from 4 then bisecting; 3D splits 0, 1, ... The
- * search stops (capped) at 2D n = 65536, 3D 10 splits, or before a sampling
- * whose points (n or 4^s 4 + 2 per boundary) would exceed `budget`: *best
- * is then the last sampling tried, whose error is still above target. *best gets the run; returns 1 when
- * capped. */
-static int mkSceneX_Smallest(const mkScene *s, mkCSpaceOptions *o, double target, long budget, mkSceneXRun *best,
+/* Points of one boundary at uniform level L: 2D L normals, 3D the
+ * octahedron split L times. */
+static double mkSceneX_Per(int three, int L) { return three ? 4.0 * pow(4.0, L) + 2.0 : (double)L; }
+
+/* The smallest uniform sampling whose worst-case error over the scene is at
+ * most target, every level tried in turn: 2D n = 4, 5, 6, ... normals (the
+ * sets of normals are not nested, and the error is not monotone in n), 3D
+ * splits 0, 1, 2, ... A level fails as soon as one boundary exceeds
+ * target, so each level is first tried on the boundaries that failed at
+ * the last whole-scene run (its MK_SCENEX_TOP largest errors), and the
+ * whole scene runs only where all of those pass: the result is confirmed
+ * on every boundary, and every smaller level failed on some boundary. The
+ * search stops (capped) before a whole-scene run of more than `budget`
+ * points, or past the largest level (2D n = 2^22, 3D 10 splits): *best is
+ * then the largest level tried, which failed (as did all below it), with
+ * the points the whole scene would have there and the error of its failing
+ * boundary (a lower bound of the scene's error at that level; seconds, CPU
+ * seconds and checksum NaN when only that boundary was run). Returns 1
+ * when capped. */
+static int mkSceneX_Smallest(const mkScene *s, mkCSpaceOptions *o, double target, double budget, mkSceneXRun *best,
 	mkResult *rc, char *msg, size_t msglen)
 {
-	mkSceneXRun cur;
+	mkSceneXRun cur, fail;
 	o->mode = MK_CSPACE_UNIFORM;
 	*rc = MK_OK;
-	int three = s->dim == 3, lo = three ? -1 : 3, hi = three ? 0 : 4;
-	long nb = (long)s->obstacle_count * s->orientation_count;
-	for (;;) {
-		o->uniform = hi;
-		if ((*rc = mkSceneX_RunOnce(s, o, best, msg, msglen)) != MK_OK)
-			return 0;
-		if (best->error <= target)
-			break;
-		int next = three ? hi + 1 : 2 * hi;
-		double per = three ? 4.0 * pow(4.0, next) + 2.0 : (double)next;
-		if (next > (three ? 10 : 65536) || per * (double)nb > (double)budget)
+	int three = s->dim == 3, L = three ? 0 : 4, nf = 0, fo[MK_SCENEX_TOP], fr[MK_SCENEX_TOP];
+	double nb = (double)s->obstacle_count * s->orientation_count;
+	memset(&fail, 0, sizeof fail);
+	for (;; L = L + 1) {
+		if (L > (three ? 10 : 1 << 22)) {
+			*best = fail;
 			return 1;
-		lo = hi;
-		hi = next;
-	}
-	while (hi - lo > 1) {
-		o->uniform = (lo + hi) / 2;
+		}
+		o->uniform = L;
+		int failed = 0;
+		for (int k = 0; k < nf && !failed; ++k) { /* the last failing boundaries first */
+			if ((*rc = mkSceneX_RunPart(s, o, fo[k], fr[k], fr[k] + 1, &cur, msg, msglen)) != MK_OK)
+				return 0;
+			if (cur.error > target) {
+				failed = 1;
+				fail = cur;
+				fail.points = (long)(nb * mkSceneX_Per(three, L));
+				fail.seconds = fail.cpu = fail.checksum = NAN;
+			}
+		}
+		if (failed)
+			continue;
+		if (nf > 0 && nb * mkSceneX_Per(three, L) > budget) {
+			*best = fail; /* capped: the confirming run is too large */
+			return 1;
+		}
 		if ((*rc = mkSceneX_RunOnce(s, o, &cur, msg, msglen)) != MK_OK)
 			return 0;
 		if (cur.error <= target) {
-			hi = o->uniform;
 			*best = cur;
-		} else {
-			lo = o->uniform;
+			return 0;
+		}
+		fail = cur;
+		nf = 0;
+		for (int k = 0; k < cur.ntop; ++k) {
+			fo[nf] = cur.top_obstacle[k];
+			fr[nf] = cur.top_orientation[k];
+			++nf;
 		}
 	}
-	return 0;
 }
 
 mkResult mkSceneX_Compare(const mkScene *s, double tol, int threads, mkCsv *csv, char *msg, size_t msglen)
@@ -263,7 +321,8 @@ mkResult mkSceneX_Compare(const mkScene *s, double tol, int threads, mkCsv *csv,
 	if (rc != MK_OK)
 		return rc;
 	ad.param = -1;
-	int capped = mkSceneX_Smallest(s, &o, ad.error, 10 * ad.points, &un, &rc, msg, msglen);
+	int capped = mkSceneX_Smallest(s, &o, ad.error, s->dim == 3 ? MK_SCENEX_BUDGET3 : MK_SCENEX_BUDGET2, &un, &rc,
+		msg, msglen);
 	if (rc != MK_OK)
 		return rc;
 	mkSceneX_RowA(csv, s, tol, "adaptive", threads, &ad, tol, 0, 1.0);

@@ -7,10 +7,15 @@
  * error E over the scene (every obstacle, every orientation), then the
  * smallest uniform sampling (2D: n normals 2 pi k / n; 3D: octahedron
  * splits) whose worst-case certified error is at most E, its points and
- * time. factor = uniform points / adaptive points. A uniform search that
- * reaches its cap (2D n = 65536, 3D 10 splits, or a next sampling of more
- * than 10 times the adaptive points) is marked capped = 1: its row is the last sampling tried,
- * whose error is still above the target, and its factor a lower bound.
+ * time. factor = uniform points / adaptive points. The search climbs on
+ * the boundary that failed last and confirms a level on the whole scene
+ * only where that boundary passes. A search that would need a whole-scene
+ * run of more than MK_SCENEX_BUDGET2/3 points, or a level past 2D
+ * n = 2^22 / 3D 10 splits, is marked capped = 1: its row is the largest
+ * level known to fail (param), the points the whole scene would use there,
+ * the error of the failing boundary (so a lower bound of the scene's), no
+ * times or checksum when only that boundary ran, and its factor a lower
+ * bound.
  *
  * Scenes are drawn like the paper's C-obstacle experiment (Sec. 7.1):
  *  2D robot a ~ U(0,5), b ~ U(0,3), eps ~ U(0,1); obstacles a, b ~ U(0,10),
@@ -45,6 +50,14 @@
 
 #define MK_SCENEX_SCHEMA 1
 #define MK_SCENEX_MAX 16
+/* Part A: the most points a whole-scene uniform run may use (2D, 3D) */
+#define MK_SCENEX_BUDGET2 1e8
+#define MK_SCENEX_BUDGET3 6e7
+/* Part A: failing boundaries tried first at the next level */
+#define MK_SCENEX_TOP 16
+/* Part B levels whose 1-thread run is shorter (seconds) have no meaningful
+ * parallel efficiency: thread start-up is a visible part of them */
+#define MK_SCENEX_TINY_S 0.1
 
 extern const char *const mkSceneX_Columns[];
 

@@ -49,8 +49,10 @@ typedef enum mkCSpaceMode {
 	MK_CSPACE_UNIFORM = 1,
 	/* the paper's sampling, not certified (error NaN), inner only: B1's
 	 * surface parameters (mkSample2_Angles(uniform) or mkSample3_Grid(uniform))
-	 * through mkSum*_Batch with the options' form and kernel; Table 2's
-	 * timing. No faces in 3D. */
+	 * with the options' form and kernel, the points bit for bit those of
+	 * one mkSum*_Batch call per obstacle and orientation (the obstacle's
+	 * half computed once for many orientations); Table 2's timing. No
+	 * faces in 3D. */
 	MK_CSPACE_PAPER = 2
 } mkCSpaceMode;
 
@@ -79,7 +81,8 @@ typedef struct mkCSpaceResult {
 	int *count;              /* points of each boundary */
 	double *error;           /* certified Hausdorff bound incl. model error (NaN: paper mode) */
 	double *model_error;     /* the model part of it (robot's + obstacle's) */
-	double *seconds;         /* wall time of each (orientation, obstacle) task, on its bound 0 entry */
+	double *seconds;         /* wall time of each (orientation, obstacle) task, on its bound 0 entry
+	                          * (paper mode: a task's time shared equally by its orientations) */
 	double *checksum;        /* sum of every coordinate of the boundary (also with store = 0) */
 	/* store = 1: the points of boundary b are first[b] .. first[b+1]-1 */
 	long *first;

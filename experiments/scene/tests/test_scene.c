@@ -13,7 +13,10 @@
  *    adaptive one (or the row says capped); factor = the points ratio; and
  *    the uniform parameter is checked independently: per boundary,
  *    mkCObstacle2_Uniform at that n (single-boundary code, not the scene
- *    run) gives errors whose maximum is the row's error. */
+ *    run) gives errors whose maximum is the row's error, and at n - 1 some
+ *    boundary is above the adaptive error (the smallest n).
+ *  - Part A on a small 3D scene at T = 0.05: likewise with
+ *    mkCObstacle3_Uniform at the row's splits s and s - 1. */
 #include "scene.h"
 
 #include <math.h>
@@ -92,6 +95,58 @@ static void mkTestCompare(const char *dir)
 			free(y);
 		}
 	ENSURE_NEAR(worst, mkTable_Num(&t, 1, ce), 1e-12 * worst);
+	/* the smallest: one normal fewer leaves some boundary above the target */
+	double below = 0.0;
+	for (int o = 0; o < s.orientation_count && n > 4; ++o)
+		for (int i = 0; i < s.obstacle_count; ++i) {
+			mkBody2 rob = s.robot.spec.body2;
+			rob.M = mkMat2_Mul(mkMat2_Rotation(s.headings[o]), rob.M);
+			double *x = NULL, *y = NULL, err = NAN;
+			int cap = 0, cnt = 0;
+			ENSURE(mkCObstacle2_Uniform(s.obstacles[i].spec.body2, rob, MK_BOUND_INNER, n - 1, MK_IMPL_AUTO, &x, &y,
+				&cap, &cnt, &err) == MK_OK);
+			below = err > below ? err : below;
+			free(x);
+			free(y);
+		}
+	ENSURE(n == 4 || below > mkTable_Num(&t, 0, ce));
+	mkTable_Free(&t);
+	mkScene_Free(&s);
+}
+
+/* 3D: the uniform row's splits s reach the adaptive error on every
+ * boundary and s - 1 does not on some, both checked per boundary with
+ * mkCObstacle3_Uniform (single-boundary code, not the scene run). */
+static void mkTestCompare3(const char *dir)
+{
+	static const char text[] = "dim 3\nrobot superquadric a=1 b=0.6 c=0.8 eps1=0.5 eps2=0.8\n"
+		"obstacle superquadric a=2 b=1 c=1.5 eps1=0.3 eps2=1.2 at=5,0,0\n"
+		"obstacle ellipsoid a=1 b=2 c=0.5 at=-4,1,0\nquaternions 1,0,0,0; 0.8,0.6,0,0\n";
+	mkScene s;
+	char msg[512];
+	ENSURE(mkScene_Parse(text, &s, msg, sizeof msg) == MK_OK || (printf("%s\n", msg), 0));
+	mkTable t = mkRunRows(dir, "a3.csv", &s, 0, 0.05);
+	int ce = mkTable_Col(&t, "error"), cp = mkTable_Col(&t, "param"), cc = mkTable_Col(&t, "capped");
+	ENSURE(mkTable_Num(&t, 1, cc) == 0);
+	int splits = (int)mkTable_Num(&t, 1, cp);
+	double worst[2] = { 0.0, 0.0 };
+	for (int k = 0; k < 2 && splits >= 1; ++k)
+		for (int o = 0; o < s.orientation_count; ++o)
+			for (int i = 0; i < s.obstacle_count; ++i) {
+				mkBody3 rob = s.robot.spec.body3;
+				rob.M = mkMat3_Mul(mkScene3_Orientation(&s, o), rob.M);
+				double *x = NULL, *y = NULL, *z = NULL, err = NAN;
+				int cap = 0, cnt = 0, fcap = 0, fcount = 0;
+				ENSURE(mkCObstacle3_Uniform(s.obstacles[i].spec.body3, rob, MK_BOUND_INNER, splits - k, MK_IMPL_AUTO,
+					&x, &y, &z, &cap, NULL, &fcap, &cnt, &fcount, &err) == MK_OK);
+				worst[k] = err > worst[k] ? err : worst[k];
+				free(x);
+				free(y);
+				free(z);
+			}
+	ENSURE(splits >= 1);
+	ENSURE_NEAR(worst[0], mkTable_Num(&t, 1, ce), 1e-12 * worst[0]);
+	ENSURE(worst[1] > mkTable_Num(&t, 0, ce));
 	mkTable_Free(&t);
 	mkScene_Free(&s);
 }
@@ -102,6 +157,7 @@ int main(int argc, char **argv)
 	if (argc == 2) {
 		mkTestTable2(argv[1]);
 		mkTestCompare(argv[1]);
+		mkTestCompare3(argv[1]);
 	}
 	return mk_summary("scene.rows");
 }
