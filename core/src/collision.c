@@ -625,6 +625,19 @@ static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][
 	A[1][1] += st->f;
 }
 
+/* Convergence test (d) of a Newton step with predicted gain pred at a
+ * point with value f and residual res (|g|): the step cannot be verified,
+ * since its gain is below the noise of f (the level under which the
+ * step acceptance tests treat gains as rounding), and the witness points'
+ * certificate gap |p2 - p1| - |f|, about res^2 / (2 |f|) there, is at most
+ * 1e-13 of the scale. The gradient may then be above the tolerance (up
+ * to about 1e-7 of the scale): f is converged, evaluating the step would
+ * only confirm it. */
+static int mkNormal_Settled(double pred, double res, double f, double scale)
+{
+	return pred <= 64.0 * DBL_EPSILON * (fabs(f) + scale) && res * res <= 2e-13 * scale * fabs(f);
+}
+
 /* Solves (C + (beta - f) n n^T) z = g for the tangent-plane Newton step of a
  * pair of ellipsoids in 3D form: C = J1 + J2 + f I has n as an eigenvector
  * (eigenvalue f), so the shifted matrix keeps the tangent plane invariant and
@@ -703,7 +716,7 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
 			break;
 		*iters += 1;
 		double pred = 0.5 * mkVec3_Dot(gr, z);
-		if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
+		if (zlen <= 1e-14 || pred <= 1e-17 * c->scale || mkNormal_Settled(pred, *res, f, c->scale)) {
 			done = 1;
 			break;
 		}
@@ -778,8 +791,8 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			*iters += 1;
 			double slope = cur->g[0] * z0 + cur->g[1] * z1; /* g.z > 0: an ascent direction */
 			double pred = 0.5 * slope;
-			if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
-				/* The convergence test (b) of the trust region below. */
+			if (zlen <= 1e-14 || pred <= 1e-17 * c->scale || mkNormal_Settled(pred, *res, cur->f, c->scale)) {
+				/* The convergence tests (b), (d) of the trust region below. */
 				done = 1;
 				break;
 			}
@@ -823,10 +836,11 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 		double s[2];
 		double pred = mkTrustStep(st->g, A, radius, s);
 		double slen = mkLen2(s[0], s[1]);
-		if (slen < radius && (slen <= 1e-14 || pred <= 1e-17 * c->scale)) {
-			/* An interior Newton step that cannot move the normal by more
-			 * than rounding, or gain more than 1e-17 of the scale: the
-			 * gradient is at its rounding floor (|Hessian| eps). */
+		if (slen < radius && (slen <= 1e-14 || pred <= 1e-17 * c->scale || mkNormal_Settled(pred, *res, st->f, c->scale))) {
+			/* (b) An interior Newton step that cannot move the normal by
+			 * more than rounding, or gain more than 1e-17 of the scale: the
+			 * gradient is at its rounding floor (|Hessian| eps); or (d)
+			 * mkNormal_Settled. */
 			return 1;
 		}
 		mkVec3 m = mkVec3_Add(st->n, mkVec3_Add(mkVec3_Scale(st->t1, s[0]), mkVec3_Scale(st->t2, s[1])));
