@@ -716,7 +716,10 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
 			break;
 		*iters += 1;
 		double pred = 0.5 * mkVec3_Dot(gr, z);
-		if (zlen <= 1e-14 || pred <= 1e-17 * c->scale || mkNormal_Settled(pred, *res, f, c->scale)) {
+		if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
+			/* (test (d) of mkNormal_Settled is not used here: an
+			 * ellipsoid evaluation costs little, and the distances stay
+			 * within a few ulps of the scale) */
 			done = 1;
 			break;
 		}
