@@ -63,6 +63,21 @@ static double mkLen2(double a, double b)
 	return sqrt(a * a + b * b);
 }
 
+/* mkVec3_Length and mkVec3_Normalize (geom.c) as inline copies for the
+ * solver's loops, where the calls showed in profiles. The same arithmetic. */
+static inline double mkLen3(mkVec3 a)
+{
+	return sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+}
+
+static inline mkVec3 mkNormalize3(mkVec3 a)
+{
+	double n = mkLen3(a);
+	if (!(n > 0.0) || !isfinite(n))
+		return mkVec3_Make(NAN, NAN, NAN);
+	return mkVec3_Scale(a, 1.0 / n);
+}
+
 /* ---- the support map with its Jacobian ------------------------------------ */
 
 /* The l_q norm of a pair (u, v), u, v >= 0, not both 0: the norm, the ratios
@@ -80,71 +95,14 @@ static double mkCurv(double w, double r, double q)
 	return q > 2.0 ? 0.0 : q == 2.0 ? 1.0 : MK_CURV_MAX;
 }
 
-/* iq = 1 / q. With the ratio k/m of the smaller to the larger component and
- * t = (k/m)^q: |v|_q = m (1 + t)^(1/q), r_m = (1 + t)^(-1/q), r_k = (k/m) r_m,
- * w_m = r_m^(q-1) = (1 + t)^(1/q) / (1 + t), w_k = (t / (k/m)) w_m. log(1 + t)
- * (t in [0, 1]) carries an absolute error of an ulp of 1, which is all the
- * exponential that follows needs, so log1p is not called. */
-static mkPairNorm mkPair(double u, double v, double q, double iq)
-{
-	mkPairNorm p;
-	int big = u >= v ? 0 : 1;
-	double m = big == 0 ? u : v, k = big == 0 ? v : u;
-	if (m == 0.0) {
-		/* Both zero (a direction along the other axis): any unit pair works
-		 * for the gradient, since the outer weight multiplies it by 0. */
-		p.norm = 0.0;
-		p.r[0] = 1.0; p.r[1] = 0.0;
-		p.w[0] = 1.0; p.w[1] = 0.0;
-		return p;
-	}
-	double ratio = k / m;
-	double t = ratio > 0.0 ? exp(q * log(ratio)) : 0.0;
-	double opt = 1.0 + t;
-	double irm = exp(iq * log(opt)); /* 1 / r_m */
-	double rm = 1.0 / irm;
-	double wm = irm / opt;
-	p.norm = m * irm;
-	p.r[big] = rm;
-	p.r[1 - big] = ratio * rm;
-	p.w[big] = wm;
-	p.w[1 - big] = ratio > 0.0 ? t / ratio * wm : 0.0;
-	return p;
-}
-
-/* Two pair norms at once, step by step in lock-step: the four
- * transcendental calls of one pair norm form a chain (each needs the one
- * before), so interleaving two independent chains lets the processor overlap
- * them. The same arithmetic as mkPair. */
-static void mkPair2(const double u[2], const double v[2], const double q[2], const double iq[2], mkPairNorm p[2])
-{
-	double m[2], ratio[2], t[2], opt[2], irm[2], L[2];
-	int big[2];
-	for (int l = 0; l < 2; ++l) {
-		big[l] = u[l] >= v[l] ? 0 : 1;
-		m[l] = big[l] == 0 ? u[l] : v[l];
-		double k = big[l] == 0 ? v[l] : u[l];
-		ratio[l] = m[l] > 0.0 ? k / m[l] : 0.0;
-	}
-	for (int l = 0; l < 2; ++l)
-		L[l] = ratio[l] > 0.0 ? log(ratio[l]) : 0.0;
-	for (int l = 0; l < 2; ++l)
-		t[l] = ratio[l] > 0.0 ? exp(q[l] * L[l]) : 0.0;
-	for (int l = 0; l < 2; ++l) {
-		opt[l] = 1.0 + t[l];
-		L[l] = log(opt[l]);
-	}
-	for (int l = 0; l < 2; ++l)
-		irm[l] = exp(iq[l] * L[l]);
-	for (int l = 0; l < 2; ++l) {
-		double rm = 1.0 / irm[l], wm = irm[l] / opt[l];
-		p[l].norm = m[l] * irm[l];
-		p[l].r[big[l]] = rm;
-		p[l].r[1 - big[l]] = ratio[l] * rm;
-		p[l].w[big[l]] = wm;
-		p[l].w[1 - big[l]] = ratio[l] > 0.0 ? t[l] / ratio[l] * wm : 0.0;
-	}
-}
+/* Each pair norm (iq = 1 / q): with the ratio k/m of the smaller to the
+ * larger component and t = (k/m)^q: |v|_q = m (1 + t)^(1/q),
+ * r_m = (1 + t)^(-1/q), r_k = (k/m) r_m, w_m = r_m^(q-1) = (1 + t)^(1/q) / (1 + t),
+ * w_k = (t / (k/m)) w_m. log(1 + t) (t in [0, 1]) carries an absolute error
+ * of an ulp of 1, which is all the exponential that follows needs, so
+ * log1p is not called. A pair (0, 0) (a direction along the other axis)
+ * gets the norm 0 and the unit pair r = w = (1, 0): the outer weight
+ * multiplies its gradient by 0. */
 
 /* A placed body's constants for the loop: P = M diag(a, b, c), so that the
  * canonical argument is p = P^T y and the support point P grad N(p); for an
@@ -174,6 +132,86 @@ static void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
 		k->q2 = 2.0 / (2.0 - b->shape.eps2);
 		k->iq1 = 1.0 - 0.5 * b->shape.eps1;
 		k->iq2 = 1.0 - 0.5 * b->shape.eps2;
+	}
+}
+
+/* The nested norms |(|(u, v)|_q2, w)|_q1 of nl = 1 or 2 bodies, each pair
+ * norm as described above (mkPairNorm), two bodies in lock-step (the libm calls of one body form
+ * dependency chains; interleaving the two bodies' lets the processor
+ * overlap them, which halved a pair evaluation) and, within a body, the inner and outer chains
+ * overlapped: the outer pair's log ratio is
+ *   log(N_in / w) = log(m_in / w) + log(1 + t_in) / q2
+ * (N_in = m_in (1 + t_in)^(1/q2)), so the outer exponential need not wait
+ * for the inner norm's. The longest chain per body is six libm calls
+ * instead of eight, the count unchanged (log(m_in / w) replaces
+ * log(k_out / m_out)). Both terms of the sum are small logarithms of
+ * quantities carrying a few ulps, as the ratio k/m of mkPair does, so
+ * t_out is as accurate as there. The outputs are those of mkPair for
+ * (u, v) and for (N_in, w) (in the order of the arguments), the larger of
+ * the outer pair chosen by the sign of log(N_in / w). */
+static inline void mkNested(int nl, const double u[2], const double v[2], const double w[2], const mkSupBody *const b[2],
+	mkPairNorm in[2], mkPairNorm out[2])
+{
+	double m[2], ratio[2], L[2], Lc[2], t[2], opt[2], irm[2], lr[2], to[2], opto[2], irmo[2];
+	int big[2];
+	for (int l = 0; l < nl; ++l) {
+		big[l] = u[l] >= v[l] ? 0 : 1;
+		m[l] = big[l] == 0 ? u[l] : v[l];
+		double k = big[l] == 0 ? v[l] : u[l];
+		ratio[l] = m[l] > 0.0 ? k / m[l] : 0.0;
+	}
+	for (int l = 0; l < nl; ++l) {
+		L[l] = ratio[l] > 0.0 ? log(ratio[l]) : 0.0;
+		/* log(m_in / w); +-inf when one of them is 0 (or the quotient
+		 * leaves the double range: t_out is then 0 either way) */
+		Lc[l] = m[l] > 0.0 && w[l] > 0.0 ? log(m[l] / w[l]) : m[l] > 0.0 ? INFINITY : -INFINITY;
+	}
+	for (int l = 0; l < nl; ++l)
+		t[l] = ratio[l] > 0.0 ? exp(b[l]->q2 * L[l]) : 0.0;
+	for (int l = 0; l < nl; ++l) {
+		opt[l] = 1.0 + t[l];
+		L[l] = log(opt[l]);
+	}
+	for (int l = 0; l < nl; ++l) {
+		irm[l] = exp(b[l]->iq2 * L[l]);
+		lr[l] = Lc[l] + b[l]->iq2 * L[l]; /* log(N_in / w) */
+		to[l] = isfinite(lr[l]) ? exp(-b[l]->q1 * fabs(lr[l])) : 0.0;
+	}
+	for (int l = 0; l < nl; ++l) {
+		opto[l] = 1.0 + to[l];
+		irmo[l] = exp(b[l]->iq1 * log(opto[l]));
+	}
+	for (int l = 0; l < nl; ++l) {
+		mkPairNorm *p = &in[l];
+		if (m[l] == 0.0) {
+			/* as mkPair: any unit pair, the outer weight multiplies it by 0 */
+			p->norm = 0.0;
+			p->r[0] = 1.0; p->r[1] = 0.0;
+			p->w[0] = 1.0; p->w[1] = 0.0;
+		} else {
+			double rm = 1.0 / irm[l], wm = irm[l] / opt[l];
+			p->norm = m[l] * irm[l];
+			p->r[big[l]] = rm;
+			p->r[1 - big[l]] = ratio[l] * rm;
+			p->w[big[l]] = wm;
+			p->w[1 - big[l]] = ratio[l] > 0.0 ? t[l] / ratio[l] * wm : 0.0;
+		}
+		p = &out[l];
+		int bo = lr[l] >= 0.0 ? 0 : 1; /* N_in >= w: the first is the larger */
+		double mo = bo == 0 ? in[l].norm : w[l], ko = bo == 0 ? w[l] : in[l].norm;
+		if (mo == 0.0) {
+			p->norm = 0.0;
+			p->r[0] = 1.0; p->r[1] = 0.0;
+			p->w[0] = 1.0; p->w[1] = 0.0;
+			continue;
+		}
+		double ro = ko / mo;
+		double rm = 1.0 / irmo[l], wm = irmo[l] / opto[l];
+		p->norm = mo * irmo[l];
+		p->r[bo] = rm;
+		p->r[1 - bo] = ro * rm;
+		p->w[bo] = wm;
+		p->w[1 - bo] = ro > 0.0 ? to[l] / ro * wm : 0.0;
 	}
 }
 
@@ -207,8 +245,12 @@ static void mkSupBody_Eval(const mkSupBody *b, mkVec3 y, mkSupAt *a)
 	a->sg[0] = p0 < 0.0 ? -1.0 : 1.0;
 	a->sg[1] = p1 < 0.0 ? -1.0 : 1.0;
 	a->sg[2] = p2 < 0.0 ? -1.0 : 1.0;
-	a->in = mkPair(fabs(p0), fabs(p1), b->q2, b->iq2);
-	a->out = mkPair(a->in.norm, fabs(p2), b->q1, b->iq1);
+	const mkSupBody *bb[2] = { b, b };
+	double u[2] = { fabs(p0), 0.0 }, v[2] = { fabs(p1), 0.0 }, w[2] = { fabs(p2), 0.0 };
+	mkPairNorm in[2], out[2];
+	mkNested(1, u, v, w, bb, in, out);
+	a->in = in[0];
+	a->out = out[0];
 	double g0 = a->out.w[0] * a->sg[0] * a->in.w[0];
 	double g1 = a->out.w[0] * a->sg[1] * a->in.w[1];
 	double g2 = a->sg[2] * a->out.w[1];
@@ -347,13 +389,13 @@ typedef struct mkPairAt {
 	double H;
 } mkPairAt;
 
-/* Both superquadrics' support at y1 and y2, the pair norms in lock-step. */
+/* Both superquadrics' support at y1 and y2 (mkNested). */
 static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const mkSupBody *b2, mkVec3 y2, mkSupAt *a2)
 {
 	const mkSupBody *b[2] = { b1, b2 };
 	mkSupAt *a[2] = { a1, a2 };
 	mkVec3 y[2] = { y1, y2 };
-	double p[2][3], u[2], v[2], q[2], iq[2];
+	double p[2][3], u[2], v[2], w[2];
 	mkPairNorm in[2], out[2];
 	for (int l = 0; l < 2; ++l) {
 		const double (*P)[3] = b[l]->P;
@@ -363,17 +405,9 @@ static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const m
 		}
 		u[l] = fabs(p[l][0]);
 		v[l] = fabs(p[l][1]);
-		q[l] = b[l]->q2;
-		iq[l] = b[l]->iq2;
+		w[l] = fabs(p[l][2]);
 	}
-	mkPair2(u, v, q, iq, in);
-	for (int l = 0; l < 2; ++l) {
-		u[l] = in[l].norm;
-		v[l] = fabs(p[l][2]);
-		q[l] = b[l]->q1;
-		iq[l] = b[l]->iq1;
-	}
-	mkPair2(u, v, q, iq, out);
+	mkNested(2, u, v, w, b, in, out);
 	for (int l = 0; l < 2; ++l) {
 		const double (*P)[3] = b[l]->P;
 		mkSupAt *A = a[l];
@@ -541,7 +575,7 @@ static double mkNormal_Value(const mkPairCtx *c, mkVec3 n)
  * at m = normalize(n + t e): <P_m e, d - x(m)> (up to a positive factor). */
 static double mkNormal_Slope(const mkPairCtx *c, mkVec3 n, mkVec3 e, double t)
 {
-	mkVec3 m = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, t)));
+	mkVec3 m = mkNormalize3(mkVec3_Add(n, mkVec3_Scale(e, t)));
 	mkPairAt pe;
 	mkPair_Eval(c, m, &pe);
 	mkVec3 r = mkVec3_Sub(c->d, pe.x);
@@ -574,8 +608,8 @@ static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, 
 		else
 			hi = mid;
 	}
-	mkVec3 nlo = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, lo)));
-	mkVec3 nhi = mkVec3_Normalize(mkVec3_Add(n, mkVec3_Scale(e, hi)));
+	mkVec3 nlo = mkNormalize3(mkVec3_Add(n, mkVec3_Scale(e, lo)));
+	mkVec3 nhi = mkNormalize3(mkVec3_Add(n, mkVec3_Scale(e, hi)));
 	double flo = mkNormal_Value(c, nlo), fhi = mkNormal_Value(c, nhi);
 	mkVec3 nb = fhi > flo ? nhi : nlo;
 	if (fmax(flo, fhi) >= st->f)
@@ -589,6 +623,19 @@ static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][
 	mkPair_Tangent(c, &st->e, st->t1, st->t2, A);
 	A[0][0] += st->f;
 	A[1][1] += st->f;
+}
+
+/* Convergence test (d) of a Newton step with predicted gain pred at a
+ * point with value f and residual res (|g|): the step cannot be verified,
+ * since its gain is below the noise of f (the level under which the
+ * step acceptance tests treat gains as rounding), and the witness points'
+ * certificate gap |p2 - p1| - |f|, about res^2 / (2 |f|) there, is at most
+ * 1e-13 of the scale. The gradient may then be above the tolerance (up
+ * to about 1e-7 of the scale): f is converged, evaluating the step would
+ * only confirm it. */
+static int mkNormal_Settled(double pred, double res, double f, double scale)
+{
+	return pred <= 64.0 * DBL_EPSILON * (fabs(f) + scale) && res * res <= 2e-13 * scale * fabs(f);
 }
 
 /* Solves (C + (beta - f) n n^T) z = g for the tangent-plane Newton step of a
@@ -670,6 +717,9 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
 		*iters += 1;
 		double pred = 0.5 * mkVec3_Dot(gr, z);
 		if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
+			/* (test (d) of mkNormal_Settled is not used here: an
+			 * ellipsoid evaluation costs little, and the distances stay
+			 * within a few ulps of the scale) */
 			done = 1;
 			break;
 		}
@@ -744,8 +794,8 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			*iters += 1;
 			double slope = cur->g[0] * z0 + cur->g[1] * z1; /* g.z > 0: an ascent direction */
 			double pred = 0.5 * slope;
-			if (zlen <= 1e-14 || pred <= 1e-17 * c->scale) {
-				/* The convergence test (b) of the trust region below. */
+			if (zlen <= 1e-14 || pred <= 1e-17 * c->scale || mkNormal_Settled(pred, *res, cur->f, c->scale)) {
+				/* The convergence tests (b), (d) of the trust region below. */
 				done = 1;
 				break;
 			}
@@ -756,7 +806,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			int taken = 0;
 			for (int k = 0; k < MK_BACKTRACK; ++k, t *= 0.5) {
 				mkVec3 m = mkVec3_Add(cur->n, mkVec3_Add(mkVec3_Scale(cur->t1, t * z0), mkVec3_Scale(cur->t2, t * z1)));
-				mkNormal_Eval(c, mkVec3_Normalize(m), nxt);
+				mkNormal_Eval(c, mkNormalize3(m), nxt);
 				double gain = nxt->f - cur->f;
 				if (t * slope > noise ? gain >= 1e-4 * t * slope : gain >= -noise) {
 					taken = 1;
@@ -789,16 +839,17 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 		double s[2];
 		double pred = mkTrustStep(st->g, A, radius, s);
 		double slen = mkLen2(s[0], s[1]);
-		if (slen < radius && (slen <= 1e-14 || pred <= 1e-17 * c->scale)) {
-			/* An interior Newton step that cannot move the normal by more
-			 * than rounding, or gain more than 1e-17 of the scale: the
-			 * gradient is at its rounding floor (|Hessian| eps). */
+		if (slen < radius && (slen <= 1e-14 || pred <= 1e-17 * c->scale || mkNormal_Settled(pred, *res, st->f, c->scale))) {
+			/* (b) An interior Newton step that cannot move the normal by
+			 * more than rounding, or gain more than 1e-17 of the scale: the
+			 * gradient is at its rounding floor (|Hessian| eps); or (d)
+			 * mkNormal_Settled. */
 			return 1;
 		}
 		mkVec3 m = mkVec3_Add(st->n, mkVec3_Add(mkVec3_Scale(st->t1, s[0]), mkVec3_Scale(st->t2, s[1])));
 		/* The trial point is evaluated in full: most steps are taken. */
 		mkNormalState trial;
-		mkNormal_Eval(c, mkVec3_Normalize(m), &trial);
+		mkNormal_Eval(c, mkNormalize3(m), &trial);
 		double gain = trial.f - st->f;
 		/* Within rounding of f the ratio means nothing: a step whose
 		 * predicted gain is below it is taken when it does not lose. */
@@ -869,7 +920,7 @@ static double mkScale(const mkBody3 *b1, const mkBody3 *b2)
 		double big = s.a > s.b ? s.a : s.b;
 		r[k] = (big > s.c ? big : s.c) * sqrt(fro);
 	}
-	return mkVec3_Length(mkVec3_Sub(b2->t, b1->t)) + r[0] + r[1];
+	return mkLen3(mkVec3_Sub(b2->t, b1->t)) + r[0] + r[1];
 }
 
 double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
@@ -879,7 +930,7 @@ double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
 
 double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n)
 {
-	mkVec3 u = mkVec3_Normalize(n);
+	mkVec3 u = mkNormalize3(n);
 	mkBody3 c1 = b1, c2 = b2;
 	c1.t = c2.t = mkVec3_Make(0.0, 0.0, 0.0);
 	return mkVec3_Dot(u, mkVec3_Sub(b2.t, b1.t)) - mkBody3_SupportValue(c1, u)
@@ -947,7 +998,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	out->scale = c.scale;
 	if (!isfinite(c.scale))
 		return MK_ERR_UNSUPPORTED;
-	double dl = mkVec3_Length(c.d);
+	double dl = mkLen3(c.d);
 	mkVec3 n0 = dl > 0.0 ? mkVec3_Scale(c.d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);
 	mkNormalState best;
 	int iters = 0;
@@ -966,13 +1017,13 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 			mkMat3 M = k == 0 ? b1.M : b2.M;
 			mkVec3 col[3];
 			for (int j = 0; j < 3; ++j) {
-				col[j] = mkVec3_Normalize(mkVec3_Make(M.m[0][j], M.m[1][j], M.m[2][j]));
+				col[j] = mkNormalize3(mkVec3_Make(M.m[0][j], M.m[1][j], M.m[2][j]));
 				cand[nc++] = col[j];
 				cand[nc++] = mkVec3_Neg(col[j]);
 			}
 			/* and the eight diagonals of the body's frame */
 			for (int q = 0; q < 8; ++q)
-				cand[nc++] = mkVec3_Normalize(mkVec3_Add(mkVec3_Scale(col[0], q & 1 ? -1.0 : 1.0),
+				cand[nc++] = mkNormalize3(mkVec3_Add(mkVec3_Scale(col[0], q & 1 ? -1.0 : 1.0),
 					mkVec3_Add(mkVec3_Scale(col[1], q & 2 ? -1.0 : 1.0), mkVec3_Scale(col[2], q & 4 ? -1.0 : 1.0))));
 		}
 		/* and a Fibonacci lattice of MK_FIB directions over the sphere */
@@ -1058,7 +1109,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	if (!ok || !isfinite(best.f) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
 		return MK_ERR_CONVERGENCE;
 	out->distance = best.f;
-	double span = mkVec3_Length(mkVec3_Sub(out->p2, out->p1));
+	double span = mkLen3(mkVec3_Sub(out->p2, out->p1));
 	if (best.f > 0.0 && span - best.f > MK_COLLIDE3_TOUCH_TOL * c.scale) {
 		/* Near a kink the support points are not resolved by the normal
 		 * (a nearly flat face is crossed within rounding of n). Tighter
@@ -1066,7 +1117,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		 * body's supporting plane, then radially onto that body. */
 		mkVec3 q1 = mkRadial(b1, mkVec3_Sub(out->p2, mkVec3_Scale(best.n, best.f)));
 		mkVec3 q2 = mkRadial(b2, mkVec3_Add(out->p1, mkVec3_Scale(best.n, best.f)));
-		double s1 = mkVec3_Length(mkVec3_Sub(out->p2, q1)), s2 = mkVec3_Length(mkVec3_Sub(q2, out->p1));
+		double s1 = mkLen3(mkVec3_Sub(out->p2, q1)), s2 = mkLen3(mkVec3_Sub(q2, out->p1));
 		if (s1 < span && s1 <= s2) {
 			out->p1 = q1;
 			span = s1;
@@ -1216,7 +1267,7 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	out->scale = c.scale;
 	if (!isfinite(c.scale))
 		return MK_ERR_UNSUPPORTED;
-	double dl = mkVec3_Length(c.d);
+	double dl = mkLen3(c.d);
 	out->restarts = 0;
 	if (dl == 0.0) {
 		/* Coincident centres: both bodies contain the point. */
@@ -1296,13 +1347,13 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		}
 	}
 	out->iterations = iters;
-	mkVec3 n = mkVec3_Normalize(st.m);
+	mkVec3 n = mkNormalize3(st.m);
 	out->normal = n;
 	out->p1 = mkVec3_Add(b1.t, st.e.a1.s);
 	out->p2 = mkVec3_Add(b2.t, st.e.a2.s);
 	out->residual = res / c.scale;
 	/* H = |m| (h1(n) + h2(-n)); f(n) = <n, d> - H / |m|. */
-	double ml = mkVec3_Length(st.m);
+	double ml = mkLen3(st.m);
 	out->bound = mkVec3_Dot(n, c.d) - st.H / ml;
 	if (!isfinite(st.H) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
 		return MK_ERR_CONVERGENCE;

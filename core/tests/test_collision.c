@@ -76,6 +76,61 @@ static void test_jacobian(void)
 	}
 }
 
+/* The solver's support map at the edges of its formula, against the
+ * dual-norm support of body.c (mkBody3_Support, separate code): exponents
+ * from 0.01 to 1.99, directions along the axes and in the coordinate planes
+ * (zero components: the pair norms' special cases, unrotated), and
+ * directions (rotated or not) where
+ * the outer pair of the nested norm ties, |(a y1, b y2)|_q2 = c |y3| or
+ * within 1e-12 of it (where the larger of the pair changes, chosen from
+ * log(N_in / |p3|) by the solver). Reference: body.c; tolerance a few ulps of
+ * the size as in test_jacobian. */
+static void test_support_edges(void)
+{
+	static const double eps[] = { 0.01, 0.1, 0.5, 1.5, 1.9, 1.99 };
+	unsigned long long seed = 29;
+	int checked = 0;
+	for (int i = 0; i < 6; ++i)
+		for (int j = 0; j < 6; ++j)
+			for (int trial = 0; trial < 24; ++trial) {
+				mkShape3 s = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11),
+					eps[i], eps[j] };
+				/* the canonical direction p = D M^T n wanted, then n from it */
+				double y[3] = { mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1) };
+				int kind = trial / 2 % 6;
+				/* Axis and plane directions unrotated: their zero components
+				 * must stay exact, since with an exponent near 0 a component
+				 * of 1e-17 (a rotation's rounding) already moves the support
+				 * point by a macroscopic amount (w = r^(q-1), q - 1 = 0.005:
+				 * (1e-17)^0.005 = 0.82): the nearly kinked support functions
+				 * of docs/collide.md, where two codes legitimately differ. */
+				int rotated = kind >= 3 && trial % 2;
+				mkBody3 b = mkBody3_Make(s, rotated ? mk_rand_rot(&seed) : mkMat3_Identity(), mkVec3_Make(1, 2, 3));
+				if (kind < 3) {
+					/* along an axis (kind; first 12 trials) or in a
+					 * coordinate plane (kind's component 0) */
+					if (trial < 12) {
+						for (int k = 0; k < 3; ++k)
+							y[k] = k == kind ? (y[k] < 0 ? -1.0 : 1.0) : 0.0;
+					} else
+						y[kind] = 0.0;
+				} else {
+					/* a tie of the outer pair, exact or off by 1e-12 */
+					double q2 = 2.0 / (2.0 - s.eps2);
+					double pin = pow(pow(fabs(s.a * y[0]), q2) + pow(fabs(s.b * y[1]), q2), 1.0 / q2);
+					double off = kind == 3 ? 1.0 : kind == 4 ? 1.0 + 1e-12 : 1.0 - 1e-12;
+					y[2] = (y[2] < 0 ? -1.0 : 1.0) * pin * off / s.c;
+				}
+				/* n = M y: p = D M^T n = D y (up to rounding when rotated) */
+				mkVec3 n = mkMat3_MulVec(b.M, mkVec3_Make(y[0], y[1], y[2]));
+				mkVec3 p = mkBody3_SupportJacobian(b, n, NULL);
+				mkVec3 ref = mkVec3_Sub(mkBody3_Support(b, n), b.t);
+				ENSURE_NEAR(mkVec3_Length(mkVec3_Sub(p, ref)), 0.0, 1e-12 * 11.0);
+				++checked;
+			}
+	ENSURE(checked == 6 * 6 * 24);
+}
+
 /* FCL's ellipsoid cases. */
 static void test_fcl_cases(void)
 {
@@ -418,6 +473,7 @@ static void test_failures_reported(void)
 int main(void)
 {
 	test_jacobian();
+	test_support_edges();
 	test_fcl_cases();
 	test_spheres();
 	test_random_pairs();
