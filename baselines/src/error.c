@@ -1335,6 +1335,45 @@ static Keyed *sorted_points(const double *xyz, int n)
 	return k;
 }
 
+static int cmp_tri(const void *a, const void *b)
+{
+	const int *p = a, *q = b;
+	for (int i = 0; i < 3; ++i)
+		if (p[i] != q[i]) return p[i] < q[i] ? -1 : 1;
+	return 0;
+}
+
+/* Put the hull in an order that depends only on its vertices and facets:
+ * vertices sorted by coordinates, each triangle starting at its smallest
+ * index (orientation kept), triangles sorted. CGAL's own output order can
+ * follow memory addresses (hash tables), and the refinement below depends
+ * on the order in its last bits; with this, the same points give the same
+ * figures in any process and on any thread. */
+static mkResult canonical_hull(double *V, int nv, int *T, int nt)
+{
+	Keyed *hs = sorted_points(V, nv);
+	int *to = malloc((size_t)(nv > 0 ? nv : 1) * sizeof *to);
+	if (!hs || !to) {
+		free(hs);
+		free(to);
+		return MK_ERR_MEMORY;
+	}
+	for (int v = 0; v < nv; ++v) {
+		to[hs[v].i] = v;
+		memcpy(V + 3 * v, hs[v].c, sizeof hs[v].c);
+	}
+	for (int f = 0; f < nt; ++f) {
+		int *t = T + 3 * f, a = to[t[0]], b = to[t[1]], c = to[t[2]];
+		if (a < b && a < c) t[0] = a, t[1] = b, t[2] = c;
+		else if (b < c) t[0] = b, t[1] = c, t[2] = a;
+		else t[0] = c, t[1] = a, t[2] = b;
+	}
+	qsort(T, (size_t)nt, 3 * sizeof *T, cmp_tri);
+	free(hs);
+	free(to);
+	return MK_OK;
+}
+
 #define TABLE3 2048
 
 mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts, const mkErrorOptions *opt,
@@ -1363,6 +1402,23 @@ mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *p
 			memcpy(xyz + 3 * nf, p, sizeof p);
 			idx[nf++] = k;
 		}
+	if (r == MK_OK && nf > 1) {
+		/* The points in coordinate order: the hull (and with it every
+		 * figure, to the last bit) is then a function of the point set,
+		 * not of the order the method returned it in. */
+		Keyed *ks = sorted_points(xyz, nf);
+		int *was = malloc(n1 * sizeof *was);
+		if (!ks || !was) r = MK_ERR_MEMORY;
+		else {
+			memcpy(was, idx, (size_t)nf * sizeof *idx);
+			for (int k = 0; k < nf; ++k) {
+				memcpy(xyz + 3 * k, ks[k].c, sizeof ks[k].c);
+				idx[k] = was[ks[k].i];
+			}
+		}
+		free(ks);
+		free(was);
+	}
 	if (r == MK_OK && !take_truth(opt, out))
 		r = volume3(&P, &out->area_k, &out->area_bound);
 	if (r == MK_OK && nf == 0) {
@@ -1375,6 +1431,7 @@ mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *p
 	if (hc == -1) r = MK_ERR_MEMORY;
 	else if (hc == -2) flat = 1;
 	else if (hc != 0) r = MK_ERR_UNSUPPORTED;
+	if (r == MK_OK && !flat) r = canonical_hull(V, nv, T, nt);
 	if (r != MK_OK) goto done;
 	/* A table of directions (Fibonacci sphere): starts for points that are
 	 * not hull vertices, and gap_in when the points span no volume. */

@@ -53,6 +53,8 @@ extern const char *const mkTradeoff_CaseNames[MK_TRADEOFF_CASES];
 
 #define MK_TRADEOFF_LEVELS_MAX 64
 
+#define MK_TRADEOFF_THREADS_MAX 64
+
 /* What a run covers; levels indexed by dimension 2, 3 (--n of each level,
  * rising). */
 typedef struct mkTradeoffOptions {
@@ -60,10 +62,12 @@ typedef struct mkTradeoffOptions {
 	long trials, repeats;   /* pairs per (dim, case); timed calls per row */
 	uint64_t seed;
 	double budget;          /* seconds for a level's first call; 0: no cut */
+	long threads;           /* threads of the error measure and the true areas /
+	                           volumes (the timed calls run alone), 1..MK_TRADEOFF_THREADS_MAX */
 } mkTradeoffOptions;
 
 /* 2D n = 8, 32, 128, 512, 2048, 8192, 32768, 65536; 3D n = 4, 8, ..., 256;
- * both dimensions, budget 1 s, 5 repeats. */
+ * both dimensions, budget 1 s, 5 repeats, 2 threads. */
 void mkTradeoffOptions_Default(mkTradeoffOptions *o);
 
 /* Flag callback (MK_FLAG_REPEAT): "2d=LIST" or "3d=LIST", LIST strictly
