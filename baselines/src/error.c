@@ -475,14 +475,16 @@ static mkResult gap_in2(const Prob2 *P, const double *Q, int m, double gap_out, 
 #define TABLE2 4096
 
 typedef struct Table2 {
-	double t[TABLE2], x[2 * TABLE2], h[TABLE2], beta[TABLE2];
+	double t[TABLE2], c[TABLE2], s[TABLE2], x[2 * TABLE2], h[TABLE2], beta[TABLE2];
 } Table2;
 
 static void table2_init(const Prob2 *P, Table2 *T)
 {
 	for (int j = 0; j < TABLE2; ++j) {
 		T->t[j] = -MK_PI + 2.0 * MK_PI * j / TABLE2;
-		T->h[j] = hk2(P, cos(T->t[j]), sin(T->t[j]), T->x + 2 * j);
+		T->c[j] = cos(T->t[j]);
+		T->s[j] = sin(T->t[j]);
+		T->h[j] = hk2(P, T->c[j], T->s[j], T->x + 2 * j);
 		double b = atan2(T->x[2 * j + 1], T->x[2 * j]);
 		if (j > 0)
 			while (b < T->beta[j - 1]) b += 2 * MK_PI;
@@ -490,13 +492,15 @@ static void table2_init(const Prob2 *P, Table2 *T)
 	}
 }
 
-typedef struct Eval2 { double t, f, d, x[2]; } Eval2;
+typedef struct Eval2 { double t, c, s, f, d, x[2]; } Eval2;
 
 static Eval2 eval2(const Prob2 *P, double t, const double *p)
 {
 	Eval2 e;
 	double c = cos(t), s = sin(t);
 	e.t = t;
+	e.c = c;
+	e.s = s;
 	double h = hk2(P, c, s, e.x);
 	e.f = c * p[0] + s * p[1] - h;
 	e.d = -s * (p[0] - e.x[0]) + c * (p[1] - e.x[1]);
@@ -506,7 +510,7 @@ static Eval2 eval2(const Prob2 *P, double t, const double *p)
 /* Upper bound of f over [l.t, r.t] from the tangent lines at both ends. */
 static double tangent_upper2(const Eval2 *l, const Eval2 *r, const double *p)
 {
-	double nl[2] = {cos(l->t), sin(l->t)}, nr[2] = {cos(r->t), sin(r->t)};
+	double nl[2] = {l->c, l->s}, nr[2] = {r->c, r->s};
 	double yl[2] = {l->x[0] - p[0], l->x[1] - p[1]}, yr[2] = {r->x[0] - p[0], r->x[1] - p[1]};
 	/* A(s) = (1-s) <yl, nl> + s <yl, nr>, B(s) = (1-s) <yr, nl> + s <yr, nr>. */
 	double A0 = yl[0] * nl[0] + yl[1] * nl[1], A1 = yl[0] * nr[0] + yl[1] * nr[1];
@@ -535,7 +539,7 @@ static void signed_distance2(const Prob2 *P, const Table2 *T, const double *p, d
 		if (T->beta[mid] <= b) lo = mid;
 		else hi = mid - 1;
 	}
-#define TF(j) (cos(T->t[j]) * p[0] + sin(T->t[j]) * p[1] - T->h[j])
+#define TF(j) (T->c[j] * p[0] + T->s[j] * p[1] - T->h[j])
 	int best = lo;
 	double fb = TF(best);
 	for (int w = -16; w <= 16; ++w) {
@@ -593,6 +597,10 @@ static void signed_distance2(const Prob2 *P, const Table2 *T, const double *p, d
 			if (side == 1) wl *= 0.5;
 			side = 1;
 		}
+		/* Done when the bracket's certificate (below) already pins the
+		 * maximum to a thousandth of the rounding allowance: closing the
+		 * bracket further cannot change sd or its bound visibly. */
+		if (r.t - l.t < 1e-6 && tangent_upper2(&l, &r, p) - top <= 1e-3 * P->round) break;
 	}
 	*sd = top;
 	*ub = l.t == r.t ? top : fmax(top, tangent_upper2(&l, &r, p));
@@ -1133,6 +1141,16 @@ static void signed_distance3(const Prob3 *P, const double *start, const double *
 		double len = hypot(s1, s2);
 		if (len > 0.5) s1 *= 0.5 / len, s2 *= 0.5 / len, len = 0.5;
 		if (!(len > 1e-15)) break;
+		/* The rise the quadratic model predicts for this step, (r . s) / 2:
+		 * below a thousandth of the rounding allowance no step can raise f
+		 * visibly (the line search would only halve into rounding noise).
+		 * Where the model is wrong (near a flat face) the residual test
+		 * below still hands the point on. */
+		double rise = 0.5 * fabs(r[0] * s1 + r[1] * s2);
+		if (rise <= P->round * 1e-3) {
+			last = rise;
+			break;
+		}
 		int moved = 0;
 		for (int h = 0; h < 30; ++h) {
 			double nn[3];
@@ -1315,12 +1333,16 @@ static double refine_cone(const Prob3 *P, const double *v, const double *nrm, co
  * points to hull vertices; no global state, so the measure is reentrant). */
 typedef struct Keyed { double c[3]; int i; } Keyed;
 
+static int cmp_coords(const double *p, const double *q)
+{
+	for (int i = 0; i < 3; ++i)
+		if (p[i] != q[i]) return p[i] < q[i] ? -1 : 1;
+	return 0;
+}
+
 static int cmp_keyed(const void *a, const void *b)
 {
-	const Keyed *p = a, *q = b;
-	for (int i = 0; i < 3; ++i)
-		if (p->c[i] != q->c[i]) return p->c[i] < q->c[i] ? -1 : 1;
-	return 0;
+	return cmp_coords(((const Keyed *)a)->c, ((const Keyed *)b)->c);
 }
 
 static Keyed *sorted_points(const double *xyz, int n)
@@ -1481,23 +1503,16 @@ mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *p
 			for (int j = 0; j < 3; ++j) vfac[vi[T[3 * f + j]]++] = f;
 		out->gap_in = best;
 		out->vertices = nv;
-		/* Match the points to hull vertices (CGAL keeps input coordinates). */
-		Keyed *ps = sorted_points(xyz, nf), *hs = sorted_points(V, nv);
-		if (!ps || !hs) {
-			free(ps);
-			free(hs);
-			r = MK_ERR_MEMORY;
-			goto done;
-		}
+		/* Match the points to hull vertices (CGAL keeps input coordinates):
+		 * both lists are in coordinate order already (above and
+		 * canonical_hull), so one merge pass does it. */
 		for (int k = 0; k < nf; ++k) pv[k] = -1;
 		for (int i = 0, j = 0; i < nf && j < nv;) {
-			int c = cmp_keyed(ps + i, hs + j);
-			if (c == 0) pv[ps[i++].i] = hs[j].i;
+			int c = cmp_coords(xyz + 3 * i, V + 3 * j);
+			if (c == 0) pv[i++] = j;
 			else if (c < 0) ++i;
 			else ++j;
 		}
-		free(ps);
-		free(hs);
 	} else
 		for (int k = 0; k < nf; ++k) pv[k] = -1;
 	/* Signed distances of every point. */
