@@ -54,7 +54,9 @@ static double dual_norm(double v0, double v1, double q, double qm1, double *g0, 
 		*g1 = v1 / (big * e);
 		return big * e;
 	}
-	double nrm = pow(pow(r0, q) + pow(r1, q), 1.0 / q);
+	/* The larger entry's ratio is exactly 1, and pow(1, q) = 1 exactly:
+	 * skipping that call changes no bit and saves a fifth of the pows. */
+	double nrm = pow((r0 == 1.0 ? 1.0 : pow(r0, q)) + (r1 == 1.0 ? 1.0 : pow(r1, q)), 1.0 / q);
 	*g0 = copysign(pow(r0 / nrm, qm1), v0);
 	*g1 = copysign(pow(r1 / nrm, qm1), v1);
 	return big * nrm;
