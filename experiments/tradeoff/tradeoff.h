@@ -34,7 +34,14 @@
  * sidecar says so (key `cut`; refusals by the registry under `skipped`).
  * That cut is the only thing in the rows that depends on measured times:
  * with --budget 0 (no cut, no warm-up call) two runs with the
- * same seed write the same CSV but for the `seconds` column. */
+ * same seed write the same CSV but for the `seconds` column.
+ *
+ * Threads: per level, every pair's calls are timed first, one after
+ * another, with nothing else of the run working; then the kept points are
+ * measured on --threads threads (and each (dim, case)'s true areas or
+ * volumes likewise), and the rows are written in pair order. The rows do
+ * not depend on the number of threads (the 3D measure is order-free to the
+ * last bit, mink/error.h). */
 #ifndef MINK_EXP_TRADEOFF_H
 #define MINK_EXP_TRADEOFF_H
 
