@@ -39,9 +39,10 @@
  * Threads: per level, every pair's calls are timed first, one after
  * another, with nothing else of the run working; then the kept points are
  * measured on --threads threads (and each (dim, case)'s true areas or
- * volumes likewise), and the rows are written in pair order. The rows do
- * not depend on the number of threads (the 3D measure is order-free to the
- * last bit, mink/error.h). */
+ * volumes likewise), and the rows are written in pair order. The 3D
+ * measure's figures do not depend on the order of the points; a few rows of
+ * the 3D hull methods (many coplanar points) can still differ in the last
+ * bits between multi-threaded runs (docs/experiments/tradeoff.md). */
 #ifndef MINK_EXP_TRADEOFF_H
 #define MINK_EXP_TRADEOFF_H
 

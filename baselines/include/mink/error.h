@@ -68,9 +68,11 @@
  *   Each bound also carries a rounding allowance, 64 u S (u = 2^-53).
  *
  * In 3D the points and CGAL's hull are put in a canonical order first, so
- * every figure is a function of the point set alone (the same bits for any
- * order of the points, in any process or thread). The measure is reentrant
- * (no global state): separate calls may run on separate threads.
+ * the figures do not depend on the order of the points. Where many points
+ * are coplanar, how CGAL triangulates a coplanar facet can still vary (seen
+ * between threads), which moves figures by about 1e-15 relative. The
+ * measure is reentrant (no global state): separate calls may run on
+ * separate threads.
  * The measure never calls the core's closed forms or body functions; it
  * uses only the bodies' parameters. Costs: 2D some 10 to 20 support
  * evaluations per point (a few us); 3D one CGAL hull, one evaluation per
