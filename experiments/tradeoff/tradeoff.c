@@ -1,6 +1,8 @@
 /* tradeoff.c - the speed-against-accuracy sweep (tradeoff.h). */
 #include "tradeoff.h"
 
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,6 +29,7 @@ void mkTradeoffOptions_Default(mkTradeoffOptions *o)
 	memcpy(o->level[3], l3, sizeof l3);
 	o->budget = 1.0;
 	o->repeats = 5;
+	o->threads = 2;
 }
 
 int mkTradeoff_ParseLevels(void *options, const char *text, char *msg, size_t msglen)
@@ -73,8 +76,10 @@ void mkTradeoff_Start(mkTradeoffOptions *o, const mkRun *run, int dims, mkMeta *
 	}
 	mkMeta_SetDouble(meta, "budget_seconds", o->budget);
 	mkMeta_SetInt(meta, "repeats", o->repeats);
+	mkMeta_SetInt(meta, "threads", o->threads);
 	mkMeta_Set(meta, "set", "contact");
-	mkMeta_Set(meta, "clock", "CLOCK_MONOTONIC wall time, median of the repeats; one thread");
+	mkMeta_Set(meta, "clock", "CLOCK_MONOTONIC wall time, median of the repeats; the calls of a level are timed one "
+		"after another with nothing else of the run working, then their points are measured on --threads threads");
 	mkMeta_Set(meta, "error_measure", "mink/error.h, true area/volume once per pair");
 	mkMeta_Set(meta, "draw_2d", "a,b~U(0,10) (redrawn below 1e-3) eps~U(0.1,1.9) M=rot(2pi U)[1 s;0 1] s~U(-2,2)");
 	mkMeta_Set(meta, "draw_3d", "B1 axes U(1,10)^3, B2 U(1,6)^3, eps1,eps2~U(0.1,1.9), paper quaternion");
@@ -141,6 +146,7 @@ typedef struct mkPairs {
 	mkBody2 *p1, *p2;
 	mkBody3 *q1, *q2;
 	double *truth, *bound;
+	mkResult *rc; /* of each pair's true area / volume */
 } mkPairs;
 
 /* Scratch parameter vectors for the extra samplings. */
@@ -239,10 +245,48 @@ double mkTradeoff_Median(double *v, long n)
 /* Seconds spent in the error measure this run (for the sidecar). */
 static double mkTradeoff_MeasureSeconds;
 
-/* Time pair k at level n (median of the repeats), measure the points and
- * write the row; *seconds receives the median. */
-static int mkRow(const mkTradeoffOptions *o, const mkPairs *p, long k, int curve, int n, mkScratch *s,
-	mkPointSet *out, mkCsv *csv, double *seconds)
+/* Run `fn(ctx, k)` for k = 0..count-1 on `threads` threads (the calling one
+ * among them), each k once, in no fixed order; whatever fn writes must be
+ * indexed by k, so that the result does not depend on the schedule. */
+typedef struct mkPool {
+	void (*fn)(void *ctx, long k);
+	void *ctx;
+	long count;
+	atomic_long next;
+} mkPool;
+
+static void *mkPool_Worker(void *arg)
+{
+	mkPool *pool = arg;
+	for (long k; (k = atomic_fetch_add(&pool->next, 1)) < pool->count;)
+		pool->fn(pool->ctx, k);
+	return NULL;
+}
+
+static void mkParallel(int threads, long count, void (*fn)(void *ctx, long k), void *ctx)
+{
+	mkPool pool;
+	pool.fn = fn;
+	pool.ctx = ctx;
+	pool.count = count;
+	atomic_init(&pool.next, 0);
+	pthread_t th[MK_TRADEOFF_THREADS_MAX];
+	int started = 0;
+	for (int t = 1; t < threads && t < count && t < MK_TRADEOFF_THREADS_MAX; ++t) {
+		if (pthread_create(&th[started], NULL, mkPool_Worker, &pool) != 0)
+			break; /* fewer threads: the calling thread does the rest */
+		++started;
+	}
+	mkPool_Worker(&pool);
+	for (int t = 0; t < started; ++t)
+		pthread_join(th[t], NULL);
+}
+
+/* Time pair k at level n (median of the repeats) into *seconds; the points
+ * of the last call are left in out. Single-threaded: nothing else of this
+ * run is working while a call is timed. */
+static int mkTimeCall(const mkTradeoffOptions *o, const mkPairs *p, long k, int curve, int n, mkScratch *s,
+	mkPointSet *out, double *seconds)
 {
 	double t[64];
 	long reps = o->repeats < 64 ? o->repeats : 64, done = 0;
@@ -260,17 +304,48 @@ static int mkRow(const mkTradeoffOptions *o, const mkPairs *p, long k, int curve
 		return -1;
 	}
 	*seconds = mkTradeoff_Median(t, done);
-	double m0 = mkClock_Wall();
-	mkErrorOptions eo = { 0.0, p->truth[k], p->bound[k] };
-	mkError e;
-	rc = p->dim == 2 ? mkError2_Measure(p->p1[k], p->p2[k], MK_SET_CONTACT, out, &eo, &e)
-	                 : mkError3_Measure(p->q1[k], p->q2[k], MK_SET_CONTACT, out, &eo, &e);
-	if (rc != MK_OK) {
-		fprintf(stderr, "tradeoff: %dD %s %s n = %d pair %ld: the error measure failed (%s)\n", p->dim,
-			mkTradeoff_CaseNames[p->c], mkCurveName(curve), n, k, mkResult_Name(rc));
+	return 0;
+}
+
+/* A copy of a point set (untimed), into dst's own storage. */
+static int mkPointSet_Copy(mkPointSet *dst, const mkPointSet *src)
+{
+	if (mkPointSet_Resize(dst, src->dim, src->count) != MK_OK)
 		return -1;
-	}
-	mkTradeoff_MeasureSeconds += mkClock_Wall() - m0;
+	size_t bytes = (size_t)src->count * sizeof *src->x;
+	memcpy(dst->x, src->x, bytes);
+	memcpy(dst->y, src->y, bytes);
+	if (src->dim == 3)
+		memcpy(dst->z, src->z, bytes);
+	return 0;
+}
+
+/* One level of one curve: the pairs that ran, their points, times and
+ * errors (indexed by pair). */
+typedef struct mkLevel {
+	const mkPairs *p;
+	long count;      /* pairs that ran */
+	long *pair;      /* their indices, rising */
+	mkPointSet *pts; /* by pair index */
+	double *seconds;
+	mkError *err;
+	mkResult *rc;
+} mkLevel;
+
+static void mkMeasureOne(void *ctx, long i)
+{
+	mkLevel *L = ctx;
+	const mkPairs *p = L->p;
+	long k = L->pair[i];
+	mkErrorOptions eo = { 0.0, p->truth[k], p->bound[k] };
+	L->rc[k] = p->dim == 2 ? mkError2_Measure(p->p1[k], p->p2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k])
+	                       : mkError3_Measure(p->q1[k], p->q2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k]);
+}
+
+/* Write the row of pair k (measured) to csv. */
+static void mkWriteRow(const mkPairs *p, long k, int curve, int n, int points, double seconds, const mkError *e,
+	mkCsv *csv)
+{
 	char b1[512], b2[512];
 	if (p->dim == 2) {
 		mkTradeoff_Spec2(p->p1[k], b1, sizeof b1);
@@ -285,35 +360,65 @@ static int mkRow(const mkTradeoffOptions *o, const mkPairs *p, long k, int curve
 	mkCsv_Str(csv, mkSet_Name(MK_SET_CONTACT));
 	mkCsv_Int(csv, n);
 	mkCsv_Int(csv, k);
-	mkCsv_Int(csv, out->count);
-	mkCsv_Double(csv, *seconds);
-	mkCsv_Double(csv, e.hausdorff_abs);
-	mkCsv_Double(csv, e.hausdorff_rel);
-	mkCsv_Double(csv, e.area_rel);
-	mkCsv_Int(csv, e.nonfinite);
+	mkCsv_Int(csv, points);
+	mkCsv_Double(csv, seconds);
+	mkCsv_Double(csv, e->hausdorff_abs);
+	mkCsv_Double(csv, e->hausdorff_rel);
+	mkCsv_Double(csv, e->area_rel);
+	mkCsv_Int(csv, e->nonfinite);
 	mkCsv_Str(csv, b1);
 	mkCsv_Str(csv, b2);
 	mkCsv_EndRow(csv);
+}
+
+/* Measure the pairs of L on o->threads threads, then write their rows in
+ * pair order. */
+static int mkLevel_Finish(const mkTradeoffOptions *o, mkLevel *L, int curve, int n, mkCsv *csv)
+{
+	const mkPairs *p = L->p;
+	double m0 = mkClock_Wall();
+	mkParallel(o->threads, L->count, mkMeasureOne, L);
+	mkTradeoff_MeasureSeconds += mkClock_Wall() - m0;
+	for (long i = 0; i < L->count; ++i) {
+		long k = L->pair[i];
+		if (L->rc[k] != MK_OK) {
+			fprintf(stderr, "tradeoff: %dD %s %s n = %d pair %ld: the error measure failed (%s)\n", p->dim,
+				mkTradeoff_CaseNames[p->c], mkCurveName(curve), n, k, mkResult_Name(L->rc[k]));
+			return -1;
+		}
+		mkWriteRow(p, k, curve, n, L->pts[k].count, L->seconds[k], &L->err[k], csv);
+	}
 	return 0;
 }
 
-/* Every level of one curve on the pairs, rising until the budget cuts. */
+/* Every level of one curve on the pairs, rising until the budget cuts. Per
+ * level, first every pair's call is timed (one thread), its points kept;
+ * then the points are measured on o->threads threads; the rows follow in
+ * pair order, so the CSV does not depend on the number of threads. */
 static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, mkScratch *s, mkPointSet *out,
 	mkCsv *csv, mkNotes *skipped, mkNotes *cut)
 {
 	const char *name = mkCurveName(curve);
 	if (curve < mkRegistry_Count() && !(mkRegistry_At(curve)->flags & (p->dim == 2 ? MK_METHOD_2D : MK_METHOD_3D)))
 		return 0;
-	double *sec = malloc((size_t)p->count * sizeof *sec);
-	if (!sec)
-		return -1;
-	for (int l = 0; l < o->level_count[p->dim]; ++l) {
+	size_t np = (size_t)p->count;
+	mkLevel L;
+	memset(&L, 0, sizeof L);
+	L.p = p;
+	L.pair = malloc(np * sizeof *L.pair);
+	L.pts = calloc(np, sizeof *L.pts);
+	L.seconds = malloc(np * sizeof *L.seconds);
+	L.err = malloc(np * sizeof *L.err);
+	L.rc = malloc(np * sizeof *L.rc);
+	int failed = !L.pair || !L.pts || !L.seconds || !L.err || !L.rc;
+	for (int l = 0; l < o->level_count[p->dim] && !failed; ++l) {
 		int n = o->level[p->dim][l];
-		long ran = 0, refused = 0;
+		long refused = 0;
 		char msg[256], why[320];
 		/* One untimed call on the first pair the method takes: a warm-up, and
 		 * the budget's probe, so that a level is never started whose calls
 		 * each take longer than the budget. */
+		int stop = 0;
 		for (long k = 0; k < p->count && o->budget > 0; ++k) {
 			if (!mkCurveRuns(p, k, curve, n, msg, sizeof msg))
 				continue;
@@ -324,24 +429,29 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 				snprintf(msg, sizeof msg, "n = %d and above not run (one call took %.3g s > budget %g s)", n, probe,
 					o->budget);
 				mkNotes_Add(cut, p->dim, p->c, name, msg);
-				free(sec);
-				return 0;
+				stop = 1;
 			}
 			break;
 		}
-		for (long k = 0; k < p->count; ++k) {
+		if (stop)
+			break;
+		L.count = 0;
+		for (long k = 0; k < p->count && !failed; ++k) {
 			if (!mkCurveRuns(p, k, curve, n, msg, sizeof msg)) {
 				if (refused++ == 0)
 					snprintf(why, sizeof why, "%s", msg);
 				continue;
 			}
-			if (mkRow(o, p, k, curve, n, s, out, csv, &sec[ran]) != 0) {
-				free(sec);
-				return -1;
+			failed = mkTimeCall(o, p, k, curve, n, s, out, &L.seconds[k]) != 0;
+			if (!failed && mkPointSet_Copy(&L.pts[k], out) != 0) {
+				fprintf(stderr, "tradeoff: out of memory\n");
+				failed = 1;
 			}
-			++ran;
+			L.pair[L.count++] = k;
 		}
-		if (refused > 0) {
+		if (!failed)
+			failed = mkLevel_Finish(o, &L, curve, n, csv) != 0;
+		if (!failed && refused > 0) {
 			/* The method refuses the pair type (all levels) or this n (all higher n too). */
 			char note[400];
 			snprintf(note, sizeof note, "n = %d%s, %ld of %ld pairs not run (%s)", n,
@@ -350,13 +460,26 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 			if (refused == p->count)
 				break;
 		}
-		(void)ran;
 	}
-	free(sec);
-	return 0;
+	for (size_t k = 0; L.pts && k < np; ++k)
+		mkPointSet_Free(&L.pts[k]);
+	free(L.pair);
+	free(L.pts);
+	free(L.seconds);
+	free(L.err);
+	free(L.rc);
+	return failed ? -1 : 0;
 }
 
 /* Draw the pairs of (dim, case) and their true volumes. */
+/* The true area / volume of pair k (a task of mkParallel). */
+static void mkPairs_Truth(void *ctx, long k)
+{
+	mkPairs *p = ctx;
+	p->rc[k] = p->dim == 2 ? mkError2_Area(p->p1[k], p->p2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k])
+	                       : mkError3_Volume(p->q1[k], p->q2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k]);
+}
+
 static int mkPairs_Make(const mkTradeoffOptions *o, int dim, int c, mkPairs *p)
 {
 	memset(p, 0, sizeof *p);
@@ -372,21 +495,21 @@ static int mkPairs_Make(const mkTradeoffOptions *o, int dim, int c, mkPairs *p)
 	if (!p->p1 || !p->p2 || !p->q1 || !p->q2 || !p->truth)
 		return -1;
 	p->bound = p->truth + n;
-	for (long k = 0; k < p->count; ++k) {
-		mkResult rc;
-		if (dim == 2) {
+	p->rc = malloc(n * sizeof *p->rc);
+	if (!p->rc)
+		return -1;
+	for (long k = 0; k < p->count; ++k)
+		if (dim == 2)
 			mkTradeoff_Pair2(o->seed, c, k, &p->p1[k], &p->p2[k]);
-			rc = mkError2_Area(p->p1[k], p->p2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k]);
-		} else {
+		else
 			mkTradeoff_Pair3(o->seed, c, k, &p->q1[k], &p->q2[k]);
-			rc = mkError3_Volume(p->q1[k], p->q2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k]);
-		}
-		if (rc != MK_OK) {
+	mkParallel(o->threads, p->count, mkPairs_Truth, p);
+	for (long k = 0; k < p->count; ++k)
+		if (p->rc[k] != MK_OK) {
 			fprintf(stderr, "tradeoff: %dD %s pair %ld: the true %s failed (%s)\n", dim, mkTradeoff_CaseNames[c], k,
-				dim == 2 ? "area" : "volume", mkResult_Name(rc));
+				dim == 2 ? "area" : "volume", mkResult_Name(p->rc[k]));
 			return -1;
 		}
-	}
 	return 0;
 }
 
@@ -397,6 +520,7 @@ static void mkPairs_Free(mkPairs *p)
 	free(p->q1);
 	free(p->q2);
 	free(p->truth);
+	free(p->rc);
 }
 
 int mkTradeoff_Run(const mkTradeoffOptions *o, mkCsv *csv, mkMeta *meta)

@@ -34,7 +34,15 @@
  * sidecar says so (key `cut`; refusals by the registry under `skipped`).
  * That cut is the only thing in the rows that depends on measured times:
  * with --budget 0 (no cut, no warm-up call) two runs with the
- * same seed write the same CSV but for the `seconds` column. */
+ * same seed write the same CSV but for the `seconds` column.
+ *
+ * Threads: per level, every pair's calls are timed first, one after
+ * another, with nothing else of the run working; then the kept points are
+ * measured on --threads threads (and each (dim, case)'s true areas or
+ * volumes likewise), and the rows are written in pair order. The 3D
+ * measure's figures do not depend on the order of the points; a few rows of
+ * the 3D hull methods (many coplanar points) can still differ in the last
+ * bits between multi-threaded runs (docs/experiments/tradeoff.md). */
 #ifndef MINK_EXP_TRADEOFF_H
 #define MINK_EXP_TRADEOFF_H
 
@@ -53,6 +61,8 @@ extern const char *const mkTradeoff_CaseNames[MK_TRADEOFF_CASES];
 
 #define MK_TRADEOFF_LEVELS_MAX 64
 
+#define MK_TRADEOFF_THREADS_MAX 64
+
 /* What a run covers; levels indexed by dimension 2, 3 (--n of each level,
  * rising). */
 typedef struct mkTradeoffOptions {
@@ -60,10 +70,12 @@ typedef struct mkTradeoffOptions {
 	long trials, repeats;   /* pairs per (dim, case); timed calls per row */
 	uint64_t seed;
 	double budget;          /* seconds for a level's first call; 0: no cut */
+	long threads;           /* threads of the error measure and the true areas /
+	                           volumes (the timed calls run alone), 1..MK_TRADEOFF_THREADS_MAX */
 } mkTradeoffOptions;
 
 /* 2D n = 8, 32, 128, 512, 2048, 8192, 32768, 65536; 3D n = 4, 8, ..., 256;
- * both dimensions, budget 1 s, 5 repeats. */
+ * both dimensions, budget 1 s, 5 repeats, 2 threads. */
 void mkTradeoffOptions_Default(mkTradeoffOptions *o);
 
 /* Flag callback (MK_FLAG_REPEAT): "2d=LIST" or "3d=LIST", LIST strictly

@@ -36,14 +36,16 @@
  *            subdivided in four (3D) until that bound is within
  *            tol of the largest value found; what remains is reported.
  *   gap_out, off_boundary (2D): the maximiser of <n, p> - h_K(n) is
- *            bracketed by the sign of its derivative and closed to 1e-15
- *            rad; within the final bracket the tangent lines of K at its
- *            ends give a certified upper bound. That the bracket holds the
+ *            bracketed by the sign of its derivative and closed until the
+ *            tangent lines of K at the bracket's ends (a certified upper
+ *            bound within it) pin the maximum to 1e-3 of the rounding
+ *            allowance, or to about 1e-15 rad. That the bracket holds the
  *            global maximiser is assumed: it is found from a table of 4096
  *            directions near the point's polar angle, which is right for
  *            points closer to K's boundary than its radii of curvature.
  *   gap_out, off_boundary (3D): Newton on the sphere from the point's own
- *            normal cone in P; where it stops with the tangential residual
+ *            normal cone in P (until the rise its model predicts is below
+ *            1e-3 of the rounding allowance); where it stops with the tangential residual
  *            of x_K(n) - p above 1e-7 R (near the axis normals of a boxy
  *            body, where the support map is not differentiable), Newton
  *            again in the boxier body's ray parameter (smooth there), then a branch
@@ -65,9 +67,15 @@
  *            estimate; 1e-8 to 3e-6 relative in the tests).
  *   Each bound also carries a rounding allowance, 64 u S (u = 2^-53).
  *
+ * In 3D the points and CGAL's hull are put in a canonical order first, so
+ * the figures do not depend on the order of the points. Where many points
+ * are coplanar, how CGAL triangulates a coplanar facet can still vary (seen
+ * between threads), which moves figures by about 1e-15 relative. The
+ * measure is reentrant (no global state): separate calls may run on
+ * separate threads.
  * The measure never calls the core's closed forms or body functions; it
- * uses only the bodies' parameters. Costs: 2D some 10 to 60 support
- * evaluations per point (about 10 us); 3D one CGAL hull, one evaluation per
+ * uses only the bodies' parameters. Costs: 2D some 10 to 20 support
+ * evaluations per point (a few us); 3D one CGAL hull, one evaluation per
  * hull facet and tens per point (hundreds where the branch and bound runs).
  * |K| costs about a second in 2D: compute it once per pair (mkError2_Area)
  * and pass it in opt->truth. */
