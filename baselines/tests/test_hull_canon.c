@@ -10,10 +10,10 @@
  * and on two threads at once; every output must equal the first one bit
  * for bit. The reference is the first run itself: the property is equality,
  * so there is no tolerance. A second check, independent of the hull code,
- * asks that every triangle lies in a face plane of the point set (all
- * points on one side; exact, the coordinates being multiples of 1/16
- * below 4), that no triangle is degenerate and that the triangles enclose
- * the volume worked out by hand. */
+ * asks of the seven constructed sets that every triangle lies in a face
+ * plane of the point set (all points on one side; exact, the coordinates
+ * being multiples of 1/16 below 10), that no triangle is degenerate and
+ * that the triangles enclose the volume worked out by hand. */
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -32,11 +32,12 @@ enum { SETS = 9, ORDERS = 4, MAXP = 4096 };
 typedef struct Set { int n; double xyz[3 * MAXP]; mkBody3 b1, b2; } Set;
 static Set sets[SETS];
 
-/* The 3 x 3 x 3 grid; a cube's corners and face centres; a triangular
- * prism with its edges' midpoints, three layers; a 7 x 7 x 7 grid; a
- * box with 5 x 4 x 6 points per side (grid points on its faces only). The
- * coordinates are small integers times 0.25, so every test below is
- * exact in double. */
+/* 0: the 3 x 3 x 3 grid; 1: a cube's corners and face centres; 2: a
+ * triangular prism with its edges' midpoints, three layers; 3: a 7 x 7 x 7
+ * grid; 4: a box with 5 x 4 x 6 points per side (grid points on its faces
+ * only); 5, 6: lattice points of a ball and an ellipsoid; all sheared (M
+ * below). 7, 8: the output of a hull method. The coordinates of 0..6 are
+ * small integers times 1/16, so the tests on them are exact in double. */
 static void make_sets(void)
 {
 	Set *s = &sets[0];
