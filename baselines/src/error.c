@@ -1367,25 +1367,31 @@ static int cmp_tri(const void *a, const void *b)
 	return 0;
 }
 
-/* Put the hull in an order that depends only on its vertices and facets:
- * vertices sorted by coordinates, each triangle starting at its smallest
- * index (orientation kept), triangles sorted. CGAL's own output order can
- * follow memory addresses (hash tables), and the refinement below depends
- * on the order in its last bits; with this, the same points give the same
- * figures in any process and on any thread. */
-static mkResult canonical_hull(double *V, int nv, int *T, int nt)
+/* Put the hull in an order that depends only on the point set. The hull
+ * comes canonical already (mkCgalHull3_Mesh: sorted vertices, each planar
+ * face fanned from its smallest corner, sorted triangles); this sorts it
+ * once more, so that the measure does not rest on that alone, and drops
+ * the vertices CGAL kept on an edge or inside a planar face: they belong to
+ * no triangle, so their normal cones would be empty, and whether CGAL keeps
+ * such a point can follow its build order. *nv is updated. */
+static mkResult canonical_hull(double *V, int *nv, int *T, int nt)
 {
-	Keyed *hs = sorted_points(V, nv);
-	int *to = malloc((size_t)(nv > 0 ? nv : 1) * sizeof *to);
+	int n = *nv;
+	Keyed *hs = sorted_points(V, n);
+	int *to = malloc((size_t)(n > 0 ? n : 1) * sizeof *to);
 	if (!hs || !to) {
 		free(hs);
 		free(to);
 		return MK_ERR_MEMORY;
 	}
-	for (int v = 0; v < nv; ++v) {
-		to[hs[v].i] = v;
-		memcpy(V + 3 * v, hs[v].c, sizeof hs[v].c);
-	}
+	for (int v = 0; v < n; ++v) to[hs[v].i] = -1;
+	for (int j = 0; j < 3 * nt; ++j) to[T[j]] = 0; /* used */
+	int m = 0;
+	for (int v = 0; v < n; ++v) /* in coordinate order */
+		if (to[hs[v].i] == 0) {
+			to[hs[v].i] = m;
+			memcpy(V + 3 * m++, hs[v].c, sizeof hs[v].c);
+		}
 	for (int f = 0; f < nt; ++f) {
 		int *t = T + 3 * f, a = to[t[0]], b = to[t[1]], c = to[t[2]];
 		if (a < b && a < c) t[0] = a, t[1] = b, t[2] = c;
@@ -1393,6 +1399,7 @@ static mkResult canonical_hull(double *V, int nv, int *T, int nt)
 		else t[0] = c, t[1] = a, t[2] = b;
 	}
 	qsort(T, (size_t)nt, 3 * sizeof *T, cmp_tri);
+	*nv = m;
 	free(hs);
 	free(to);
 	return MK_OK;
@@ -1455,7 +1462,7 @@ mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *p
 	if (hc == -1) r = MK_ERR_MEMORY;
 	else if (hc == -2) flat = 1;
 	else if (hc != 0) r = MK_ERR_UNSUPPORTED;
-	if (r == MK_OK && !flat) r = canonical_hull(V, nv, T, nt);
+	if (r == MK_OK && !flat) r = canonical_hull(V, &nv, T, nt);
 	if (r != MK_OK) goto done;
 	/* A table of directions (Fibonacci sphere): starts for points that are
 	 * not hull vertices, and gap_in when the points span no volume. */

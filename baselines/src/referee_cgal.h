@@ -34,10 +34,18 @@ MK_API int mkRefereeCgal_Polytope(const double *vx, const double *vy, const doub
 /* The convex hull of count points as a triangle mesh (CGAL, Epick kernel,
  * Surface_mesh overload): *nv vertex coordinates (3 per vertex) and *nt
  * triangles (3 vertex indices each, counter-clockwise seen from outside),
- * both allocated with malloc for the caller to free. Returns 0, -1 when
- * memory ran out, -2 when the points span no volume, -3 when a face is not
- * a triangle. Lives in hull_epick.cpp, so that the referee's translation
- * unit need not compile the hull code again. */
+ * both allocated with malloc for the caller to free. The output depends
+ * only on the set of points, not on their order, memory addresses or the
+ * thread: the vertices are CGAL's hull vertices (input points) sorted by
+ * coordinates (x, then y, then z); each planar face of the hull, found with
+ * exact predicates, is fanned from its lexicographically smallest corner
+ * over its corners only; each triangle starts at its smallest index; the
+ * triangles are sorted. A vertex CGAL kept on an edge or inside a planar
+ * face is listed but belongs to no triangle. Returns 0, -1 when memory ran
+ * out, -2 when the points span no volume, -3 when the faces could not be
+ * made triangles (CGAL failed, or a face had fewer than 3 corners). Lives
+ * in hull_epick.cpp, so that the referee's translation unit need not
+ * compile the hull code again. */
 MK_API int mkCgalHull3_Mesh(const double *xyz, int count, double **vertices, int *nv, int **triangles, int *nt);
 
 /* CGAL's exact orientation of (a, b, c) in the plane (+1 left turn), for
