@@ -63,11 +63,15 @@ static inline mkFV mkF_copysign(mkFV m, mkFV s)
 	return (mkFV)(((mkFM)m & MK_FABSMASK) | ((mkFM)s & ~MK_FABSMASK));
 }
 static inline mkFV mkF_sel(mkFM k, mkFV a, mkFV b) { return (mkFV)(((mkFM)a & k) | ((mkFM)b & ~k)); }
+/* Every lane of a comparison mask set: one mask test instead of a loop over
+ * the lanes (which the compiler keeps as lane extractions). */
 static inline int mkF_all(mkFM k)
 {
-	int acc = -1;
-	for (int i = 0; i < MK_X86F_W; ++i) acc &= k[i];
-	return acc != 0;
+#if MK_X86F_W == 8
+	return _mm256_movemask_ps(_mm256_castsi256_ps((__m256i)k)) == 0xFF;
+#else
+	return _mm512_test_epi32_mask((__m512i)k, (__m512i)k) == 0xFFFF;
+#endif
 }
 static inline mkFD mkFD_load(const double *p) { mkFD v; memcpy(&v, p, sizeof v); return v; }
 static inline void mkFD_store(double *p, mkFD v) { memcpy(p, &v, sizeof v); }
@@ -80,9 +84,11 @@ static inline mkFD mkFD_sel(mkFDM k, mkFD a, mkFD b) { return (mkFD)(((mkFDM)a &
 static inline mkFD mkFD_max(mkFD a, mkFD b) { return mkFD_sel(a >= b, a, b); }
 static inline int mkFD_all(mkFDM k)
 {
-	long long acc = -1;
-	for (int i = 0; i < MK_FD_W; ++i) acc &= k[i];
-	return acc != 0;
+#if MK_X86F_W == 8
+	return _mm256_movemask_pd(_mm256_castsi256_pd((__m256i)k)) == 0xF;
+#else
+	return _mm512_test_epi64_mask((__m512i)k, (__m512i)k) == 0xFF;
+#endif
 }
 
 /* Half a lane vector of parameter vectors, made unit length in double. */
