@@ -1,7 +1,11 @@
 /* base.c - result names, version, and the point-set helper of method.h. */
 #include "mink/method.h"
 
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
+
+#include "message.h"
 
 const char *mkResult_Name(mkResult r)
 {
@@ -58,4 +62,15 @@ void mkPointSet_Free(mkPointSet *set)
 	free(set->x); free(set->y); free(set->z);
 	set->x = set->y = set->z = NULL;
 	set->count = set->capacity = 0;
+}
+
+mkResult mkFail(mkResult r, char *msg, size_t msglen, const char *fmt, ...)
+{
+	if (msg && msglen) {
+		va_list ap;
+		va_start(ap, fmt);
+		vsnprintf(msg, msglen, fmt, ap);
+		va_end(ap);
+	}
+	return r;
 }

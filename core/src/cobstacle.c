@@ -7,11 +7,12 @@
 
 #include <math.h>
 #include <pthread.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "message.h"
 #include <time.h>
 
 #include "kernel.h"
@@ -20,17 +21,6 @@
 #define MIN_ANGLE 1e-12   /* normals closer than this (radians) are not split */
 #define MAX_SPLITS 10     /* uniform 3D: 8 * 4^10 triangles */
 #define DENSE2 0.125      /* 2D adaptive: candidates refined to DENSE2 * tol, then the fewest kept (prune2) */
-
-static mkResult fail(mkResult r, char *msg, size_t msglen, const char *fmt, ...)
-{
-	if (msg && msglen) {
-		va_list ap;
-		va_start(ap, fmt);
-		vsnprintf(msg, msglen, fmt, ap);
-		va_end(ap);
-	}
-	return r;
-}
 
 mkCSpaceOptions mkCSpaceOptions_Default(void)
 {
@@ -1325,34 +1315,34 @@ static void describe3(char *buf, size_t len, const mkSceneBody *d, mkBody3 m)
 mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begin, int end,
 	mkCSpaceResult *out, char *msg, size_t msglen)
 {
-	if (!out) return fail(MK_ERR_ARGUMENT, msg, msglen, "no result");
+	if (!out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no result");
 	memset(out, 0, sizeof *out);
 	if (!scene || !opt || (scene->dim != 2 && scene->dim != 3))
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "no scene or options");
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene or options");
 	if (!(opt->tol > 0.0) || !isfinite(opt->tol))
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "tolerance = %g is out of range: must be a positive finite number", opt->tol);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "tolerance = %g is out of range: must be a positive finite number", opt->tol);
 	if (opt->threads < 1 || opt->threads > 1024)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "threads = %d is out of range: must be in [1, 1024]", opt->threads);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "threads = %d is out of range: must be in [1, 1024]", opt->threads);
 	if (begin < 0 || end > scene->orientation_count || begin > end)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "orientations [%d, %d) are out of range: the scene has %d",
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "orientations [%d, %d) are out of range: the scene has %d",
 			begin, end, scene->orientation_count);
 	if (opt->max_points < 8)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "max_points = %d is out of range: must be at least 8", opt->max_points);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "max_points = %d is out of range: must be at least 8", opt->max_points);
 	int dim = scene->dim;
 	if (opt->mode == MK_CSPACE_UNIFORM
 		&& (dim == 2 ? opt->uniform < 4 : (opt->uniform < 0 || opt->uniform > MAX_SPLITS)))
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "uniform = %d is out of range: must be %s", opt->uniform,
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "uniform = %d is out of range: must be %s", opt->uniform,
 			dim == 2 ? "at least 4 normals" : "0..10 splits");
 	if (opt->mode == MK_CSPACE_PAPER) {
 		if (dim == 2 ? opt->uniform < 1 : (opt->uniform < 2 || opt->uniform > 46340))
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "uniform = %d is out of range for the paper's sampling", opt->uniform);
-		if (opt->outer) return fail(MK_ERR_UNSUPPORTED, msg, msglen, "the paper's sampling gives no outer bound");
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "uniform = %d is out of range for the paper's sampling", opt->uniform);
+		if (opt->outer) return mkFail(MK_ERR_UNSUPPORTED, msg, msglen, "the paper's sampling gives no outer bound");
 		if (opt->form != MK_FORM_NORMAL && opt->form != MK_FORM_GRADIENT)
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "form must be normal or gradient");
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "form must be normal or gradient");
 	} else if (opt->mode != MK_CSPACE_ADAPTIVE && opt->mode != MK_CSPACE_UNIFORM) {
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "unknown mode %d", (int)opt->mode);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "unknown mode %d", (int)opt->mode);
 	}
-	if (!mkImpl_Available(opt->impl)) return fail(MK_ERR_UNSUPPORTED, msg, msglen, "kernel %s is not available", mkImpl_Name(opt->impl));
+	if (!mkImpl_Available(opt->impl)) return mkFail(MK_ERR_UNSUPPORTED, msg, msglen, "kernel %s is not available", mkImpl_Name(opt->impl));
 
 	Run R;
 	memset(&R, 0, sizeof R);
@@ -1371,13 +1361,13 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 	for (int k = 0; k < R.bounds; ++k) {
 		r = dim == 2 ? mkSceneBody2_Model(&scene->robot, budget, (mkBound)k, &R.robot2[k], &R.robot_err[k], sub, sizeof sub)
 			: mkSceneBody3_Model(&scene->robot, budget, (mkBound)k, &R.robot3[k], &R.robot_err[k], sub, sizeof sub);
-		if (r != MK_OK) { fail(r, msg, msglen, "robot: %s", sub); goto done; }
+		if (r != MK_OK) { mkFail(r, msg, msglen, "robot: %s", sub); goto done; }
 		for (int i = 0; i < nob; ++i) {
 			r = dim == 2 ? mkSceneBody2_Model(&scene->obstacles[i], budget, (mkBound)k, &R.obs2[2 * i + k],
 					&R.obs_err[2 * i + k], sub, sizeof sub)
 				: mkSceneBody3_Model(&scene->obstacles[i], budget, (mkBound)k, &R.obs3[2 * i + k],
 					&R.obs_err[2 * i + k], sub, sizeof sub);
-			if (r != MK_OK) { fail(r, msg, msglen, "obstacle %d: %s", i, sub); goto done; }
+			if (r != MK_OK) { mkFail(r, msg, msglen, "obstacle %d: %s", i, sub); goto done; }
 		}
 	}
 	for (int i = 0; i < nob; ++i) {
@@ -1445,7 +1435,7 @@ mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begi
 	worker(&R);
 	for (int t = 0; t < started; ++t) pthread_join(th[t], NULL);
 	pthread_mutex_destroy(&R.lock);
-	if (R.failed) { r = (mkResult)R.failed; fail(r, msg, msglen, "%s while computing boundaries", mkResult_Name(r)); goto done; }
+	if (R.failed) { r = (mkResult)R.failed; mkFail(r, msg, msglen, "%s while computing boundaries", mkResult_Name(r)); goto done; }
 	if (opt->store) {
 		long total = 0, ftotal = 0;
 		out->first = malloc((size_t)(nb + 1) * sizeof(long));

@@ -5,21 +5,11 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static mkResult fail(mkResult r, char *msg, size_t msglen, const char *fmt, ...)
-{
-	if (msg && msglen) {
-		va_list ap;
-		va_start(ap, fmt);
-		vsnprintf(msg, msglen, fmt, ap);
-		va_end(ap);
-	}
-	return r;
-}
+#include "message.h"
 
 const char *mkSceneBody_KindName(const mkSceneBody *b)
 {
@@ -58,8 +48,8 @@ mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneB
 	char *msg, size_t msglen)
 {
 	if (!what) what = "body";
-	if (!text || !out) return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: no SPEC given", what);
-	if (dim != 2 && dim != 3) return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: dimension %d: must be 2 or 3", what, dim);
+	if (!text || !out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: no SPEC given", what);
+	if (dim != 2 && dim != 3) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: dimension %d: must be 2 or 3", what, dim);
 	memset(out, 0, sizeof *out);
 	out->dim = dim;
 	const char *p = text;
@@ -72,13 +62,13 @@ mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneB
 	if (!box && !cyl) {
 		mkResult r = mkSpec_Parse(text, dim, what, &out->spec, msg, msglen);
 		if (r != MK_OK && msg && strstr(msg, "unknown kind"))
-			fail(r, msg, msglen, "%s: unknown kind '%.*s': must be one of %s", what, (int)(kl > 64 ? 64 : kl), ks,
+			mkFail(r, msg, msglen, "%s: unknown kind '%.*s': must be one of %s", what, (int)(kl > 64 ? 64 : kl), ks,
 				dim == 2 ? "circle, ellipse, superellipse, box" : "sphere, ellipsoid, superquadric, box, cylinder");
 		out->kind = MK_SCENE_SMOOTH;
 		return r;
 	}
 	if (cyl && dim != 3)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind 'cylinder' is 3D but the scene is 2D: use circle, "
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind 'cylinder' is 3D but the scene is 2D: use circle, "
 			"ellipse, superellipse or box", what);
 	out->kind = box ? MK_SCENE_BOX : MK_SCENE_CYLINDER;
 	/* Shape keys here; the pose keys go to mkSpec_Parse behind a unit body,
@@ -95,7 +85,7 @@ mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneB
 		size_t tl = (size_t)(p - ts);
 		const char *eq = memchr(ts, '=', tl);
 		if (!eq)
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: '%.*s' is not of the form key=value", what,
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: '%.*s' is not of the form key=value", what,
 				(int)(tl > 64 ? 64 : tl), ts);
 		size_t nl = (size_t)(eq - ts), vl = tl - nl - 1;
 		const char *v = eq + 1;
@@ -103,17 +93,17 @@ mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneB
 		if ((box && KEY_IS("size")) || (cyl && (KEY_IS("r") || KEY_IS("h")))) {
 			const char *key = box ? "size" : (KEY_IS("r") ? "r" : "h");
 			int *seen = box ? &have_size : (KEY_IS("r") ? &have_r : &have_h);
-			if (*seen) return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key);
+			if (*seen) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key);
 			*seen = 1;
-			if (vl == 0) return fail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key);
+			if (vl == 0) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key);
 			double vals[3];
 			int want = box ? dim : 1;
 			int got = number_list(v, vl, vals, 3);
 			if (got < 0)
-				return fail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key,
+				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key,
 					(int)(vl > 64 ? 64 : vl), v, want > 1 ? " list" : "");
 			if (got != want)
-				return fail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
+				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
 					key, want, want > 1 ? "s" : "", got);
 			for (int i = 0; i < want; ++i) {
 				double lo = MK_SCENE_SIZE_MIN, hi = MK_SCENE_SIZE_MAX;
@@ -122,7 +112,7 @@ mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneB
 					char field[32];
 					if (want > 1) snprintf(field, sizeof field, "%s[%d]", key, i + 1);
 					else snprintf(field, sizeof field, "%s", key);
-					return fail(MK_ERR_RANGE, msg, msglen, "%s.%s = %.17g is out of range: must be a finite "
+					return mkFail(MK_ERR_RANGE, msg, msglen, "%s.%s = %.17g is out of range: must be a finite "
 						"number in [%.10g, %.10g]", what, field, vals[i], lo, hi);
 				}
 			}
@@ -134,18 +124,18 @@ mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneB
 		int pose_key = KEY_IS("M") || KEY_IS("at") || (dim == 2 && (KEY_IS("rot") || KEY_IS("shear")))
 			|| (dim == 3 && KEY_IS("quat"));
 		if (!pose_key)
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
 				what, (int)(nl > 32 ? 32 : nl), ts, box ? "box" : "cylinder", allowed);
 #undef KEY_IS
 		if (pn + 1 + (int)tl >= (int)sizeof pose)
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, (int)sizeof pose);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, (int)sizeof pose);
 		pn += snprintf(pose + pn, sizeof pose - (size_t)pn, " %.*s", (int)tl, ts);
 	}
 	if (box && !have_size)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: box needs size=%s (full side lengths)", what,
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: box needs size=%s (full side lengths)", what,
 			dim == 2 ? "l,w" : "l,w,h");
 	if (cyl && (!have_r || !have_h))
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: cylinder needs %s", what, !have_r ? "r (the radius)" : "h (the full height)");
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: cylinder needs %s", what, !have_r ? "r (the radius)" : "h (the full height)");
 	mkResult r = mkSpec_Parse(pose, dim, what, &out->spec, msg, msglen);
 	if (r != MK_OK) return r;
 	return MK_OK;
@@ -218,15 +208,15 @@ static double model_error(double D, double eps, int terms, mkBound side)
 mkResult mkSceneBody2_Model(const mkSceneBody *b, double delta, mkBound side, mkBody2 *out,
 	double *error, char *msg, size_t msglen)
 {
-	if (!b || !out || !error || b->dim != 2) return fail(MK_ERR_ARGUMENT, msg, msglen, "model: not a 2D body");
+	if (!b || !out || !error || b->dim != 2) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: not a 2D body");
 	if (b->kind == MK_SCENE_SMOOTH) { *out = b->spec.body2; *error = 0.0; return MK_OK; }
-	if (!(delta > 0.0) || !isfinite(delta)) return fail(MK_ERR_ARGUMENT, msg, msglen, "model: tolerance %g must be positive", delta);
+	if (!(delta > 0.0) || !isfinite(delta)) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: tolerance %g must be positive", delta);
 	double a = 0.5 * b->size[0], bb = 0.5 * b->size[1];
 	mkMat2 M = b->spec.body2.M;
 	double D = reach2(M, a, bb);
 	double eps = model_eps(delta / D, 2, side);
 	if (!(eps >= MK_EPS_MIN))
-		return fail(MK_ERR_RANGE, msg, msglen, "box model: tolerance %g is too small for a box of reach %g: "
+		return mkFail(MK_ERR_RANGE, msg, msglen, "box model: tolerance %g is too small for a box of reach %g: "
 			"the model exponent would be %g, below %g", delta, D, eps, MK_EPS_MIN);
 	double s = side == MK_BOUND_INNER ? 1.0 : pow(2.0, 0.5 * eps);
 	mkShape2 sh = {s * a, s * bb, eps};
@@ -238,9 +228,9 @@ mkResult mkSceneBody2_Model(const mkSceneBody *b, double delta, mkBound side, mk
 mkResult mkSceneBody3_Model(const mkSceneBody *b, double delta, mkBound side, mkBody3 *out,
 	double *error, char *msg, size_t msglen)
 {
-	if (!b || !out || !error || b->dim != 3) return fail(MK_ERR_ARGUMENT, msg, msglen, "model: not a 3D body");
+	if (!b || !out || !error || b->dim != 3) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: not a 3D body");
 	if (b->kind == MK_SCENE_SMOOTH) { *out = b->spec.body3; *error = 0.0; return MK_OK; }
-	if (!(delta > 0.0) || !isfinite(delta)) return fail(MK_ERR_ARGUMENT, msg, msglen, "model: tolerance %g must be positive", delta);
+	if (!(delta > 0.0) || !isfinite(delta)) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: tolerance %g must be positive", delta);
 	mkMat3 M = b->spec.body3.M;
 	int terms;
 	double a, bb, c, D;
@@ -255,7 +245,7 @@ mkResult mkSceneBody3_Model(const mkSceneBody *b, double delta, mkBound side, mk
 	}
 	double eps = model_eps(delta / D, terms, side);
 	if (!(eps >= MK_EPS_MIN))
-		return fail(MK_ERR_RANGE, msg, msglen, "%s model: tolerance %g is too small for a body of reach %g: "
+		return mkFail(MK_ERR_RANGE, msg, msglen, "%s model: tolerance %g is too small for a body of reach %g: "
 			"the model exponent would be %g, below %g", mkSceneBody_KindName(b), delta, D, eps, MK_EPS_MIN);
 	double s = side == MK_BOUND_INNER ? 1.0 : pow((double)terms, 0.5 * eps);
 	/* box: |x/a|^p + |y/b|^p + |z/c|^p (eps1 = eps2 = eps); cylinder: the
@@ -336,11 +326,11 @@ static int quat_rotation(const double *q, mkMat3 *R)
 
 mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 {
-	if (!out) return fail(MK_ERR_ARGUMENT, msg, msglen, "no scene");
+	if (!out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene");
 	memset(out, 0, sizeof *out);
-	if (!text) return fail(MK_ERR_ARGUMENT, msg, msglen, "no scene text");
+	if (!text) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene text");
 	char *line = malloc(MK_SCENE_LINE_MAX);
-	if (!line) return fail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	if (!line) return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	mkScene s;
 	memset(&s, 0, sizeof s);
 	int ocap = 0, hcap = 0, rcap = 0, robot_line = 0, orient_line = 0;
@@ -349,7 +339,7 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 	mkResult r = MK_OK;
 	char sub[900];
 #define BAD(code, ...) do { r = (code); char b_[1024]; snprintf(b_, sizeof b_, __VA_ARGS__); \
-	fail(r, msg, msglen, "line %d: %s", lineno, b_); goto done; } while (0)
+	mkFail(r, msg, msglen, "line %d: %s", lineno, b_); goto done; } while (0)
 	while (next_line(&cur, line, MK_SCENE_LINE_MAX, &too_long)) {
 		++lineno;
 		if (too_long) BAD(MK_ERR_ARGUMENT, "line is longer than %d characters", MK_SCENE_LINE_MAX - 1);
@@ -475,7 +465,7 @@ done:
 
 mkResult mkScene_SetRotations(mkScene *s, const char *text, const char *name, char *msg, size_t msglen)
 {
-	if (!s || s->dim != 3 || !text) return fail(MK_ERR_ARGUMENT, msg, msglen, "rotations: not a 3D scene");
+	if (!s || s->dim != 3 || !text) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "rotations: not a 3D scene");
 	if (!name) name = "rotations";
 	char line[4096];
 	const char *cur = text;
@@ -484,7 +474,7 @@ mkResult mkScene_SetRotations(mkScene *s, const char *text, const char *name, ch
 	while (next_line(&cur, line, sizeof line, &too_long)) {
 		++lineno;
 		if (!line[0]) continue;
-		if (too_long) { free(rot); return fail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: line too long", name, lineno); }
+		if (too_long) { free(rot); return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: line too long", name, lineno); }
 		double v[9];
 		int got = number_list(line, strlen(line), v, 9);
 		if (got < 0 && first) { first = 0; continue; } /* a header */
@@ -494,27 +484,27 @@ mkResult mkScene_SetRotations(mkScene *s, const char *text, const char *name, ch
 			for (int i = 0; i < 9; ++i) R.m[i / 3][i % 3] = v[i];
 			if (!is_rotation(R)) {
 				free(rot);
-				return fail(MK_ERR_RANGE, msg, msglen, "%s:%d: the matrix is not a rotation: must have R^T R = I and "
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s:%d: the matrix is not a rotation: must have R^T R = I and "
 					"det R = 1 to within 1e-6", name, lineno);
 			}
 		} else if (got == 4) {
 			if (!quat_rotation(v, &R)) {
 				free(rot);
-				return fail(MK_ERR_RANGE, msg, msglen, "%s:%d: quaternion %g,%g,%g,%g is out of range: must be nonzero "
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s:%d: quaternion %g,%g,%g,%g is out of range: must be nonzero "
 					"and finite", name, lineno, v[0], v[1], v[2], v[3]);
 			}
 		} else {
 			free(rot);
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: expected 9 comma-separated numbers r11,...,r33 or a "
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: expected 9 comma-separated numbers r11,...,r33 or a "
 				"quaternion w,x,y,z, got '%.40s'", name, lineno, line);
 		}
 		if (!grow((void **)&rot, &cap, count + 1, sizeof *rot)) {
 			free(rot);
-			return fail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+			return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 		}
 		rot[count++] = R;
 	}
-	if (!count) { free(rot); return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: no rotations in the file", name); }
+	if (!count) { free(rot); return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: no rotations in the file", name); }
 	free(s->rotations);
 	s->rotations = rot;
 	s->orientation_count = count;

@@ -4,10 +4,11 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "message.h"
 
 #define SPEC_MAX_LEN 4096
 #define SPEC_MAX_VALUES 9
@@ -39,17 +40,6 @@ static unsigned allowed_keys(mkKind k)
 }
 
 static const unsigned shape_keys = 1u << K_A | 1u << K_B | 1u << K_C | 1u << K_EPS | 1u << K_EPS1 | 1u << K_EPS2;
-
-static mkResult fail(mkResult r, char *msg, size_t msglen, const char *fmt, ...)
-{
-	if (msg && msglen) {
-		va_list ap;
-		va_start(ap, fmt);
-		vsnprintf(msg, msglen, fmt, ap);
-		va_end(ap);
-	}
-	return r;
-}
 
 static void list_keys(unsigned mask, char *buf, size_t len)
 {
@@ -87,12 +77,12 @@ static int parse_numbers(const char *s, size_t len, int count, double *out, int 
 mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, char *msg, size_t msglen)
 {
 	if (!what) what = "body";
-	if (!text || !out) return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: no SPEC given", what);
-	if (dim != 2 && dim != 3) return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: dimension %d: must be 2 or 3", what, dim);
+	if (!text || !out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: no SPEC given", what);
+	if (dim != 2 && dim != 3) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: dimension %d: must be 2 or 3", what, dim);
 	size_t tlen = 0;
 	while (tlen <= SPEC_MAX_LEN && text[tlen]) ++tlen;
 	if (tlen > SPEC_MAX_LEN)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, SPEC_MAX_LEN);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, SPEC_MAX_LEN);
 
 	const char *p = text;
 	while (isspace((unsigned char)*p)) ++p;
@@ -100,17 +90,17 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 	while (*p && !isspace((unsigned char)*p)) ++p;
 	size_t klen = (size_t)(p - ks);
 	if (klen == 0)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: empty SPEC: expected 'KIND key=value ...' with KIND one of "
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: empty SPEC: expected 'KIND key=value ...' with KIND one of "
 			"circle, ellipse, superellipse (2D), sphere, ellipsoid, superquadric (3D)", what);
 	int kind = -1;
 	for (int i = 0; i < 6; ++i)
 		if (strlen(kind_names[i]) == klen && strncmp(kind_names[i], ks, klen) == 0) kind = i;
 	if (kind < 0)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: unknown kind '%.*s': must be one of circle, ellipse, "
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: unknown kind '%.*s': must be one of circle, ellipse, "
 			"superellipse (2D), sphere, ellipsoid, superquadric (3D)", what, (int)(klen > 64 ? 64 : klen), ks);
 	int kdim = kind <= MK_KIND_SUPERELLIPSE ? 2 : 3;
 	if (kdim != dim)
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind '%s' is %dD but the problem is %dD: use %s", what,
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind '%s' is %dD but the problem is %dD: use %s", what,
 			kind_names[kind], kdim, dim, dim == 2 ? "circle, ellipse or superellipse" : "sphere, ellipsoid or superquadric");
 
 	unsigned allow = allowed_keys((mkKind)kind), seen = 0;
@@ -125,17 +115,17 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 		const char *eq = memchr(ts, '=', tl);
 		int shown = (int)(tl > 64 ? 64 : tl);
 		if (!eq)
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: '%.*s' is not of the form key=value", what, shown, ts);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: '%.*s' is not of the form key=value", what, shown, ts);
 		size_t nl = (size_t)(eq - ts);
 		int key = -1;
 		for (int i = 0; i < K_COUNT; ++i)
 			if (strlen(key_names[i]) == nl && strncmp(key_names[i], ts, nl) == 0) key = i;
 		list_keys(allow, keys, sizeof keys);
 		if (key < 0 || !(allow & 1u << key))
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
 				what, (int)(nl > 32 ? 32 : nl), ts, kind_names[kind], keys);
 		if (seen & 1u << key)
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key_names[key]);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key_names[key]);
 		seen |= 1u << key;
 		int want = 1;
 		if (key == K_QUAT) want = 4;
@@ -143,13 +133,13 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 		else if (key == K_AT) want = dim;
 		size_t vl = tl - nl - 1;
 		if (vl == 0)
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key_names[key]);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key_names[key]);
 		int got = 0;
 		if (!parse_numbers(eq + 1, vl, want, val[key], &got)) {
 			if (got < 0)
-				return fail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key_names[key],
+				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key_names[key],
 					(int)(vl > 64 ? 64 : vl), eq + 1, want > 1 ? " list" : "");
-			return fail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
 				key_names[key], want, want > 1 ? "s" : "", got);
 		}
 	}
@@ -157,10 +147,10 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 	if ((need & seen) != need) {
 		unsigned missing = need & ~seen;
 		list_keys(missing, keys, sizeof keys);
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: %s needs %s", what, kind_names[kind], keys);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: %s needs %s", what, kind_names[kind], keys);
 	}
 	if ((seen & 1u << K_M) && (seen & (1u << K_ROT | 1u << K_SHEAR | 1u << K_QUAT)))
-		return fail(MK_ERR_ARGUMENT, msg, msglen, "%s: M replaces %s: give one or the other", what,
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: M replaces %s: give one or the other", what,
 			dim == 2 ? "rot and shear" : "quat");
 
 	out->dim = dim;
@@ -178,10 +168,10 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 			double rot = (seen & 1u << K_ROT) ? val[K_ROT][0] : 0.0;
 			double sh = (seen & 1u << K_SHEAR) ? val[K_SHEAR][0] : 0.0;
 			if (!isfinite(rot) || fabs(rot) > 1e6)
-				return fail(MK_ERR_RANGE, msg, msglen, "%s.rot = %g is out of range: must be a finite angle in "
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s.rot = %g is out of range: must be a finite angle in "
 					"radians in [-1e6, 1e6]", what, rot);
 			if (!isfinite(sh) || fabs(sh) > MK_MAP_ENTRY_MAX)
-				return fail(MK_ERR_RANGE, msg, msglen, "%s.shear = %g is out of range: must be a finite number "
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s.shear = %g is out of range: must be a finite number "
 					"in [-%g, %g]", what, sh, MK_MAP_ENTRY_MAX, MK_MAP_ENTRY_MAX);
 			b->M = mkMat2_Mul(mkMat2_Rotation(rot), mkMat2_Shear(sh));
 		}
@@ -205,12 +195,12 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 			const double *q = val[K_QUAT];
 			for (int i = 0; i < 4; ++i)
 				if (!isfinite(q[i]) || fabs(q[i]) > 1e150)
-					return fail(MK_ERR_RANGE, msg, msglen, "%s.quat component %d = %g is out of range: must be "
+					return mkFail(MK_ERR_RANGE, msg, msglen, "%s.quat component %d = %g is out of range: must be "
 						"finite with magnitude at most 1e150", what, i + 1, q[i]);
 			b->M = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
 			ok = mkMat3_IsFinite(b->M);
 			if (!ok)
-				return fail(MK_ERR_RANGE, msg, msglen, "%s.quat = %g,%g,%g,%g is zero: must be a nonzero "
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s.quat = %g,%g,%g,%g is zero: must be a nonzero "
 					"quaternion w,x,y,z", what, q[0], q[1], q[2], q[3]);
 		}
 		b->t.x = (seen & 1u << K_AT) ? val[K_AT][0] : 0.0;
