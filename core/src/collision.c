@@ -29,6 +29,8 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "geom_inline.h"
+
 /* Curvature terms r^(q-2) are clamped to this (q < 2 and r -> 0: the support
  * function is not twice differentiable on a body axis). */
 #define MK_CURV_MAX 1e12
@@ -61,21 +63,6 @@ const char *mkContact_Name(mkContact c)
 static double mkLen2(double a, double b)
 {
 	return sqrt(a * a + b * b);
-}
-
-/* mkVec3_Length and mkVec3_Normalize (geom.c) as inline copies for the
- * solver's loops, where the calls showed in profiles. The same arithmetic. */
-static inline double mkLen3(mkVec3 a)
-{
-	return sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
-}
-
-static inline mkVec3 mkNormalize3(mkVec3 a)
-{
-	double n = mkLen3(a);
-	if (!(n > 0.0) || !isfinite(n))
-		return mkVec3_Make(NAN, NAN, NAN);
-	return mkVec3_Scale(a, 1.0 / n);
 }
 
 /* ---- the support map with its Jacobian ------------------------------------ */
@@ -575,7 +562,7 @@ static double mkNormal_Value(const mkPairCtx *c, mkVec3 n)
  * at m = normalize(n + t e): <P_m e, d - x(m)> (up to a positive factor). */
 static double mkNormal_Slope(const mkPairCtx *c, mkVec3 n, mkVec3 e, double t)
 {
-	mkVec3 m = mkNormalize3(mkVec3_Add(n, mkVec3_Scale(e, t)));
+	mkVec3 m = mkVec3_NormalizeInline(mkVec3_Add(n, mkVec3_Scale(e, t)));
 	mkPairAt pe;
 	mkPair_Eval(c, m, &pe);
 	mkVec3 r = mkVec3_Sub(c->d, pe.x);
@@ -608,8 +595,8 @@ static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, 
 		else
 			hi = mid;
 	}
-	mkVec3 nlo = mkNormalize3(mkVec3_Add(n, mkVec3_Scale(e, lo)));
-	mkVec3 nhi = mkNormalize3(mkVec3_Add(n, mkVec3_Scale(e, hi)));
+	mkVec3 nlo = mkVec3_NormalizeInline(mkVec3_Add(n, mkVec3_Scale(e, lo)));
+	mkVec3 nhi = mkVec3_NormalizeInline(mkVec3_Add(n, mkVec3_Scale(e, hi)));
 	double flo = mkNormal_Value(c, nlo), fhi = mkNormal_Value(c, nhi);
 	mkVec3 nb = fhi > flo ? nhi : nlo;
 	if (fmax(flo, fhi) >= st->f)
@@ -806,7 +793,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			int taken = 0;
 			for (int k = 0; k < MK_BACKTRACK; ++k, t *= 0.5) {
 				mkVec3 m = mkVec3_Add(cur->n, mkVec3_Add(mkVec3_Scale(cur->t1, t * z0), mkVec3_Scale(cur->t2, t * z1)));
-				mkNormal_Eval(c, mkNormalize3(m), nxt);
+				mkNormal_Eval(c, mkVec3_NormalizeInline(m), nxt);
 				double gain = nxt->f - cur->f;
 				if (t * slope > noise ? gain >= 1e-4 * t * slope : gain >= -noise) {
 					taken = 1;
@@ -849,7 +836,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 		mkVec3 m = mkVec3_Add(st->n, mkVec3_Add(mkVec3_Scale(st->t1, s[0]), mkVec3_Scale(st->t2, s[1])));
 		/* The trial point is evaluated in full: most steps are taken. */
 		mkNormalState trial;
-		mkNormal_Eval(c, mkNormalize3(m), &trial);
+		mkNormal_Eval(c, mkVec3_NormalizeInline(m), &trial);
 		double gain = trial.f - st->f;
 		/* Within rounding of f the ratio means nothing: a step whose
 		 * predicted gain is below it is taken when it does not lose. */
@@ -920,7 +907,7 @@ static double mkScale(const mkBody3 *b1, const mkBody3 *b2)
 		double big = s.a > s.b ? s.a : s.b;
 		r[k] = (big > s.c ? big : s.c) * sqrt(fro);
 	}
-	return mkLen3(mkVec3_Sub(b2->t, b1->t)) + r[0] + r[1];
+	return mkVec3_LengthInline(mkVec3_Sub(b2->t, b1->t)) + r[0] + r[1];
 }
 
 double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
@@ -930,7 +917,7 @@ double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
 
 double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n)
 {
-	mkVec3 u = mkNormalize3(n);
+	mkVec3 u = mkVec3_NormalizeInline(n);
 	mkBody3 c1 = b1, c2 = b2;
 	c1.t = c2.t = mkVec3_Make(0.0, 0.0, 0.0);
 	return mkVec3_Dot(u, mkVec3_Sub(b2.t, b1.t)) - mkBody3_SupportValue(c1, u)
@@ -998,7 +985,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	out->scale = c.scale;
 	if (!isfinite(c.scale))
 		return MK_ERR_UNSUPPORTED;
-	double dl = mkLen3(c.d);
+	double dl = mkVec3_LengthInline(c.d);
 	mkVec3 n0 = dl > 0.0 ? mkVec3_Scale(c.d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);
 	mkNormalState best;
 	int iters = 0;
@@ -1017,13 +1004,13 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 			mkMat3 M = k == 0 ? b1.M : b2.M;
 			mkVec3 col[3];
 			for (int j = 0; j < 3; ++j) {
-				col[j] = mkNormalize3(mkVec3_Make(M.m[0][j], M.m[1][j], M.m[2][j]));
+				col[j] = mkVec3_NormalizeInline(mkVec3_Make(M.m[0][j], M.m[1][j], M.m[2][j]));
 				cand[nc++] = col[j];
 				cand[nc++] = mkVec3_Neg(col[j]);
 			}
 			/* and the eight diagonals of the body's frame */
 			for (int q = 0; q < 8; ++q)
-				cand[nc++] = mkNormalize3(mkVec3_Add(mkVec3_Scale(col[0], q & 1 ? -1.0 : 1.0),
+				cand[nc++] = mkVec3_NormalizeInline(mkVec3_Add(mkVec3_Scale(col[0], q & 1 ? -1.0 : 1.0),
 					mkVec3_Add(mkVec3_Scale(col[1], q & 2 ? -1.0 : 1.0), mkVec3_Scale(col[2], q & 4 ? -1.0 : 1.0))));
 		}
 		/* and a Fibonacci lattice of MK_FIB directions over the sphere */
@@ -1109,7 +1096,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	if (!ok || !isfinite(best.f) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
 		return MK_ERR_CONVERGENCE;
 	out->distance = best.f;
-	double span = mkLen3(mkVec3_Sub(out->p2, out->p1));
+	double span = mkVec3_LengthInline(mkVec3_Sub(out->p2, out->p1));
 	if (best.f > 0.0 && span - best.f > MK_COLLIDE3_TOUCH_TOL * c.scale) {
 		/* Near a kink the support points are not resolved by the normal
 		 * (a nearly flat face is crossed within rounding of n). Tighter
@@ -1117,7 +1104,7 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		 * body's supporting plane, then radially onto that body. */
 		mkVec3 q1 = mkRadial(b1, mkVec3_Sub(out->p2, mkVec3_Scale(best.n, best.f)));
 		mkVec3 q2 = mkRadial(b2, mkVec3_Add(out->p1, mkVec3_Scale(best.n, best.f)));
-		double s1 = mkLen3(mkVec3_Sub(out->p2, q1)), s2 = mkLen3(mkVec3_Sub(q2, out->p1));
+		double s1 = mkVec3_LengthInline(mkVec3_Sub(out->p2, q1)), s2 = mkVec3_LengthInline(mkVec3_Sub(q2, out->p1));
 		if (s1 < span && s1 <= s2) {
 			out->p1 = q1;
 			span = s1;
@@ -1267,7 +1254,7 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	out->scale = c.scale;
 	if (!isfinite(c.scale))
 		return MK_ERR_UNSUPPORTED;
-	double dl = mkLen3(c.d);
+	double dl = mkVec3_LengthInline(c.d);
 	out->restarts = 0;
 	if (dl == 0.0) {
 		/* Coincident centres: both bodies contain the point. */
@@ -1347,13 +1334,13 @@ mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 		}
 	}
 	out->iterations = iters;
-	mkVec3 n = mkNormalize3(st.m);
+	mkVec3 n = mkVec3_NormalizeInline(st.m);
 	out->normal = n;
 	out->p1 = mkVec3_Add(b1.t, st.e.a1.s);
 	out->p2 = mkVec3_Add(b2.t, st.e.a2.s);
 	out->residual = res / c.scale;
 	/* H = |m| (h1(n) + h2(-n)); f(n) = <n, d> - H / |m|. */
-	double ml = mkLen3(st.m);
+	double ml = mkVec3_LengthInline(st.m);
 	out->bound = mkVec3_Dot(n, c.d) - st.H / ml;
 	if (!isfinite(st.H) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
 		return MK_ERR_CONVERGENCE;

@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "geom_inline.h"
+
 mkMat2 mkMat2_Identity(void)
 {
 	mkMat2 r = {{{1.0, 0.0}, {0.0, 1.0}}};
@@ -41,18 +43,9 @@ mkVec2 mkVec2_Normalize(mkVec2 a)
 	return mkVec2_Scale(a, 1.0 / n);
 }
 
-double mkVec3_Length(mkVec3 a)
-{
-	return sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
-}
+double mkVec3_Length(mkVec3 a) { return mkVec3_LengthInline(a); }
 
-mkVec3 mkVec3_Normalize(mkVec3 a)
-{
-	double n = mkVec3_Length(a);
-	if (!(n > 0.0) || !isfinite(n))
-		return mkVec3_Make(NAN, NAN, NAN);
-	return mkVec3_Scale(a, 1.0 / n);
-}
+mkVec3 mkVec3_Normalize(mkVec3 a) { return mkVec3_NormalizeInline(a); }
 
 int mkMat2_IsFinite(mkMat2 a)
 {

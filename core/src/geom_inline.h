@@ -1,0 +1,27 @@
+/* geom_inline.h - the bodies of the small 3D vector helpers of mink/geom.h
+ * that hot loops inside the library call (the collision solver), as static
+ * inline functions: geom.c defines the exported mkVec3_Length and
+ * mkVec3_Normalize with them, so there is one arithmetic, inlined where a
+ * call would show in profiles. Internal to the library. */
+#ifndef MINK_GEOM_INLINE_H
+#define MINK_GEOM_INLINE_H
+
+#include <math.h>
+
+#include "mink/geom.h"
+
+static inline double mkVec3_LengthInline(mkVec3 a)
+{
+	return sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+}
+
+/* NaN vector for a zero or non-finite length, as mkVec3_Normalize. */
+static inline mkVec3 mkVec3_NormalizeInline(mkVec3 a)
+{
+	double n = mkVec3_LengthInline(a);
+	if (!(n > 0.0) || !isfinite(n))
+		return mkVec3_Make(NAN, NAN, NAN);
+	return mkVec3_Scale(a, 1.0 / n);
+}
+
+#endif
