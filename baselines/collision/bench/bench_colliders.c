@@ -22,12 +22,13 @@
  * Timing: CLOCK_MONOTONIC around the run call only (prepare untimed), the
  * entries interleaved pair by pair (A B C A B C ...), one thread.
  *
- * usage: bench_colliders [pairs per kind, default 2000] [seed, default 2022]
+ * usage: bench_colliders [--help] [pairs per kind, default 2000] [seed, default 2022]
  *                        [entries to leave out, comma-separated, e.g. implicit]
  *                        [only this kind: 0 ellipsoids .. 3 deep-overlap] */
 #define _POSIX_C_SOURCE 199309L
 #include <mink/colliders.h>
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -95,14 +96,55 @@ static int mkListed(const char *list, const char *name)
 enum { MK_KINDS = 4 };
 static const char *const mkKindNames[MK_KINDS] = { "ellipsoids", "superquadrics", "near-touching", "deep-overlap" };
 
+static const char mkUsage[] =
+	"usage: bench_colliders [PAIRS [SEED [SKIP [KIND]]]]\n"
+	"Every entry of the collider registry on the same pairs, interleaved pair by pair;\n"
+	"prints per pair kind and entry the median and mean time, failures, status\n"
+	"disagreements with the referee and the distance/penetration error distribution.\n"
+	"  PAIRS  pairs per kind, an integer in [1, 10000000] (default 2000)\n"
+	"  SEED   run seed, 0..2^64-1, decimal or 0x.. (default 2022)\n"
+	"  SKIP   entries to leave out, comma-separated, e.g. implicit (default none)\n"
+	"  KIND   only this kind: 0 ellipsoids, 1 superquadrics, 2 near-touching,\n"
+	"         3 deep-overlap (default all)\n";
+
+/* An integer argument in [lo, hi], or exit 2 with one line naming it. */
+static long mkArgInt(const char *name, const char *text, long lo, long hi)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(text, &end, 10);
+	if (errno || end == text || *end || v < lo || v > hi) {
+		fprintf(stderr, "bench_colliders: %s = '%s' is out of range: must be an integer in [%ld, %ld]\n", name,
+			text, lo, hi);
+		exit(2);
+	}
+	return v;
+}
+
 int main(int argc, char **argv)
 {
-	int pairs = argc > 1 ? atoi(argv[1]) : 2000;
-	unsigned long long seed = argc > 2 ? strtoull(argv[2], NULL, 0) : 2022;
-	if (pairs < 1)
-		pairs = 1;
+	if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
+		fputs(mkUsage, stdout);
+		return 0;
+	}
+	if (argc > 5) {
+		fputs(mkUsage, stderr);
+		return 2;
+	}
+	int pairs = argc > 1 ? (int)mkArgInt("PAIRS", argv[1], 1, 10000000) : 2000;
+	unsigned long long seed = 2022;
+	if (argc > 2) {
+		char *end;
+		errno = 0;
+		seed = strtoull(argv[2], &end, 0);
+		if (errno || end == argv[2] || *end || argv[2][0] == '-') {
+			fprintf(stderr, "bench_colliders: SEED = '%s' is out of range: must be an integer in [0, 2^64-1]\n",
+				argv[2]);
+			return 2;
+		}
+	}
 	const char *skip = argc > 3 ? argv[3] : "";
-	int only = argc > 4 ? atoi(argv[4]) : -1;
+	int only = argc > 4 ? (int)mkArgInt("KIND", argv[4], 0, MK_KINDS - 1) : -1;
 	int ne = mkColliders_Count();
 	double *times = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
 	double *derr = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
