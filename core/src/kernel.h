@@ -137,6 +137,7 @@ void mkKOne3_Run(const mkKOne3 *w, const mkMat3 *M2, int m, double *scratch, dou
  * float, points are widened back to double on store. */
 typedef struct mkKShape2f {
 	float a, b, eps, q, qm1, k, inv2me, twome;
+	float ia, ib; /* 1/a, 1/b (KDIV_AXIS) */
 	int ellipse;
 } mkKShape2f;
 
@@ -144,6 +145,7 @@ typedef struct mkKShape3f {
 	float a, b, c, e1, e2;
 	float q1, q1m1, k1, q2, q2m1, k2, invq2;
 	float inv2me1, inv2me2, twome1, twome2;
+	float ia, ib, ic; /* 1/a, 1/b, 1/c (KDIV_AXIS) */
 	int ellipse;
 } mkKShape3f;
 
@@ -178,6 +180,20 @@ void mkK2_Run_f32_avx512(const mkKPlan2f *p, const double *ux, const double *uy,
 	double *x, double *y, double *kx, double *ky);
 void mkK3_Run_f32_avx512(const mkKPlan3f *p, const double *ux, const double *uy, const double *uz, int n,
 	double *x, double *y, double *z, double *kx, double *ky, double *kz);
+#endif
+
+/* The same kernels on the caller's float arrays (mkSum2f_Batch): inputs
+ * loaded as floats and normalised in float where |u|^2 is off 1 by more
+ * than MK_F32IO_UNIT_TOL, outputs stored as floats. */
+#define MK_F32IO_DECL(isa) \
+	void mkK2_Run_f32io_##isa(const mkKPlan2f *p, const float *ux, const float *uy, int n, \
+		float *x, float *y, float *kx, float *ky); \
+	void mkK3_Run_f32io_##isa(const mkKPlan3f *p, const float *ux, const float *uy, const float *uz, int n, \
+		float *x, float *y, float *z, float *kx, float *ky, float *kz);
+MK_F32IO_DECL(scalar)
+#if defined(MINK_HAVE_X86_KERNELS)
+MK_F32IO_DECL(avx2)
+MK_F32IO_DECL(avx512)
 #endif
 
 /* Scalar single-shape maps of the canonical shapes, from the scalar build of

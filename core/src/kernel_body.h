@@ -7,7 +7,7 @@
  *   KW           lanes per KV
  *   KEXP KLOG KSQRT             elementwise functions
  *   KABS(v) KCOPYSIGN(mag, s) KSEL(mask, a, b)   (mask ? a : b)
- *   KLOAD(p) KSTORE(p, v)       unaligned load / store of KW doubles
+ *   KLOAD(p) KSTORE(p, v)       unaligned load / store of KW values of type KIO
  *   KSPLAT(s)    a lane value with every lane equal to the double s
  *   KALL(mask)   nonzero when the mask holds in every lane
  *   KFN(name)    appends the ISA suffix to a function name
@@ -19,6 +19,13 @@
  *   KSHAPE2 KSHAPE3 KPLAN2 KPLAN3   the prepared constants in that type
  *                (default mkKShape2 ... mkKPlan3)
  *   KTINY KUNIT_TOL   the two thresholds below, for that type's range
+ *   KIO          type of the caller's arrays of mkK2_Run/mkK3_Run (default
+ *                double; float for the tier's float-buffer builds)
+ *   KRSQRT(v)    1/sqrt(v) of lanes that are positive and normal (default
+ *                1.0 / KSQRT(v); a build may use a faster approximation
+ *                whose error it states)
+ *   KDIV_AXIS(v, s, ax)   v divided by the semi-axis s->ax (default the
+ *                division; a build may multiply by a prepared reciprocal)
  *   KLOAD_UNIT2(s, px, py, u1, u2) / KLOAD_UNIT3(...)   load KW parameter
  *                vectors from doubles at px[s], py[s] and make them unit
  *                length (default: the load-and-normalise below, on KV)
@@ -55,6 +62,15 @@
 #endif
 #ifndef KUNIT_TOL
 #define KUNIT_TOL 1e-15 /* |u|^2 - 1 of a unit vector rounded to double, with room */
+#endif
+#ifndef KIO
+#define KIO double
+#endif
+#ifndef KRSQRT
+#define KRSQRT(v) (1.0 / KSQRT(v))
+#endif
+#ifndef KDIV_AXIS
+#define KDIV_AXIS(v, s, ax) ((v) / (s)->ax)
 #endif
 #ifndef KS
 #define KS double
@@ -117,7 +133,7 @@ static inline void KFN(se_surface)(const KSHAPE2 *s, const KV *u1, const KV *u2,
 	if (s->ellipse) {
 		KFOR(j) {
 			x1[j] = s->a * u1[j]; x2[j] = s->b * u2[j];
-			m1[j] = u1[j] / s->a; m2[j] = u2[j] / s->b;
+			m1[j] = KDIV_AXIS(u1[j], s, a); m2[j] = KDIV_AXIS(u2[j], s, b);
 		}
 		return;
 	}
@@ -142,7 +158,7 @@ static inline void KFN(se_support)(const KSHAPE2 *s, const KV *d1, const KV *d2,
 	if (s->ellipse) { /* A^2 d / |A d| */
 		KFOR(j) {
 			KV v1 = s->a * d1[j], v2 = s->b * d2[j];
-			KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2);
+			KV inv = KRSQRT(v1 * v1 + v2 * v2);
 			x1[j] = s->a * v1 * inv; x2[j] = s->b * v2 * inv;
 		}
 		return;
@@ -210,7 +226,7 @@ static inline void KFN(se_dir)(const KSHAPE2 *s, int form, const KV *d1, const K
 }
 
 /* Load KP lane vectors of parameters and make them unit length. */
-static inline void KFN(load_unit2)(const double *pux, const double *puy, KV *u1, KV *u2)
+static inline void KFN(load_unit2)(const KIO *pux, const KIO *puy, KV *u1, KV *u2)
 {
 #ifdef KLOAD_UNIT2
 	KFOR(j) KLOAD_UNIT2(j * KW, pux, puy, u1[j], u2[j]);
@@ -221,11 +237,11 @@ static inline void KFN(load_unit2)(const double *pux, const double *puy, KV *u1,
 		 * used as given, so the caller's parameters are not moved by an
 		 * ulp; others are scaled, by the largest component first so that
 		 * no square under- or overflows. */
-		KM unit = KABS(u1[j] * u1[j] + u2[j] * u2[j] - 1.0) <= KSPLAT(KUNIT_TOL);
+		KM unit = KABS(u1[j] * u1[j] + u2[j] * u2[j] - KC(1.0)) <= KSPLAT(KUNIT_TOL);
 		if (!KALL(unit)) {
 			KV m = KFN(kmax)(KABS(u1[j]), KABS(u2[j]));
 			KV v1 = u1[j] / m, v2 = u2[j] / m;
-			KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2);
+			KV inv = KC(1.0) / KSQRT(v1 * v1 + v2 * v2);
 			u1[j] = KSEL(unit, u1[j], v1 * inv); u2[j] = KSEL(unit, u2[j], v2 * inv);
 		}
 	}
@@ -233,8 +249,8 @@ static inline void KFN(load_unit2)(const double *pux, const double *puy, KV *u1,
 }
 
 /* KP * KW points: pux[0 .. KP*KW) and so on. */
-static inline void KFN(block2)(const KPLAN2 *p, const double *pux, const double *puy,
-	double *px, double *py, double *pkx, double *pky)
+static inline void KFN(block2)(const KPLAN2 *p, const KIO *pux, const KIO *puy,
+	KIO *px, KIO *py, KIO *pkx, KIO *pky)
 {
 	KV u1[KP], u2[KP];
 	KFN(load_unit2)(pux, puy, u1, u2);
@@ -269,15 +285,15 @@ static inline void KFN(block2)(const KPLAN2 *p, const double *pux, const double 
 
 #define KBLK (KW * KP) /* points per block */
 
-void KFN(mkK2_Run)(const KPLAN2 *p, const double *ux, const double *uy, int n,
-	double *x, double *y, double *kx, double *ky)
+void KFN(mkK2_Run)(const KPLAN2 *p, const KIO *ux, const KIO *uy, int n,
+	KIO *x, KIO *y, KIO *kx, KIO *ky)
 {
 	int i = 0;
 	for (; i + KBLK <= n; i += KBLK)
 		KFN(block2)(p, ux + i, uy + i, x + i, y + i, kx ? kx + i : NULL, ky ? ky + i : NULL);
 	int r = n - i;
 	if (r > 0) { /* tail: pad a block with copies of the last input */
-		double bu[2][KBLK], bo[4][KBLK];
+		KIO bu[2][KBLK], bo[4][KBLK];
 		for (int j = 0; j < KBLK; ++j) {
 			int s = i + (j < r ? j : r - 1);
 			bu[0][j] = ux[s]; bu[1][j] = uy[s];
@@ -292,14 +308,28 @@ void KFN(mkK2_Run)(const KPLAN2 *p, const double *ux, const double *uy, int n,
 
 /* ---- 3D ------------------------------------------------------------------ */
 
+/* An ellipsoid's point f(u) = A u and a positive multiple of its gradient,
+ * A^-1 u, on one lane vector (A = diag(a, b, c)). */
+static inline void KFN(ell_surface3)(const KSHAPE3 *s, KV u1, KV u2, KV u3,
+	KV *x1, KV *x2, KV *x3, KV *m1, KV *m2, KV *m3)
+{
+	*x1 = s->a * u1; *x2 = s->b * u2; *x3 = s->c * u3;
+	*m1 = KDIV_AXIS(u1, s, a); *m2 = KDIV_AXIS(u2, s, b); *m3 = KDIV_AXIS(u3, s, c);
+}
+
+/* An ellipsoid's support point A^2 d / |A d| on one lane vector. */
+static inline void KFN(ell_support3)(const KSHAPE3 *s, KV d1, KV d2, KV d3, KV *x1, KV *x2, KV *x3)
+{
+	KV v1 = s->a * d1, v2 = s->b * d2, v3 = s->c * d3;
+	KV inv = KRSQRT(v1 * v1 + v2 * v2 + v3 * v3);
+	*x1 = s->a * v1 * inv; *x2 = s->b * v2 * inv; *x3 = s->c * v3 * inv;
+}
+
 static inline void KFN(sq_surface)(const KSHAPE3 *s, const KV *u1, const KV *u2, const KV *u3,
 	KV *x1, KV *x2, KV *x3, KV *m1, KV *m2, KV *m3)
 {
 	if (s->ellipse) {
-		KFOR(j) {
-			x1[j] = s->a * u1[j]; x2[j] = s->b * u2[j]; x3[j] = s->c * u3[j];
-			m1[j] = u1[j] / s->a; m2[j] = u2[j] / s->b; m3[j] = u3[j] / s->c;
-		}
+		KFOR(j) KFN(ell_surface3)(s, u1[j], u2[j], u3[j], &x1[j], &x2[j], &x3[j], &m1[j], &m2[j], &m3[j]);
 		return;
 	}
 	/* rho = cos(eta) and (cw, sw) = (cos, sin)(omega) come from u1, u2 directly,
@@ -333,11 +363,7 @@ static inline void KFN(sq_support)(const KSHAPE3 *s, const KV *d1, const KV *d2,
 	KV *x1, KV *x2, KV *x3)
 {
 	if (s->ellipse) {
-		KFOR(j) {
-			KV v1 = s->a * d1[j], v2 = s->b * d2[j], v3 = s->c * d3[j];
-			KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2 + v3 * v3);
-			x1[j] = s->a * v1 * inv; x2[j] = s->b * v2 * inv; x3[j] = s->c * v3 * inv;
-		}
+		KFOR(j) KFN(ell_support3)(s, d1[j], d2[j], d3[j], &x1[j], &x2[j], &x3[j]);
 		return;
 	}
 	KV p1[KP], p2[KP], p3[KP], r1[KP], r2[KP], mx[KP], L[KP], g[KP], rg[KP], r3[KP], mxo[KP], Lo[KP];
@@ -412,31 +438,67 @@ static inline void KFN(sq_dir)(const KSHAPE3 *s, int form, const KV *d1, const K
 
 #define KMV3(A, v1, v2, v3, i) ((A)[i][0] * (v1) + (A)[i][1] * (v2) + (A)[i][2] * (v3))
 
-/* As load_unit2. */
-static inline void KFN(load_unit3)(const double *pux, const double *puy, const double *puz, KV *u1, KV *u2, KV *u3)
+/* As load_unit2, for one lane vector. */
+static inline void KFN(load_unit3_one)(const KIO *pux, const KIO *puy, const KIO *puz, KV *u1, KV *u2, KV *u3)
 {
 #ifdef KLOAD_UNIT3
-	KFOR(j) KLOAD_UNIT3(j * KW, pux, puy, puz, u1[j], u2[j], u3[j]);
+	KLOAD_UNIT3(0, pux, puy, puz, *u1, *u2, *u3);
 #else
-	KFOR(j) {
-		u1[j] = KLOAD(pux + j * KW); u2[j] = KLOAD(puy + j * KW); u3[j] = KLOAD(puz + j * KW);
-		/* as in load_unit2 */
-		KM unit = KABS(u1[j] * u1[j] + u2[j] * u2[j] + u3[j] * u3[j] - 1.0) <= KSPLAT(KUNIT_TOL);
-		if (!KALL(unit)) {
-			KV m = KFN(kmax)(KFN(kmax)(KABS(u1[j]), KABS(u2[j])), KABS(u3[j]));
-			KV v1 = u1[j] / m, v2 = u2[j] / m, v3 = u3[j] / m;
-			KV inv = 1.0 / KSQRT(v1 * v1 + v2 * v2 + v3 * v3);
-			u1[j] = KSEL(unit, u1[j], v1 * inv);
-			u2[j] = KSEL(unit, u2[j], v2 * inv);
-			u3[j] = KSEL(unit, u3[j], v3 * inv);
-		}
+	*u1 = KLOAD(pux); *u2 = KLOAD(puy); *u3 = KLOAD(puz);
+	KM unit = KABS(*u1 * *u1 + *u2 * *u2 + *u3 * *u3 - KC(1.0)) <= KSPLAT(KUNIT_TOL);
+	if (!KALL(unit)) {
+		KV m = KFN(kmax)(KFN(kmax)(KABS(*u1), KABS(*u2)), KABS(*u3));
+		KV v1 = *u1 / m, v2 = *u2 / m, v3 = *u3 / m;
+		KV inv = KC(1.0) / KSQRT(v1 * v1 + v2 * v2 + v3 * v3);
+		*u1 = KSEL(unit, *u1, v1 * inv);
+		*u2 = KSEL(unit, *u2, v2 * inv);
+		*u3 = KSEL(unit, *u3, v3 * inv);
 	}
 #endif
 }
 
-static inline void KFN(block3)(const KPLAN3 *p, const double *pux, const double *puy, const double *puz,
-	double *px, double *py, double *pz, double *pkx, double *pky, double *pkz)
+static inline void KFN(load_unit3)(const KIO *pux, const KIO *puy, const KIO *puz, KV *u1, KV *u2, KV *u3)
 {
+	KFOR(j) KFN(load_unit3_one)(pux + j * KW, puy + j * KW, puz + j * KW, &u1[j], &u2[j], &u3[j]);
+}
+
+/* block3 for a pair of ellipsoids: nothing out of line to overlap, so each
+ * lane vector goes through the whole pipeline before the next, which keeps
+ * its values in registers (the interleaved block spills them with 16 float
+ * lanes). Per lane the same operations in the same order as block3. */
+static inline void KFN(block3_ee)(const KPLAN3 *p, const KIO *pux, const KIO *puy, const KIO *puz,
+	KIO *px, KIO *py, KIO *pz, KIO *pkx, KIO *pky, KIO *pkz)
+{
+	_Pragma("GCC unroll 1") for (int j = 0; j < KP; ++j) {
+		int o = j * KW;
+		KV u1, u2, u3, x1, x2, x3, v1, v2, v3, y1, y2, y3;
+		KFN(load_unit3_one)(pux + o, puy + o, puz + o, &u1, &u2, &u3);
+		if (p->param == MK_PARAM_SURFACE) {
+			KFN(ell_surface3)(&p->s1, u1, u2, u3, &x1, &x2, &x3, &v1, &v2, &v3);
+		} else {
+			KFN(ell_support3)(&p->s1, KMV3(p->M1T, u1, u2, u3, 0), KMV3(p->M1T, u1, u2, u3, 1),
+				KMV3(p->M1T, u1, u2, u3, 2), &x1, &x2, &x3);
+			v1 = u1; v2 = u2; v3 = u3;
+		}
+		KFN(ell_support3)(&p->s2, KMV3(p->D2, v1, v2, v3, 0), KMV3(p->D2, v1, v2, v3, 1),
+			KMV3(p->D2, v1, v2, v3, 2), &y1, &y2, &y3);
+		KV k1 = p->t1[0] + KMV3(p->M1, x1, x2, x3, 0);
+		KV k2 = p->t1[1] + KMV3(p->M1, x1, x2, x3, 1);
+		KV k3 = p->t1[2] + KMV3(p->M1, x1, x2, x3, 2);
+		KSTORE(px + o, k1 + (p->sigma * KMV3(p->M2, y1, y2, y3, 0) + p->t2p[0]));
+		KSTORE(py + o, k2 + (p->sigma * KMV3(p->M2, y1, y2, y3, 1) + p->t2p[1]));
+		KSTORE(pz + o, k3 + (p->sigma * KMV3(p->M2, y1, y2, y3, 2) + p->t2p[2]));
+		if (pkx) { KSTORE(pkx + o, k1); KSTORE(pky + o, k2); KSTORE(pkz + o, k3); }
+	}
+}
+
+static inline void KFN(block3)(const KPLAN3 *p, const KIO *pux, const KIO *puy, const KIO *puz,
+	KIO *px, KIO *py, KIO *pz, KIO *pkx, KIO *pky, KIO *pkz)
+{
+	if (p->s1.ellipse && p->s2.ellipse) {
+		KFN(block3_ee)(p, pux, puy, puz, px, py, pz, pkx, pky, pkz);
+		return;
+	}
 	KV u1[KP], u2[KP], u3[KP];
 	KFN(load_unit3)(pux, puy, puz, u1, u2, u3);
 	KV x1[KP], x2[KP], x3[KP], v1[KP], v2[KP], v3[KP];
@@ -470,8 +532,8 @@ static inline void KFN(block3)(const KPLAN3 *p, const double *pux, const double 
 	}
 }
 
-void KFN(mkK3_Run)(const KPLAN3 *p, const double *ux, const double *uy, const double *uz, int n,
-	double *x, double *y, double *z, double *kx, double *ky, double *kz)
+void KFN(mkK3_Run)(const KPLAN3 *p, const KIO *ux, const KIO *uy, const KIO *uz, int n,
+	KIO *x, KIO *y, KIO *z, KIO *kx, KIO *ky, KIO *kz)
 {
 	int i = 0;
 	for (; i + KBLK <= n; i += KBLK)
@@ -479,7 +541,7 @@ void KFN(mkK3_Run)(const KPLAN3 *p, const double *ux, const double *uy, const do
 			kx ? kx + i : NULL, ky ? ky + i : NULL, kz ? kz + i : NULL);
 	int r = n - i;
 	if (r > 0) {
-		double bu[3][KBLK], bo[6][KBLK];
+		KIO bu[3][KBLK], bo[6][KBLK];
 		for (int j = 0; j < KBLK; ++j) {
 			int s = i + (j < r ? j : r - 1);
 			bu[0][j] = ux[s]; bu[1][j] = uy[s]; bu[2][j] = uz[s];

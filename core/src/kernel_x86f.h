@@ -8,7 +8,8 @@
  * with a faster float variant (exp has none). The including file
  * defines MK_X86F_W to 8 or 16 and is compiled with the matching -m flags.
  * Loads read doubles, normalise them in double (kernel_f32.h) and round to
- * float; stores widen to double. */
+ * float; stores widen to double. With MK_F32_FLOATIO (kernel_f32io_*.c)
+ * they read and write the caller's floats instead. */
 #include <immintrin.h>
 #include <stddef.h>
 #include <string.h>
@@ -24,7 +25,11 @@ typedef __m256d mkFD; /* half a lane vector, in double */
 #  define KLOG Sleef_logf8_u35avx2
 #  define KSQRT _mm256_sqrt_ps
 #  define MK_FD_SQRT _mm256_sqrt_pd
-#  define KFN(name) name##_f32_avx2
+#  ifdef MK_F32_FLOATIO
+#    define KFN(name) name##_f32io_avx2
+#  else
+#    define KFN(name) name##_f32_avx2
+#  endif
 static inline mkFV mkF_join(mkFD lo, mkFD hi) { return _mm256_set_m128(_mm256_cvtpd_ps(hi), _mm256_cvtpd_ps(lo)); }
 static inline mkFD mkF_lo(mkFV v) { return _mm256_cvtps_pd(_mm256_castps256_ps128(v)); }
 static inline mkFD mkF_hi(mkFV v) { return _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)); }
@@ -36,7 +41,11 @@ typedef __m512d mkFD;
 #  define KLOG Sleef_logf16_u35avx512f
 #  define KSQRT _mm512_sqrt_ps
 #  define MK_FD_SQRT _mm512_sqrt_pd
-#  define KFN(name) name##_f32_avx512
+#  ifdef MK_F32_FLOATIO
+#    define KFN(name) name##_f32io_avx512
+#  else
+#    define KFN(name) name##_f32_avx512
+#  endif
 static inline mkFV mkF_join(mkFD lo, mkFD hi)
 {
 	__m512d w = _mm512_castps_pd(_mm512_castps256_ps512(_mm512_cvtpd_ps(lo)));
@@ -143,14 +152,38 @@ static inline void mkF_load_unit3(const double *px, const double *py, const doub
 #define KSEL mkF_sel
 #define KSPLAT(s) ((mkFV){0} + (float)(s))
 #define KALL mkF_all
-#define KLOAD mkF_load
-#define KSTORE mkF_store
-#define KLOAD_UNIT2(s, px, py, u1, u2) mkF_load_unit2((px) + (s), (py) + (s), &(u1), &(u2))
-#define KLOAD_UNIT3(s, px, py, pz, u1, u2, u3) \
+#ifdef MK_F32_FLOATIO
+/* Float arrays: plain loads and stores; kernel_body.h's unit test and
+ * normalisation run on the float lanes. */
+static inline mkFV mkF_loadf(const float *p) { mkFV v; memcpy(&v, p, sizeof v); return v; }
+static inline void mkF_storef(float *p, mkFV v) { memcpy(p, &v, sizeof v); }
+#  define KLOAD mkF_loadf
+#  define KSTORE mkF_storef
+#else
+#  define KLOAD mkF_load
+#  define KSTORE mkF_store
+#  define KLOAD_UNIT2(s, px, py, u1, u2) mkF_load_unit2((px) + (s), (py) + (s), &(u1), &(u2))
+#  define KLOAD_UNIT3(s, px, py, pz, u1, u2, u3) \
 	mkF_load_unit3((px) + (s), (py) + (s), (pz) + (s), &(u1), &(u2), &(u3))
+#endif
 #ifndef MK_X86F_P
 #  define MK_X86F_P 4
 #endif
 #define KP MK_X86F_P
+/* 1/sqrt(v) for the ellipse and ellipsoid support points: the hardware
+ * estimate (relative error below 2^-14 with AVX-512's rsqrt14, 1.5 * 2^-12
+ * with AVX's rsqrt) and one Newton step, y (3 - v y^2) / 2, which squares the
+ * estimate's error (below 1e-8, resp. 2e-7 before rounding) instead of a square
+ * root and a division, the two slowest instructions of those kernels. */
+static inline mkFV mkF_rsqrt(mkFV v)
+{
+#if MK_X86F_W == 8
+	mkFV y = _mm256_rsqrt_ps(v);
+#else
+	mkFV y = _mm512_rsqrt14_ps(v);
+#endif
+	return (0.5f * y) * (3.0f - (v * y) * y);
+}
+#define KRSQRT mkF_rsqrt
 
 #include "kernel_body.h"

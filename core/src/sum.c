@@ -129,6 +129,7 @@ static void shape2f(mkKShape2f *f, const mkKShape2 *s, double inv)
 	f->a = (float)(s->a * inv); f->b = (float)(s->b * inv); f->eps = (float)s->eps;
 	f->q = (float)s->q; f->qm1 = (float)s->qm1; f->k = (float)s->k;
 	f->inv2me = (float)s->inv2me; f->twome = (float)s->twome;
+	f->ia = (float)(1.0 / (s->a * inv)); f->ib = (float)(1.0 / (s->b * inv));
 	f->ellipse = s->ellipse;
 }
 
@@ -140,6 +141,7 @@ static void shape3f(mkKShape3f *f, const mkKShape3 *s, double inv)
 	f->q2 = (float)s->q2; f->q2m1 = (float)s->q2m1; f->k2 = (float)s->k2; f->invq2 = (float)s->invq2;
 	f->inv2me1 = (float)s->inv2me1; f->inv2me2 = (float)s->inv2me2;
 	f->twome1 = (float)s->twome1; f->twome2 = (float)s->twome2;
+	f->ia = (float)(1.0 / (s->a * inv)); f->ib = (float)(1.0 / (s->b * inv)); f->ic = (float)(1.0 / (s->c * inv));
 	f->ellipse = s->ellipse;
 }
 
@@ -356,6 +358,88 @@ mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 	case MK_IMPL_AVX2: mkK3_Run_avx2(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
 #endif
 	default: mkK3_Run_scalar(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+	}
+	return MK_OK;
+}
+
+/* ---- float arrays --------------------------------------------------------------- */
+
+#define MK_F32IO_CHUNK 256 /* points widened to double at a time (fallback path) */
+
+mkResult mkSum2f_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
+	const float *ux, const float *uy, int n,
+	float *x, float *y, float *kx, float *ky)
+{
+	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !x || !y)) || (!kx != !ky))
+		return MK_ERR_ARGUMENT;
+	assert(mkBody2_IsValid(b1, "body1", NULL, 0) && mkBody2_IsValid(b2, "body2", NULL, 0));
+	mkImpl impl = mkImpl_Resolve(opt->impl);
+	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	if (opt->precision == MK_PRECISION_F32 && opt->form != MK_FORM_PAPER) {
+		mkKPlan2 p;
+		mkKPlan2f pf;
+		plan2(&p, b1, b2, opt);
+		if (mkKPlan2f_From(&pf, &p)) {
+			switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+			case MK_IMPL_AVX512: mkK2_Run_f32io_avx512(&pf, ux, uy, n, x, y, kx, ky); break;
+			case MK_IMPL_AVX2: mkK2_Run_f32io_avx2(&pf, ux, uy, n, x, y, kx, ky); break;
+#endif
+			default: mkK2_Run_f32io_scalar(&pf, ux, uy, n, x, y, kx, ky); break;
+			}
+			return MK_OK;
+		}
+	}
+	double u[2][MK_F32IO_CHUNK], o[4][MK_F32IO_CHUNK];
+	for (int i = 0; i < n; i += MK_F32IO_CHUNK) {
+		int m = n - i < MK_F32IO_CHUNK ? n - i : MK_F32IO_CHUNK;
+		for (int j = 0; j < m; ++j) { u[0][j] = ux[i + j]; u[1][j] = uy[i + j]; }
+		mkResult r = mkSum2_Batch(b1, b2, opt, u[0], u[1], m, o[0], o[1], kx ? o[2] : NULL, kx ? o[3] : NULL);
+		if (r != MK_OK) return r;
+		for (int j = 0; j < m; ++j) {
+			x[i + j] = (float)o[0][j]; y[i + j] = (float)o[1][j];
+			if (kx) { kx[i + j] = (float)o[2][j]; ky[i + j] = (float)o[3][j]; }
+		}
+	}
+	return MK_OK;
+}
+
+mkResult mkSum3f_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
+	const float *ux, const float *uy, const float *uz, int n,
+	float *x, float *y, float *z, float *kx, float *ky, float *kz)
+{
+	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !uz || !x || !y || !z))
+		|| (!kx != !ky) || (!kx != !kz))
+		return MK_ERR_ARGUMENT;
+	assert(mkBody3_IsValid(b1, "body1", NULL, 0) && mkBody3_IsValid(b2, "body2", NULL, 0));
+	mkImpl impl = mkImpl_Resolve(opt->impl);
+	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	if (opt->precision == MK_PRECISION_F32 && opt->form != MK_FORM_PAPER) {
+		mkKPlan3 p;
+		mkKPlan3f pf;
+		plan3(&p, b1, b2, opt);
+		if (mkKPlan3f_From(&pf, &p)) {
+			switch (impl) {
+#if defined(MINK_HAVE_X86_KERNELS)
+			case MK_IMPL_AVX512: mkK3_Run_f32io_avx512(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+			case MK_IMPL_AVX2: mkK3_Run_f32io_avx2(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+#endif
+			default: mkK3_Run_f32io_scalar(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
+			}
+			return MK_OK;
+		}
+	}
+	double u[3][MK_F32IO_CHUNK], o[6][MK_F32IO_CHUNK];
+	for (int i = 0; i < n; i += MK_F32IO_CHUNK) {
+		int m = n - i < MK_F32IO_CHUNK ? n - i : MK_F32IO_CHUNK;
+		for (int j = 0; j < m; ++j) { u[0][j] = ux[i + j]; u[1][j] = uy[i + j]; u[2][j] = uz[i + j]; }
+		mkResult r = mkSum3_Batch(b1, b2, opt, u[0], u[1], u[2], m, o[0], o[1], o[2],
+			kx ? o[3] : NULL, kx ? o[4] : NULL, kx ? o[5] : NULL);
+		if (r != MK_OK) return r;
+		for (int j = 0; j < m; ++j) {
+			x[i + j] = (float)o[0][j]; y[i + j] = (float)o[1][j]; z[i + j] = (float)o[2][j];
+			if (kx) { kx[i + j] = (float)o[3][j]; ky[i + j] = (float)o[4][j]; kz[i + j] = (float)o[5][j]; }
+		}
 	}
 	return MK_OK;
 }

@@ -1,9 +1,12 @@
 /* test_sum_f32.c - the single-precision tier of the batch closed forms
  * (mkSumOptions.precision = MK_PRECISION_F32): its vector kernels against
  * its scalar reference, hand-worked circles, the tails of a batch, every
- * output finite at the corners of the valid ranges, and the options.
+ * output finite at the corners of the valid ranges, the options, and the
+ * float-array entry points.
  * Its accuracy against 256-bit MPFR is asserted in tests/reference
  * (core.ref.sum2.f32.*, core.ref.sum3.f32.*). */
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -222,6 +225,129 @@ static void test_options(void)
 	ENSURE(!mkSum2_TierHolds(b, b, &opt));
 }
 
+/* The float-array entry points (mkSum2f_Batch, mkSum3f_Batch). Their
+ * accuracy against MPFR is asserted in core.ref.sum{2,3}.f32io.*; here:
+ *  - where the tier holds they run the same arithmetic as the double-array
+ *    call on the same float-valued parameter vectors, except for the unit
+ *    test and normalisation (in double there, in float here): against the
+ *    double-array f32 call, a few float ulps of the scale (allowed 1e-6 of
+ *    it, the tier's stated accuracy; the largest seen is printed);
+ *  - every tail length of a batch gives the points of the whole batch, bit
+ *    for bit, and writes nothing past n;
+ *  - in double precision and outside the tier's domain they return the
+ *    double call's points rounded to float, exactly;
+ *  - a parameter vector scaled by 1e30 or 1e-30 (its square leaves the float
+ *    range) gives the unit vector's point within the tier's accuracy;
+ *  - argument errors as for the double-array call. */
+static float fu[3][NMAX], fo[2][6][NMAX];
+
+static void test_float_arrays(void)
+{
+	unsigned long long seed = 29;
+	double worst = 0.0;
+	for (int trial = 0; trial < 20; ++trial) {
+		mkBody3 b[2];
+		double S = draw_pair3(&seed, b);
+		int n = 100;
+		mkSample3_Grid(10, ux, uy, uz);
+		for (int k = 0; k < n; ++k) {
+			fu[0][k] = (float)ux[k]; fu[1][k] = (float)uy[k]; fu[2][k] = (float)uz[k];
+			ux[k] = fu[0][k]; uy[k] = fu[1][k]; uz[k] = fu[2][k];
+		}
+		for (int ii = 0; ii < 3; ++ii) {
+			if (!mkImpl_Available(impls[ii])) continue;
+			mkSumOptions of = mkSumOptions_Default();
+			of.precision = MK_PRECISION_F32;
+			of.impl = impls[ii];
+			of.form = trial % 2 ? MK_FORM_GRADIENT : MK_FORM_NORMAL;
+			of.param = trial % 3 ? MK_PARAM_SURFACE : MK_PARAM_NORMAL;
+			ENSURE(mkSum3_TierHolds(b[0], b[1], &of));
+			ENSURE(mkSum3_Batch(b[0], b[1], &of, ux, uy, uz, n, o[0][0], o[0][1], o[0][2], o[0][3], o[0][4], o[0][5]) == MK_OK);
+			ENSURE(mkSum3f_Batch(b[0], b[1], &of, fu[0], fu[1], fu[2], n, fo[0][0], fo[0][1], fo[0][2], fo[0][3], fo[0][4],
+				fo[0][5]) == MK_OK);
+			for (int c = 0; c < 6; ++c)
+				for (int k = 0; k < n; ++k) {
+					double e = fabs(o[0][c][k] - (double)fo[0][c][k]) / S;
+					ENSURE_LE(e, 1e-6);
+					if (e > worst) worst = e;
+				}
+		}
+	}
+	printf("float arrays against double arrays (f32 tier, 3D, 20 pairs x 3 kernels): largest difference %.2e of the scale\n",
+		worst);
+
+	/* tails, 2D */
+	mkBody2 p1 = mkBody2_Make((mkShape2){2, 1, 0.4}, mkMat2_Rotation(0.3), (mkVec2){0, 0});
+	mkBody2 p2 = mkBody2_Make((mkShape2){1, 3, 1.0}, mkMat2_Shear(0.5), (mkVec2){1, 0});
+	mkSample2_Angles(81, ux, uy);
+	for (int k = 0; k < 81; ++k) { fu[0][k] = (float)ux[k]; fu[1][k] = (float)uy[k]; }
+	for (int ii = 0; ii < 3; ++ii) {
+		if (!mkImpl_Available(impls[ii])) continue;
+		mkSumOptions of = mkSumOptions_Default();
+		of.precision = MK_PRECISION_F32;
+		of.impl = impls[ii];
+		ENSURE(mkSum2f_Batch(p1, p2, &of, fu[0], fu[1], 81, fo[0][0], fo[0][1], fo[0][2], fo[0][3]) == MK_OK);
+		for (int n = 0; n <= 70; ++n) {
+			for (int c = 0; c < 4; ++c)
+				for (int k = 0; k < 81; ++k) fo[1][c][k] = -12345.0f;
+			ENSURE(mkSum2f_Batch(p1, p2, &of, fu[0], fu[1], n, fo[1][0], fo[1][1], fo[1][2], fo[1][3]) == MK_OK);
+			for (int c = 0; c < 4; ++c) {
+				for (int k = 0; k < n; ++k) ENSURE(fo[1][c][k] == fo[0][c][k]);
+				ENSURE(fo[1][c][n] == -12345.0f);
+			}
+		}
+	}
+
+	/* double precision, and a pair outside the domain: the double call's points rounded */
+	mkBody2 thin = mkBody2_Make((mkShape2){1e4, 1e-4, 0.7}, mkMat2_Rotation(0.4), (mkVec2){1, 2});
+	for (int k = 0; k < 2; ++k) {
+		mkSumOptions od = mkSumOptions_Default(), oo = od;
+		oo.precision = k ? MK_PRECISION_F32 : MK_PRECISION_DOUBLE;
+		mkBody2 a = k ? thin : p1;
+		if (k) ENSURE(!mkSum2_TierHolds(a, p2, &oo));
+		int n = 300; /* more than one block of the widening path */
+		mkSample2_Angles(n, ux, uy);
+		for (int j = 0; j < n; ++j) { fu[0][j] = (float)ux[j]; fu[1][j] = (float)uy[j]; ux[j] = fu[0][j]; uy[j] = fu[1][j]; }
+		ENSURE(mkSum2_Batch(a, p2, &od, ux, uy, n, o[0][0], o[0][1], o[0][2], o[0][3]) == MK_OK);
+		ENSURE(mkSum2f_Batch(a, p2, &oo, fu[0], fu[1], n, fo[0][0], fo[0][1], fo[0][2], fo[0][3]) == MK_OK);
+		for (int c = 0; c < 4; ++c)
+			for (int j = 0; j < n; ++j) ENSURE(fo[0][c][j] == (float)o[0][c][j]);
+	}
+
+	/* scaled parameter vectors: the same points as the unit ones */
+	{
+		mkSumOptions of = mkSumOptions_Default();
+		of.precision = MK_PRECISION_F32;
+		int n = 64;
+		mkSample2_Angles(n, ux, uy);
+		for (int j = 0; j < n; ++j) { fu[0][j] = (float)ux[j]; fu[1][j] = (float)uy[j]; }
+		ENSURE(mkSum2f_Batch(p1, p2, &of, fu[0], fu[1], n, fo[0][0], fo[0][1], NULL, NULL) == MK_OK);
+		double S = 14.0; /* |t2| + |M1|_F |a1| + |M2|_F |a2|, rounded up */
+		for (int s = 0; s < 2; ++s) {
+			float k = s ? 1e30f : 1e-30f;
+			for (int j = 0; j < n; ++j) { fu[2][j] = fu[0][j] * k; fo[1][5][j] = fu[1][j] * k; }
+			ENSURE(mkSum2f_Batch(p1, p2, &of, fu[2], fo[1][5], n, fo[1][0], fo[1][1], NULL, NULL) == MK_OK);
+			for (int j = 0; j < n; ++j) {
+				ENSURE_LE(fabs((double)fo[1][0][j] - fo[0][0][j]) / S, 1e-6);
+				ENSURE_LE(fabs((double)fo[1][1][j] - fo[0][1][j]) / S, 1e-6);
+			}
+		}
+	}
+
+	/* argument errors */
+	mkSumOptions of = mkSumOptions_Default();
+	of.precision = MK_PRECISION_F32;
+	ENSURE(mkSum2f_Batch(p1, p2, &of, fu[0], fu[1], -1, fo[0][0], fo[0][1], NULL, NULL) == MK_ERR_ARGUMENT);
+	ENSURE(mkSum2f_Batch(p1, p2, &of, NULL, fu[1], 3, fo[0][0], fo[0][1], NULL, NULL) == MK_ERR_ARGUMENT);
+	ENSURE(mkSum2f_Batch(p1, p2, &of, fu[0], fu[1], 3, fo[0][0], fo[0][1], fo[0][2], NULL) == MK_ERR_ARGUMENT);
+	ENSURE(mkSum2f_Batch(p1, p2, NULL, fu[0], fu[1], 3, fo[0][0], fo[0][1], NULL, NULL) == MK_ERR_ARGUMENT);
+	of.form = MK_FORM_PAPER;
+	of.impl = MK_IMPL_SCALAR;
+	ENSURE(mkSum2f_Batch(p1, p2, &of, fu[0], fu[1], 3, fo[0][0], fo[0][1], NULL, NULL) == MK_ERR_UNSUPPORTED);
+	of.precision = MK_PRECISION_DOUBLE;
+	ENSURE(mkSum2f_Batch(p1, p2, &of, fu[0], fu[1], 3, fo[0][0], fo[0][1], NULL, NULL) == MK_OK);
+}
+
 int main(void)
 {
 	test_circles();
@@ -229,5 +355,6 @@ int main(void)
 	test_extremes();
 	test_tails();
 	test_options();
+	test_float_arrays();
 	return mk_summary("test_sum_f32");
 }

@@ -121,6 +121,23 @@ MK_API mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 	const double *ux, const double *uy, const double *uz, int n,
 	double *x, double *y, double *z, double *kx, double *ky, double *kz);
 
+/* The same on float arrays, for callers that keep their points in float
+ * (drawing, planning margins): with MK_PRECISION_F32, where the tier holds
+ * (mkSum2_TierHolds), the kernels read and write the caller's floats, which
+ * halves the memory traffic of the double-array call; a parameter vector
+ * whose |u|^2 is within 5e-7 of 1 (any float vector rounded from a unit one)
+ * is used as given, others are normalised in float. Otherwise (precision
+ * double, a pair outside the tier's domain, MK_FORM_PAPER) the inputs are
+ * widened to double in blocks, computed by mkSum2_Batch, and its points
+ * rounded to float. Same arguments, errors and accuracy (of the float
+ * inputs' directions) as mkSum2_Batch. */
+MK_API mkResult mkSum2f_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
+	const float *ux, const float *uy, int n,
+	float *x, float *y, float *kx, float *ky);
+MK_API mkResult mkSum3f_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
+	const float *ux, const float *uy, const float *uz, int n,
+	float *x, float *y, float *z, float *kx, float *ky, float *kz);
+
 /* One point, scalar kernel; *kiss may be NULL. */
 MK_API mkVec2 mkSum2_Point(mkBody2 b1, mkBody2 b2, mkSet set, mkForm form, mkParam param, mkVec2 u, mkVec2 *kiss);
 MK_API mkVec3 mkSum3_Point(mkBody3 b1, mkBody3 b2, mkSet set, mkForm form, mkParam param, mkVec3 u, mkVec3 *kiss);

@@ -17,7 +17,10 @@
  *  - parameter vectors that are not unit vectors (scaled by 3, 1e-5, 1e5,
  *    1e-150, 1e150, 1e-300, 1e300), which sum.h accepts.
  * Usage: ref_sumN [group [tier [all]]]: group 1-4 in the order above, the
- * parameter vectors being 3 (0: all); tier "double" (default) or "f32";
+ * parameter vectors being 3 (0: all); tier "double" (default), "f32" or
+ * "f32io" (the f32 tier through the float-array entry points, on the
+ * parameter vectors rounded to float; group 3 then scales them by 3, 1e-5,
+ * 1e5, 1e-15, 1e15, 1e-30 and 1e30, the float range);
  * "all" evaluates the conditioning of every point of group 4 as well. */
 #include "refcheck.h"
 
@@ -28,6 +31,7 @@
 /* The precision tier under test: double unless the second argument names
  * another ("f32": the single-precision tier against its stated accuracy). */
 static mkPrecision tier = MK_PRECISION_DOUBLE;
+static int floatio = 0; /* "f32io" */
 
 
 static mkBody2 body(double a, double b, double eps, double angle, double shear, double tx, double ty)
@@ -46,7 +50,7 @@ static mkBody2 body(double a, double b, double eps, double angle, double shear, 
 
 static void validationDraws(void)
 {
-	refGroup g = { .name = "ref_sum2 validation", .precision = tier };
+	refGroup g = { .name = "ref_sum2 validation", .precision = tier, .floatio = floatio };
 	refRng rng = { 6101u };
 	enum { N = 32 };
 	double ux[N], uy[N];
@@ -87,7 +91,7 @@ static void faceNormal(mkBody2 B, int axis, double turn, double *ux, double *uy)
  * conditioning of every point (for the statistics; costly in MPFR). */
 static void extremes(const double *E, const char *name, uint64_t seed, int all)
 {
-	refGroup g = { .name = name, .precision = tier, .conditionAll = all };
+	refGroup g = { .name = name, .precision = tier, .floatio = floatio, .conditionAll = all };
 	refRng rng = { seed };
 	enum { N = 20 };
 	double ux[N], uy[N];
@@ -153,8 +157,10 @@ static void extremes(const double *E, const char *name, uint64_t seed, int all)
  * MPFR reference normalises the same scaled doubles. */
 static void scaledParameters(void)
 {
-	static const double scale[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150, 1e-300, 1e300 };
-	refGroup g = { .name = "ref_sum2 scaled-u", .precision = tier };
+	static const double scale_d[] = { 3.0, 1e-5, 1e5, 1e-150, 1e150, 1e-300, 1e300 };
+	static const double scale_f[] = { 3.0, 1e-5, 1e5, 1e-15, 1e15, 1e-30, 1e30 };
+	const double *scale = floatio ? scale_f : scale_d;
+	refGroup g = { .name = "ref_sum2 scaled-u", .precision = tier, .floatio = floatio };
 	refRng rng = { 6103u };
 	enum { N = 16 };
 	double ux0[N], uy0[N], ux[N], uy[N];
@@ -184,7 +190,8 @@ int main(int argc, char **argv)
 {
 	int which = argc > 1 ? atoi(argv[1]) : 0;
 	if (argc > 2) {
-		int t = mkPrecision_Parse(argv[2]);
+		floatio = strcmp(argv[2], "f32io") == 0;
+		int t = floatio ? MK_PRECISION_F32 : mkPrecision_Parse(argv[2]);
 		ENSURE(t >= 0);
 		if (t < 0)
 			return refTest_Result(argv[0]);

@@ -272,8 +272,30 @@ static void conditioning(const refBody *b1, const refBody *b2, int plus, int sur
 
 /* ---- running the core -------------------------------------------------- */
 
-static mkResult runCore(const refCase *c, const mkSumOptions *opt, double *out[6])
+/* floatio: through mkSum2f_Batch/mkSum3f_Batch on float copies of the case's
+ * parameter vectors (which the caller has already rounded to float, so the
+ * copies are exact), the float outputs widened into out. */
+static mkResult runCore(const refCase *c, const mkSumOptions *opt, int floatio, double *out[6])
 {
+	if (floatio) {
+		int n = c->n, dim = c->dim;
+		float *f = malloc(sizeof(float) * 9 * (size_t)(n > 0 ? n : 1));
+		if (!f) return MK_ERR_MEMORY;
+		float *fu[3] = {f, f + n, f + 2 * (size_t)n}, *fo[6];
+		for (int i = 0; i < 6; ++i) fo[i] = f + (size_t)(3 + i) * (size_t)n;
+		for (int j = 0; j < n; ++j) {
+			fu[0][j] = (float)c->ux[j]; fu[1][j] = (float)c->uy[j];
+			fu[2][j] = dim == 3 ? (float)c->uz[j] : 0.0f;
+		}
+		mkResult r = dim == 2
+			? mkSum2f_Batch(c->a2, c->b2, opt, fu[0], fu[1], n, fo[0], fo[1], fo[3], fo[4])
+			: mkSum3f_Batch(c->a3, c->b3, opt, fu[0], fu[1], fu[2], n, fo[0], fo[1], fo[2], fo[3], fo[4], fo[5]);
+		for (int i = 0; i < 6; ++i)
+			if (out[i] && (dim == 3 || (i != 2 && i != 5)))
+				for (int j = 0; j < n; ++j) out[i][j] = fo[i][j];
+		free(f);
+		return r;
+	}
 	if (c->dim == 2)
 		return mkSum2_Batch(c->a2, c->b2, opt, c->ux, c->uy, c->n,
 			out[0], out[1], out[3], out[4]);
@@ -283,6 +305,22 @@ static mkResult runCore(const refCase *c, const mkSumOptions *opt, double *out[6
 
 void refCheck_Case(const refCase *c, refGroup *g)
 {
+	/* The float-array entry points see the parameter vectors rounded to
+	 * float: the reference is computed at those vectors. */
+	refCase cf = *c;
+	double *ur = NULL;
+	if (g->floatio) {
+		ur = malloc(sizeof(double) * 3 * (size_t)(c->n > 0 ? c->n : 1));
+		ENSURE(ur != NULL);
+		if (!ur) return;
+		for (int j = 0; j < c->n; ++j) {
+			ur[j] = (float)c->ux[j];
+			ur[c->n + j] = (float)c->uy[j];
+			ur[2 * c->n + j] = c->dim == 3 ? (float)c->uz[j] : 0.0;
+		}
+		cf.ux = ur; cf.uy = ur + c->n; cf.uz = ur + 2 * c->n;
+		c = &cf;
+	}
 	int dim = c->dim, n = c->n;
 	refBody b1 = dim == 2 ? refBody_From2(c->a2) : refBody_From3(c->a3);
 	refBody b2 = dim == 2 ? refBody_From2(c->b2) : refBody_From3(c->b3);
@@ -306,6 +344,7 @@ void refCheck_Case(const refCase *c, refGroup *g)
 	if (!buf || !pts) {
 		free(buf);
 		free(pts);
+		free(ur);
 		return;
 	}
 	for (int j = 0; j < n; ++j) {
@@ -351,7 +390,7 @@ void refCheck_Case(const refCase *c, refGroup *g)
 					opt.form = f ? MK_FORM_GRADIENT : MK_FORM_NORMAL;
 					opt.impl = impl;
 					opt.precision = g->precision;
-					mkResult r = runCore(c, &opt, outs[f]);
+					mkResult r = runCore(c, &opt, g->floatio, outs[f]);
 					ENSURE(r == MK_OK);
 				}
 				for (int j = 0; j < n; ++j) {
@@ -443,6 +482,7 @@ void refCheck_Case(const refCase *c, refGroup *g)
 	}
 	free(pts);
 	free(buf);
+	free(ur);
 }
 
 void refGroup_Print(const refGroup *g)
@@ -463,10 +503,10 @@ void refGroup_Print(const refGroup *g)
 		printf("%s [%s]: Theorem 1 vs Theorem 2 |x_N-x_G|/S max %.2e mean %.2e\n",
 			g->name, mkImpl_Name(impl), g->e12[impl].max, refStat_Mean(&g->e12[impl]));
 	}
-	printf("%s [precision %s]: %ld reference points, %ld%s ill-conditioned (the exact point moves by > %g S "
+	printf("%s [precision %s%s]: %ld reference points, %ld%s ill-conditioned (the exact point moves by > %g S "
 		"under a rounding-size change of direction), %ld non-finite outputs; worst error/tolerance: "
 		"point %.3g (well-conditioned), boundary %.3g\n",
-		g->name, mkPrecision_Name(g->precision), g->points, g->illConditioned, g->conditionAll ? "" : " found",
+		g->name, mkPrecision_Name(g->precision), g->floatio ? ", float arrays" : "", g->points, g->illConditioned, g->conditionAll ? "" : " found",
 		g->precision == MK_PRECISION_F32 ? 1e-7 : 1e-9, g->nonfinite,
 		g->ratioA.max, g->ratioB.max);
 }

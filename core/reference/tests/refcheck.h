@@ -47,6 +47,8 @@ typedef struct refGroup {
 	                        1e-9 S (1e-7 S for MK_PRECISION_F32) under
 	                        rounding-size perturbations */
 	mkPrecision precision; /* the tier run (DOUBLE unless set; see refcheck.c) */
+	int floatio;   /* set: through the float-array entry points (mkSum2f_Batch),
+	                  on the parameter vectors rounded to float */
 	long points;   /* reference points computed */
 	long nonfinite;
 } refGroup;
