@@ -12,7 +12,11 @@
  * one repetition loop, so that both see the same machine state; a tier's
  * row names it in `form` (gradient-f32) and gives, in `speedup`, the median
  * over the repetitions of (double time / tier time) of the same repetition.
- * The double rows have speedup 1. */
+ * The double rows have speedup 1. The f32 tier is timed twice: on the same
+ * double arrays as the double kernel (form gradient-f32), and on float
+ * arrays holding the same parameter vectors rounded to float, through
+ * mkSum2f_Batch/mkSum3f_Batch (form gradient-f32io), whose kernels read and
+ * write floats. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -38,7 +42,9 @@ static void help(FILE *fp)
 		"R measurements of the time of one batch call divided by its number of points. A\n"
 		"tier other than double is named in the form (gradient-f32) and timed alternately\n"
 		"with the double kernel; speedup is the median of double time / tier time over the\n"
-		"R pairs. Random bodies from a fixed seed: 2D rotated and sheared, 3D rotated. The\n"
+		"R pairs. The f32 tier has two rows: on double arrays (gradient-f32, mkSum2_Batch)\n"
+		"and on float arrays (gradient-f32io, mkSum2f_Batch: half the memory traffic).\n"
+		"Random bodies from a fixed seed: 2D rotated and sheared, 3D rotated. The\n"
 		"kernel used is printed on standard error.\n"
 		"\n");
 }
@@ -56,16 +62,23 @@ typedef struct Bench {
 	int dim;
 	long n, count;
 	double *u[3], *o[6];
+	float *fu[3], *fo[6]; /* the same parameter vectors in float, and float outputs */
 	int reps;
 	mkImpl impl;
 } Bench;
 
-static double call_s(Bench *b, mkBody2 *p2, mkBody3 *p3, const mkSumOptions *opt, int calls)
+/* fio: the float arrays (mkSum2f_Batch) instead of the double ones. */
+static double call_s(Bench *b, mkBody2 *p2, mkBody3 *p3, const mkSumOptions *opt, int fio, int calls)
 {
 	double t0 = mkClock_Wall();
 	for (int c = 0; c < calls; ++c) {
-		if (b->dim == 2)
+		if (b->dim == 2 && fio)
+			mkSum2f_Batch(p2[0], p2[1], opt, b->fu[0], b->fu[1], (int)b->count, b->fo[0], b->fo[1], b->fo[2], b->fo[3]);
+		else if (b->dim == 2)
 			mkSum2_Batch(p2[0], p2[1], opt, b->u[0], b->u[1], (int)b->count, b->o[0], b->o[1], b->o[2], b->o[3]);
+		else if (fio)
+			mkSum3f_Batch(p3[0], p3[1], opt, b->fu[0], b->fu[1], b->fu[2], (int)b->count,
+				b->fo[0], b->fo[1], b->fo[2], b->fo[3], b->fo[4], b->fo[5]);
 		else
 			mkSum3_Batch(p3[0], p3[1], opt, b->u[0], b->u[1], b->u[2], (int)b->count,
 				b->o[0], b->o[1], b->o[2], b->o[3], b->o[4], b->o[5]);
@@ -80,9 +93,10 @@ static double median(double *t, int n)
 }
 
 /* ns per point of the double kernel (ns[0]) and of the tier `tier` (ns[1],
- * with the median ratio in *speedup), timed alternately; tier ==
- * MK_PRECISION_DOUBLE times the double kernel alone. */
-static int measure(Bench *b, mkBody2 *p2, mkBody3 *p3, mkForm form, mkPrecision tier, double ns[2], double *speedup)
+ * on the float arrays when fio, with the median ratio in *speedup), timed
+ * alternately; tier == MK_PRECISION_DOUBLE times the double kernel alone. */
+static int measure(Bench *b, mkBody2 *p2, mkBody3 *p3, mkForm form, mkPrecision tier, int fio, double ns[2],
+	double *speedup)
 {
 	mkSumOptions opt[2] = {mkSumOptions_Default(), mkSumOptions_Default()};
 	for (int k = 0; k < 2; ++k) {
@@ -94,11 +108,11 @@ static int measure(Bench *b, mkBody2 *p2, mkBody3 *p3, mkForm form, mkPrecision 
 	double *t = malloc(3 * (size_t)b->reps * sizeof *t);
 	if (!t) return 1;
 	double *t1 = t + b->reps, *ratio = t + 2 * b->reps;
-	for (int k = 0; k <= pair; ++k) call_s(b, p2, p3, &opt[k], 1); /* warm-up */
+	for (int k = 0; k <= pair; ++k) call_s(b, p2, p3, &opt[k], k && fio, 1); /* warm-up */
 	for (int r = 0; r < b->reps; ++r) {
-		t[r] = call_s(b, p2, p3, &opt[0], calls);
+		t[r] = call_s(b, p2, p3, &opt[0], 0, calls);
 		if (pair) {
-			t1[r] = call_s(b, p2, p3, &opt[1], calls);
+			t1[r] = call_s(b, p2, p3, &opt[1], fio, calls);
 			ratio[r] = t[r] / t1[r];
 		}
 	}
@@ -144,12 +158,16 @@ int mkCmd_Bench(int argc, char **argv)
 		int ok = 1;
 		for (int k = 0; k < 3; ++k) ok &= (b.u[k] = malloc((size_t)b.count * sizeof(double))) != NULL;
 		for (int k = 0; k < 6; ++k) ok &= (b.o[k] = malloc((size_t)b.count * sizeof(double))) != NULL;
+		for (int k = 0; k < 3; ++k) ok &= (b.fu[k] = malloc((size_t)b.count * sizeof(float))) != NULL;
+		for (int k = 0; k < 6; ++k) ok &= (b.fo[k] = malloc((size_t)b.count * sizeof(float))) != NULL;
 		if (!ok) {
 			fprintf(stderr, "mink bench: out of memory\n");
 			return 1;
 		}
 		if (dim == 2) mkSample2_Angles((int)b.count, b.u[0], b.u[1]);
 		else mkSample3_Grid((int)b.n, b.u[0], b.u[1], b.u[2]);
+		for (int k = 0; k < dim; ++k)
+			for (long i = 0; i < b.count; ++i) b.fu[k][i] = (float)b.u[k][i];
 		for (int c = 0; c < 3; ++c) {
 			mkBody2 p2[2];
 			mkBody3 p3[2];
@@ -173,10 +191,11 @@ int mkCmd_Bench(int argc, char **argv)
 			}
 			for (int f = MK_FORM_NORMAL; f <= MK_FORM_GRADIENT; ++f) {
 				/* The double row, then each faster tier timed against it. */
-				for (int tier = MK_PRECISION_DOUBLE; tier <= MK_PRECISION_F32; ++tier) {
+				for (int row = 0; row < 3; ++row) { /* double, f32, f32 on float arrays */
+					int tier = row == 0 ? MK_PRECISION_DOUBLE : MK_PRECISION_F32, fio = row == 2;
 					if (precision >= 0 && tier != precision) continue;
 					double ns[2], speedup;
-					if (measure(&b, p2, p3, (mkForm)f, (mkPrecision)tier, ns, &speedup)) {
+					if (measure(&b, p2, p3, (mkForm)f, (mkPrecision)tier, fio, ns, &speedup)) {
 						fprintf(stderr, "mink bench: out of memory\n");
 						return 1;
 					}
@@ -184,20 +203,22 @@ int mkCmd_Bench(int argc, char **argv)
 						(mkForm)f, MK_PARAM_SURFACE, (mkImpl)impl, (mkPrecision)tier})
 						: mkSum3_TierHolds(p3[0], p3[1], &(mkSumOptions){MK_SET_CONTACT,
 						(mkForm)f, MK_PARAM_SURFACE, (mkImpl)impl, (mkPrecision)tier});
-					if (!holds)
+					if (!holds && !fio)
 						fprintf(stderr, "mink bench: %dD %s %s: outside the %s tier's domain, the double kernel ran\n",
 							dim, cases[c], mkForm_Name((mkForm)f), mkPrecision_Name((mkPrecision)tier));
 					if (tier == MK_PRECISION_DOUBLE)
 						printf("%d,%s,%s,%ld,%.3f,1\n", dim, cases[c], mkForm_Name((mkForm)f), b.count, ns[0]);
 					else
-						printf("%d,%s,%s-%s,%ld,%.3f,%.3f\n", dim, cases[c], mkForm_Name((mkForm)f),
-							mkPrecision_Name((mkPrecision)tier), b.count, ns[1], speedup);
+						printf("%d,%s,%s-%s%s,%ld,%.3f,%.3f\n", dim, cases[c], mkForm_Name((mkForm)f),
+							mkPrecision_Name((mkPrecision)tier), fio ? "io" : "", b.count, ns[1], speedup);
 					fflush(stdout);
 				}
 			}
 		}
 		for (int k = 0; k < 3; ++k) free(b.u[k]);
 		for (int k = 0; k < 6; ++k) free(b.o[k]);
+		for (int k = 0; k < 3; ++k) free(b.fu[k]);
+		for (int k = 0; k < 6; ++k) free(b.fo[k]);
 	}
 	return 0;
 }
