@@ -273,15 +273,39 @@ static void paper3(mkBody3 b1, mkBody3 b2, mkSet set, double ux, double uy, doub
 
 /* ---- batches ---------------------------------------------------------------------- */
 
-mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
-	const double *ux, const double *uy, int n,
-	double *x, double *y, double *kx, double *ky)
+/* The checks every batch entry makes (double or float arrays): arguments,
+ * bodies (asserted), and the kernel this CPU runs, into *impl. */
+static mkResult batch_start2(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt, int n, const void *ux,
+	const void *uy, const void *x, const void *y, const void *kx, const void *ky, mkImpl *impl)
 {
 	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !x || !y)) || (!kx != !ky))
 		return MK_ERR_ARGUMENT;
 	assert(mkBody2_IsValid(b1, "body1", NULL, 0) && mkBody2_IsValid(b2, "body2", NULL, 0));
-	mkImpl impl = mkImpl_Resolve(opt->impl);
-	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	(void)b1; (void)b2;
+	*impl = mkImpl_Resolve(opt->impl);
+	return mkImpl_Available(*impl) ? MK_OK : MK_ERR_UNSUPPORTED;
+}
+
+static mkResult batch_start3(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt, int n, const void *ux,
+	const void *uy, const void *uz, const void *x, const void *y, const void *z, const void *kx,
+	const void *ky, const void *kz, mkImpl *impl)
+{
+	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !uz || !x || !y || !z))
+		|| (!kx != !ky) || (!kx != !kz))
+		return MK_ERR_ARGUMENT;
+	assert(mkBody3_IsValid(b1, "body1", NULL, 0) && mkBody3_IsValid(b2, "body2", NULL, 0));
+	(void)b1; (void)b2;
+	*impl = mkImpl_Resolve(opt->impl);
+	return mkImpl_Available(*impl) ? MK_OK : MK_ERR_UNSUPPORTED;
+}
+
+mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
+	const double *ux, const double *uy, int n,
+	double *x, double *y, double *kx, double *ky)
+{
+	mkImpl impl;
+	mkResult r0 = batch_start2(b1, b2, opt, n, ux, uy, x, y, kx, ky, &impl);
+	if (r0 != MK_OK) return r0;
 	if (opt->form == MK_FORM_PAPER) {
 		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR)
 			|| opt->precision != MK_PRECISION_DOUBLE)
@@ -321,12 +345,9 @@ mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 	const double *ux, const double *uy, const double *uz, int n,
 	double *x, double *y, double *z, double *kx, double *ky, double *kz)
 {
-	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !uz || !x || !y || !z))
-		|| (!kx != !ky) || (!kx != !kz))
-		return MK_ERR_ARGUMENT;
-	assert(mkBody3_IsValid(b1, "body1", NULL, 0) && mkBody3_IsValid(b2, "body2", NULL, 0));
-	mkImpl impl = mkImpl_Resolve(opt->impl);
-	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	mkImpl impl;
+	mkResult r0 = batch_start3(b1, b2, opt, n, ux, uy, uz, x, y, z, kx, ky, kz, &impl);
+	if (r0 != MK_OK) return r0;
 	if (opt->form == MK_FORM_PAPER) {
 		if (opt->param != MK_PARAM_SURFACE || (opt->impl != MK_IMPL_AUTO && opt->impl != MK_IMPL_SCALAR)
 			|| opt->precision != MK_PRECISION_DOUBLE)
@@ -370,11 +391,9 @@ mkResult mkSum2f_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
 	const float *ux, const float *uy, int n,
 	float *x, float *y, float *kx, float *ky)
 {
-	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !x || !y)) || (!kx != !ky))
-		return MK_ERR_ARGUMENT;
-	assert(mkBody2_IsValid(b1, "body1", NULL, 0) && mkBody2_IsValid(b2, "body2", NULL, 0));
-	mkImpl impl = mkImpl_Resolve(opt->impl);
-	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	mkImpl impl;
+	mkResult r0 = batch_start2(b1, b2, opt, n, ux, uy, x, y, kx, ky, &impl);
+	if (r0 != MK_OK) return r0;
 	if (opt->precision == MK_PRECISION_F32 && opt->form != MK_FORM_PAPER) {
 		mkKPlan2 p;
 		mkKPlan2f pf;
@@ -408,12 +427,9 @@ mkResult mkSum3f_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 	const float *ux, const float *uy, const float *uz, int n,
 	float *x, float *y, float *z, float *kx, float *ky, float *kz)
 {
-	if (n < 0 || !options_ok(opt) || (n > 0 && (!ux || !uy || !uz || !x || !y || !z))
-		|| (!kx != !ky) || (!kx != !kz))
-		return MK_ERR_ARGUMENT;
-	assert(mkBody3_IsValid(b1, "body1", NULL, 0) && mkBody3_IsValid(b2, "body2", NULL, 0));
-	mkImpl impl = mkImpl_Resolve(opt->impl);
-	if (!mkImpl_Available(impl)) return MK_ERR_UNSUPPORTED;
+	mkImpl impl;
+	mkResult r0 = batch_start3(b1, b2, opt, n, ux, uy, uz, x, y, z, kx, ky, kz, &impl);
+	if (r0 != MK_OK) return r0;
 	if (opt->precision == MK_PRECISION_F32 && opt->form != MK_FORM_PAPER) {
 		mkKPlan3 p;
 		mkKPlan3f pf;
