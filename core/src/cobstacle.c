@@ -170,33 +170,34 @@ static mkVec2 split_normal2(mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj)
  * pi, pj), given the split normal m and its point xm = x(m). */
 static double edge_err2(mkBound bound, mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj, mkVec2 m, mkVec2 xm)
 {
-	mkVec2 d = mkVec2_Sub(pj, pi);
-	mkVec2 chord = mkVec2_NormalizeInline(mkVec2_Make(d.y, -d.x));
-	int is_chord = mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y);
+	double rnd = ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
 	/* Proof 3: for normals u between ni and nj, h_K(u) minus the
-	 * best of <u, pi>, <u, pj> is at most c / (4 cos(theta/2)) */
+	 * best of <u, pi>, <u, pj> is at most g3 = c / (4 cos(theta/2)) */
 	double c = mkVec2_Dot(mkVec2_Sub(ni, nj), mkVec2_Sub(pi, pj));
-	double half = 0.5 * mkVec2_LengthInline(mkVec2_Add(ni, nj));
-	double g = (c > 0.0 ? c : 0.0) / (4.0 * half);
-	int wide = !(mkVec2_Dot(ni, nj) >= 0.0); /* a step over 90 degrees: Proof 3 only */
-	if (!(mkVec2_Cross(ni, nj) > 0.0)) g = INFINITY; /* 180 degrees or more: nothing certified */
-	if (wide) {
-		/* keep g */
+	c = c > 0.0 ? c : 0.0;
+	if (!(mkVec2_Cross(ni, nj) > 0.0)) return INFINITY + rnd; /* 180 degrees or more: nothing certified */
+	double other = INFINITY; /* Proof 1 or 2, where it applies */
+	if (!(mkVec2_Dot(ni, nj) >= 0.0)) {
+		/* a step over 90 degrees: Proof 3 only */
 	} else if (bound == MK_BOUND_INNER) {
 		/* Proof 1: the chord gap h_K(m) - <m, p>, m the chord normal */
-		if (is_chord) {
+		mkVec2 d = mkVec2_Sub(pj, pi);
+		mkVec2 chord = mkVec2_NormalizeInline(mkVec2_Make(d.y, -d.x));
+		if (mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y)) {
 			double lo = fmin(mkVec2_Dot(m, pi), mkVec2_Dot(m, pj));
-			double gap = mkVec2_Dot(m, xm) - lo;
-			if (gap < 0.0) gap = 0.0;
-			if (gap < g) g = gap;
+			other = mkVec2_Dot(m, xm) - lo;
+			if (other < 0.0) other = 0.0;
 		}
 	} else {
 		/* Proof 2: the tangent vertex's distance to conv{pi, x(m), pj} */
 		mkVec2 v = tangent_vertex(ni, pi, nj, pj);
-		double dv = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
-		if (dv < g) g = dv;
+		other = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
 	}
-	return g + ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
+	/* the smaller of the two; g3 >= c / (4 (1 + 1e-9)) for unit normals, so
+	 * g3 is only formed when the other bound might exceed it */
+	if (other * (4.0 * (1.0 + 1e-9)) < c) return other + rnd;
+	double g3 = c / (4.0 * (0.5 * mkVec2_LengthInline(mkVec2_Add(ni, nj))));
+	return (other < g3 ? other : g3) + rnd;
 }
 
 static mkVec2 wn2(const Work *w, int i) { return mkVec2_Make(w->n[0][i], w->n[1][i]); }
@@ -205,7 +206,8 @@ static mkVec2 wp2(const Work *w, int i) { return mkVec2_Make(w->p[0][i], w->p[1]
 /* ---- 2D adaptive: the farthest-reach walk ---------------------------------------------- */
 
 #define WALK_STARTS 2        /* walks from different start normals, in lockstep; the fewest vertices win */
-#define WALK_K 8             /* candidate steps per walk and round */
+#define WALK_K 8             /* candidate steps per walk and round (at most) */
+#define WALK_KI 4            /* the same around an estimated reach */
 #define WALK_REL 2e-2        /* the reach is bracketed to this relative width */
 #define WALK_MAX (0.75 * MK_PI) /* the largest normal step (the proofs need less than 180 degrees) */
 #define WALK_LAST 3          /* vertices kept for closing the cycle when max_points is reached */
@@ -295,11 +297,11 @@ static int walk_next(Walk *a, double tol, int max_points)
 		double p = log(a->hi_e / a->lo_e) / log(a->hi / a->lo);
 		est = a->lo * pow(tol / a->lo_e, 1.0 / p);
 	}
-	if (est > a->lo && est < a->hi && 2.0 * width <= a->width && WALK_K * h < width) {
-		double t0 = est - 0.5 * (WALK_K - 1) * h;
+	if (est > a->lo && est < a->hi && 2.0 * width <= a->width && WALK_KI * h < width) {
+		double t0 = est - 0.5 * (WALK_KI - 1) * h;
 		if (t0 <= a->lo) t0 = a->lo + h;
-		if (t0 + (WALK_K - 1) * h >= a->hi) t0 = a->hi - WALK_K * h;
-		for (int k = 0; k < WALK_K; ++k) a->d[a->nc++] = t0 + k * h;
+		if (t0 + (WALK_KI - 1) * h >= a->hi) t0 = a->hi - WALK_KI * h;
+		for (int k = 0; k < WALK_KI; ++k) a->d[a->nc++] = t0 + k * h;
 	} else {
 		for (int k = 0; k < WALK_K; ++k) a->d[a->nc++] = a->lo + width * (k + 1) / (WALK_K + 1);
 	}
