@@ -175,7 +175,7 @@ static double edge_err2(mkBound bound, mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 p
 	 * best of <u, pi>, <u, pj> is at most g3 = c / (4 cos(theta/2)) */
 	double c = mkVec2_Dot(mkVec2_Sub(ni, nj), mkVec2_Sub(pi, pj));
 	c = c > 0.0 ? c : 0.0;
-	if (!(mkVec2_Cross(ni, nj) > 0.0)) return INFINITY + rnd; /* 180 degrees or more: nothing certified */
+	if (!(mkVec2_Cross(ni, nj) > 0.0)) return INFINITY + rnd; /* 180 degrees or more (or clockwise): nothing certified */
 	double other = INFINITY; /* Proof 1 or 2, where it applies */
 	if (!(mkVec2_Dot(ni, nj) >= 0.0)) {
 		/* a step over 90 degrees: Proof 3 only */
@@ -211,6 +211,7 @@ static mkVec2 wp2(const Work *w, int i) { return mkVec2_Make(w->p[0][i], w->p[1]
 #define WALK_REL 2e-2        /* the reach is bracketed to this relative width */
 #define WALK_MAX (0.75 * MK_PI) /* the largest normal step (the proofs need less than 180 degrees) */
 #define WALK_LAST 3          /* vertices kept for closing the cycle when max_points is reached */
+#define WALK_FORCED (MK_PI / 64.0) /* the least step taken uncertified (nothing certified down to MIN_ANGLE) */
 
 /* the first round's ladder: the previous step times 2^((k - 3) / 2) */
 static const double walk_ladder_ratio[WALK_K] = {
@@ -220,7 +221,6 @@ static const double walk_ladder_ratio[WALK_K] = {
  * search for its next step: lo the largest certified step found (its error,
  * normal, point), hi the smallest uncertified step above it, width the
  * bracket's width before the last round, d[0 .. nc) the next candidates. */
-#define WALK_FORCED (MK_PI / 64.0) /* the least step taken uncertified */
 typedef struct Walk {
 	double phi0, phi, guess, maxerr;
 	int first, cur, count, done, force; /* force: take the one candidate, certified or not */
