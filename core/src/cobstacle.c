@@ -211,18 +211,20 @@ static mkVec2 wp2(const Work *w, int i) { return mkVec2_Make(w->p[0][i], w->p[1]
 #define WALK_REL 2e-2        /* the reach is bracketed to this relative width */
 #define WALK_MAX (0.75 * MK_PI) /* the largest normal step (the proofs need less than 180 degrees) */
 #define WALK_LAST 3          /* vertices kept for closing the cycle when max_points is reached */
-#define WALK_FORCED (MK_PI / 64.0) /* the least step taken uncertified (nothing certified down to MIN_ANGLE) */
+#define WALK_FORCED (MK_PI / 64.0) /* the least step taken uncertified (no finite error down to MIN_ANGLE) */
+#define WALK_RETRIES 8       /* walks restarted with a looser target when max_points would be exceeded */
 
 /* the first round's ladder: the previous step times 2^((k - 3) / 2) */
 static const double walk_ladder_ratio[WALK_K] = {
 	0.35355339059327373, 0.5, 0.70710678118654757, 1.0, 1.4142135623730951, 2.0, 2.8284271247461903, 4.0};
 
 /* One walk around the circle of normals: its start, where it is, and the
- * search for its next step: lo the largest certified step found (its error,
- * normal, point), hi the smallest uncertified step above it, width the
- * bracket's width before the last round, d[0 .. nc) the next candidates. */
+ * search for its next step: tol its target, lo the largest step certified
+ * within it (its error, normal, point), hi the smallest uncertified step
+ * above it, width the bracket's width before the last round, d[0 .. nc) the
+ * next candidates. */
 typedef struct Walk {
-	double phi0, phi, guess, maxerr;
+	double phi0, phi, guess, maxerr, tol;
 	int first, cur, count, done, force; /* force: take the one candidate, certified or not */
 	double lo, hi, lo_e, hi_e, width;
 	mkVec2 lo_n, lo_p;
@@ -239,12 +241,14 @@ static double walk_cap(const Walk *a, int max_points, double *rem)
 	return cap;
 }
 
-/* The first round of a step: a ladder around the previous step, up to the
- * cap. Past max_points - WALK_LAST vertices the walk closes the cycle in at
- * most WALK_LAST + 1 steps of at most 90 degrees, certified or not. */
-static void walk_ladder(Walk *a, int max_points)
+/* The first round of a step towards target tol: a ladder around the
+ * previous step, up to the cap. Past max_points - WALK_LAST vertices the
+ * walk closes the cycle in at most WALK_LAST + 1 steps of at most 90
+ * degrees, certified or not. */
+static void walk_ladder(Walk *a, double tol, int max_points)
 {
 	double rem, cap = walk_cap(a, max_points, &rem);
+	a->tol = tol;
 	a->lo = 0.0; a->hi = INFINITY; a->lo_e = a->hi_e = INFINITY; a->width = INFINITY;
 	a->nc = 0;
 	a->force = a->count >= max_points - WALK_LAST;
@@ -258,14 +262,22 @@ static void walk_ladder(Walk *a, int max_points)
 
 /* After a round: 1 when the step lo is decided, else the next round's
  * candidates in d. */
-static int walk_next(Walk *a, double tol, int max_points)
+static int walk_next(Walk *a, int max_points)
 {
 	double rem, cap = walk_cap(a, max_points, &rem);
 	if (a->lo == cap) return 1;
 	a->nc = 0;
 	if (a->lo == 0.0) { /* nothing certified: steps down to MIN_ANGLE */
 		if (a->hi <= MIN_ANGLE) {
-			/* none: the previous step (at least WALK_FORCED), uncertified */
+			if (isfinite(a->hi_e)) {
+				/* tol is below the rounding allowance here: the step
+				 * starts over with twice the error of the least step
+				 * as its target */
+				walk_ladder(a, 2.0 * a->hi_e, max_points);
+				return 0;
+			}
+			/* no finite error at all (NaN points): the previous step
+			 * (at least WALK_FORCED), uncertified */
 			double t = a->guess > WALK_FORCED ? a->guess : WALK_FORCED;
 			a->d[a->nc++] = t < cap ? t : cap;
 			a->force = 1;
@@ -295,7 +307,7 @@ static int walk_next(Walk *a, double tol, int max_points)
 	double est = NAN, h = 0.9 * WALK_REL * a->lo;
 	if (a->lo_e > 0.0 && a->hi_e > a->lo_e && isfinite(a->hi_e)) {
 		double p = log(a->hi_e / a->lo_e) / log(a->hi / a->lo);
-		est = a->lo * pow(tol / a->lo_e, 1.0 / p);
+		est = a->lo * pow(a->tol / a->lo_e, 1.0 / p);
 	}
 	if (est > a->lo && est < a->hi && 2.0 * width <= a->width && WALK_KI * h < width) {
 		double t0 = est - 0.5 * (WALK_KI - 1) * h;
@@ -322,9 +334,9 @@ static int walk_node(Work *w, int *nv, mkVec2 n, mkVec2 p)
 	return k;
 }
 
-/* Start a walk at normal angle phi with first guess `guess`; -1 on memory. */
+/* Start a walk at normal angle phi with first guess `guess` towards target tol. */
 static mkResult walk_start(Work *w, Walk *a, mkBody2 b1, mkBody2 b2, mkImpl impl, double phi, double guess,
-	int max_points, int *nv)
+	double tol, int max_points, int *nv)
 {
 	double nx, ny, px, py;
 	sincos_exact(phi, &nx, &ny);
@@ -336,7 +348,7 @@ static mkResult walk_start(Work *w, Walk *a, mkBody2 b1, mkBody2 b2, mkImpl impl
 	a->phi0 = a->phi = phi;
 	a->guess = guess;
 	a->count = 1;
-	walk_ladder(a, max_points);
+	walk_ladder(a, tol, max_points);
 	return MK_OK;
 }
 
@@ -354,21 +366,27 @@ static mkResult walk_start(Work *w, Walk *a, mkBody2 b1, mkBody2 b2, mkImpl impl
  * short arc; another start may save a vertex); the walks share each round's
  * two batch calls. The walk with the fewest vertices wins (the first to
  * finish among equals; a walk is dropped as soon as it cannot beat a
- * finished one), and its vertices move to nodes 0 .. count - 1. When no step
- * down to MIN_ANGLE is certified (rounding, or NaN points) the walk takes the
- * previous step, at least WALK_FORCED; past max_points - WALK_LAST vertices
- * it closes the cycle in steps of at most 90 degrees; the errors of such
- * arcs (above tol, or NaN) are reported. Results as for
- * fixed normals: nodes by w->next from node 0, w->err2[i] the error of the
- * arc i -> next[i]. Deterministic: the same rounds whatever the thread. */
+ * finished one), and its vertices move to nodes 0 .. count - 1.
+ * Where tol cannot be met (the errors then exceed tol and are reported):
+ * when no step down to MIN_ANGLE is certified, the step starts over with
+ * twice the error at MIN_ANGLE as its target (tol below the rounding
+ * allowance), or, if that error is not finite (NaN points), takes the
+ * previous step (at least WALK_FORCED) uncertified; when a walk reaches
+ * max_points - WALK_LAST vertices, all walks start over with a target
+ * looser by (1.1 / the fraction of the circle covered)^2, at least 2, up to
+ * WALK_RETRIES times, and after that close the cycle in steps of at most 90
+ * degrees. Results as for fixed normals: nodes by w->next from node 0,
+ * w->err2[i] the error of the arc i -> next[i]. Deterministic: the same
+ * rounds whatever the thread. */
 static mkResult walk2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, int max_points,
 	int *count, double *error)
 {
 	enum { LANES = WALK_STARTS * WALK_K };
 	Walk wk[WALK_STARTS];
 	double nx[LANES], ny[LANES], px[LANES], py[LANES], mx[LANES], my[LANES], qx[LANES], qy[LANES];
-	int nv = 0, nwalk = 1, best = -1;
-	mkResult r = walk_start(w, &wk[0], b1, b2, impl, 0.0, MK_PI / 8.0, max_points, &nv);
+	int nv = 0, nwalk = 1, best = -1, retries = 0;
+	double target = tol;
+	mkResult r = walk_start(w, &wk[0], b1, b2, impl, 0.0, MK_PI / 8.0, target, max_points, &nv);
 	if (r != MK_OK) return r;
 	for (;;) {
 		/* one round: every live walk's candidates, in two batch calls */
@@ -407,19 +425,19 @@ static mkResult walk2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound boun
 				double e = edge_err2(bound, ni, mkVec2_Make(nx[nl], ny[nl]), pi, mkVec2_Make(px[nl], py[nl]),
 					mkVec2_Make(mx[nl], my[nl]), mkVec2_Make(qx[nl], qy[nl]));
 				qx[nl] = e; /* the lane's error from here on */
-				if (e <= tol && a->d[k] > a->lo) {
+				if (e <= a->tol && a->d[k] > a->lo) {
 					a->lo = a->d[k]; a->lo_e = e;
 					a->lo_n = mkVec2_Make(nx[nl], ny[nl]); a->lo_p = mkVec2_Make(px[nl], py[nl]);
 				}
 			}
 			if (!(a->hi > a->lo)) a->hi = INFINITY;
 			for (int k = 0, l = first_lane; k < a->nc; ++k, ++l)
-				if (!(qx[l] <= tol) && a->d[k] > a->lo && a->d[k] < a->hi) { a->hi = a->d[k]; a->hi_e = qx[l]; }
+				if (!(qx[l] <= a->tol) && a->d[k] > a->lo && a->d[k] < a->hi) { a->hi = a->d[k]; a->hi_e = qx[l]; }
 			if (a->force) { /* the one candidate, certified or not */
 				int l = first_lane;
 				a->lo = a->d[0]; a->lo_e = qx[l];
 				a->lo_n = mkVec2_Make(nx[l], ny[l]); a->lo_p = mkVec2_Make(px[l], py[l]);
-			} else if (!walk_next(a, tol, max_points)) {
+			} else if (!walk_next(a, max_points)) {
 				continue;
 			}
 			/* the step lo is decided */
@@ -439,10 +457,21 @@ static mkResult walk2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound boun
 			a->phi += a->lo;
 			a->guess = a->lo;
 			a->count++;
-			walk_ladder(a, max_points);
+			if (a->count >= max_points - WALK_LAST && retries < WALK_RETRIES) {
+				/* too many vertices: all walks start over, looser */
+				double f = (a->phi - a->phi0) / (2.0 * MK_PI), grow = 1.1 / f;
+				target *= grow * grow > 2.0 ? grow * grow : 2.0;
+				++retries;
+				nv = 0; nwalk = 1; best = -1;
+				r = walk_start(w, &wk[0], b1, b2, impl, 0.0, MK_PI / 8.0, target, max_points, &nv);
+				if (r != MK_OK) return r;
+				break;
+			}
+			walk_ladder(a, target, max_points);
 			if (j == 0 && a->count == 2) /* walk 0's first step is known: the other starts inside it */
 				for (; nwalk < WALK_STARTS; ++nwalk) {
-					r = walk_start(w, &wk[nwalk], b1, b2, impl, a->phi * nwalk / WALK_STARTS, a->guess, max_points, &nv);
+					r = walk_start(w, &wk[nwalk], b1, b2, impl, a->phi * nwalk / WALK_STARTS, a->guess, target,
+						max_points, &nv);
 					if (r != MK_OK) return r;
 				}
 		}
