@@ -15,12 +15,12 @@
 #include "message.h"
 #include <time.h>
 
+#include "geom_inline.h"
 #include "kernel.h"
 
 #define ROUND_REL 1e-13   /* rounding allowance per unit of coordinate size */
 #define MIN_ANGLE 1e-12   /* normals closer than this (radians) are not split */
 #define MAX_SPLITS 10     /* uniform 3D: 8 * 4^10 triangles */
-#define DENSE2 0.125      /* 2D adaptive: candidates refined to DENSE2 * tol, then the fewest kept (prune2) */
 
 mkCSpaceOptions mkCSpaceOptions_Default(void)
 {
@@ -72,7 +72,6 @@ typedef struct Work {
 	double *n[3], *p[3];
 	int vcap[6];
 	int *next, ncap;           /* 2D: the counter-clockwise successor */
-	int *act, acap, *act2, a2cap;
 	double *m[3], *q[3];       /* batch normals and their points */
 	int mcap[6];
 	int *tri, tcap, *tri2, t2cap, *leaf, lcap; /* 3D triangles, 3 ints each */
@@ -82,17 +81,17 @@ typedef struct Work {
 	double *o[3]; int ocap[3]; /* 3D outer vertices */
 	int *fin, fcap;            /* 3D final (conforming) triangles */
 	double *pb; int pbcap;     /* paper mode: B1's half, the poses' directions, their points */
-	double *err2; int ecap;    /* 2D adaptive: the error of the arc i -> next[i] */
-	int *sel, scap;            /* 2D adaptive: the selection pass's arrays */
+	double *err2; int ecap;    /* 2D: the error of the arc i -> next[i] */
+	double *cp; int cpcap;     /* 2D adaptive: the chosen walk's vertices */
 } Work;
 
 static void work_free(Work *w)
 {
 	for (int i = 0; i < 3; ++i) { free(w->n[i]); free(w->p[i]); free(w->m[i]); free(w->q[i]); }
-	free(w->next); free(w->act); free(w->act2); free(w->tri); free(w->tri2); free(w->leaf);
+	free(w->next); free(w->tri); free(w->tri2); free(w->leaf);
 	free(w->edges.key); free(w->edges.val); free(w->dedges.key); free(w->dedges.val); free(w->poly);
 	for (int i = 0; i < 3; ++i) free(w->o[i]);
-	free(w->fin); free(w->pb); free(w->err2); free(w->sel);
+	free(w->fin); free(w->pb); free(w->err2); free(w->cp);
 	memset(w, 0, sizeof *w);
 }
 
@@ -141,7 +140,7 @@ static double dist_seg2(mkVec2 v, mkVec2 a, mkVec2 b)
 	double dd = mkVec2_Dot(d, d), t = dd > 0.0 ? mkVec2_Dot(e, d) / dd : 0.0;
 	if (t < 0.0) t = 0.0;
 	if (t > 1.0) t = 1.0;
-	return mkVec2_Length(mkVec2_Sub(e, mkVec2_Scale(d, t)));
+	return mkVec2_LengthInline(mkVec2_Sub(e, mkVec2_Scale(d, t)));
 }
 
 /* The vertex of the tangent lines at (ni, pi) and (nj, pj): pi + s tau_i with
@@ -161,9 +160,9 @@ static double size2(mkVec2 a) { return fabs(a.x) + fabs(a.y); }
 static mkVec2 split_normal2(mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj)
 {
 	mkVec2 d = mkVec2_Sub(pj, pi);
-	mkVec2 m = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
+	mkVec2 m = mkVec2_NormalizeInline(mkVec2_Make(d.y, -d.x));
 	if (!(mkVec2_Cross(ni, m) > 0.0 && mkVec2_Cross(m, nj) > 0.0))
-		m = mkVec2_Normalize(mkVec2_Add(ni, nj));
+		m = mkVec2_NormalizeInline(mkVec2_Add(ni, nj));
 	return m;
 }
 
@@ -171,201 +170,381 @@ static mkVec2 split_normal2(mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj)
  * pi, pj), given the split normal m and its point xm = x(m). */
 static double edge_err2(mkBound bound, mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj, mkVec2 m, mkVec2 xm)
 {
-	mkVec2 d = mkVec2_Sub(pj, pi);
-	mkVec2 chord = mkVec2_Normalize(mkVec2_Make(d.y, -d.x));
-	int is_chord = mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y);
+	double rnd = ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
 	/* Proof 3: for normals u between ni and nj, h_K(u) minus the
-	 * best of <u, pi>, <u, pj> is at most c / (4 cos(theta/2)) */
+	 * best of <u, pi>, <u, pj> is at most g3 = c / (4 cos(theta/2)) */
 	double c = mkVec2_Dot(mkVec2_Sub(ni, nj), mkVec2_Sub(pi, pj));
-	double half = 0.5 * mkVec2_Length(mkVec2_Add(ni, nj));
-	double g = (c > 0.0 ? c : 0.0) / (4.0 * half);
-	int wide = !(mkVec2_Dot(ni, nj) >= 0.0); /* a step over 90 degrees: Proof 3 only */
-	if (!(mkVec2_Cross(ni, nj) > 0.0)) g = INFINITY; /* 180 degrees or more: nothing certified */
-	if (wide) {
-		/* keep g */
+	c = c > 0.0 ? c : 0.0;
+	if (!(mkVec2_Cross(ni, nj) > 0.0)) return INFINITY + rnd; /* 180 degrees or more (or clockwise): nothing certified */
+	double other = INFINITY; /* Proof 1 or 2, where it applies */
+	if (!(mkVec2_Dot(ni, nj) >= 0.0)) {
+		/* a step over 90 degrees: Proof 3 only */
 	} else if (bound == MK_BOUND_INNER) {
 		/* Proof 1: the chord gap h_K(m) - <m, p>, m the chord normal */
-		if (is_chord) {
+		mkVec2 d = mkVec2_Sub(pj, pi);
+		mkVec2 chord = mkVec2_NormalizeInline(mkVec2_Make(d.y, -d.x));
+		if (mkVec2_Dot(chord, m) == 1.0 || (chord.x == m.x && chord.y == m.y)) {
 			double lo = fmin(mkVec2_Dot(m, pi), mkVec2_Dot(m, pj));
-			double gap = mkVec2_Dot(m, xm) - lo;
-			if (gap < 0.0) gap = 0.0;
-			if (gap < g) g = gap;
+			other = mkVec2_Dot(m, xm) - lo;
+			if (other < 0.0) other = 0.0;
 		}
 	} else {
 		/* Proof 2: the tangent vertex's distance to conv{pi, x(m), pj} */
 		mkVec2 v = tangent_vertex(ni, pi, nj, pj);
-		double dv = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
-		if (dv < g) g = dv;
+		other = fmin(dist_seg2(v, pi, xm), dist_seg2(v, xm, pj));
 	}
-	return g + ROUND_REL * (size2(pi) + size2(pj) + size2(xm));
+	/* the smaller of the two; g3 >= c / (4 (1 + 1e-9)) for unit normals, so
+	 * g3 is only formed when the other bound might exceed it */
+	if (other * (4.0 * (1.0 + 1e-9)) < c) return other + rnd;
+	double g3 = c / (4.0 * (0.5 * mkVec2_LengthInline(mkVec2_Add(ni, nj))));
+	return (other < g3 ? other : g3) + rnd;
 }
 
 static mkVec2 wn2(const Work *w, int i) { return mkVec2_Make(w->n[0][i], w->n[1][i]); }
 static mkVec2 wp2(const Work *w, int i) { return mkVec2_Make(w->p[0][i], w->p[1][i]); }
 
-/* The selection pass of the adaptive 2D boundary. Refinement only halves
- * normal steps, so many final arcs are certified well below tol (a quarter
- * of it for a step halved once more than needed). Among the refined
- * vertices this keeps the fewest whose consecutive arcs are each certified
- * within tol by the same criterion as refinement (Proofs 1-3 with x(m) of
- * the merged chord's normal m), vertex 0 kept (the output starts at it):
- * the arcs k -> k + s of the cycle order are tried for s = 2, 3, ... while
- * the arc of span s - 1 from k was within tol and the normal step stays
- * below 90 degrees (one batch of x(m) per span), then a shortest path
- * from position 0 around to itself over the arcs within tol (and the
- * refined arcs, span 1, always) picks the vertices. The chosen merged arcs
- * are evaluated once more for their errors (err[i]: the arc i -> next[i]).
- * Deterministic: the same choice whatever the thread. */
-static mkResult prune2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, double *err,
-	int *count)
+/* ---- 2D adaptive: the farthest-reach walk ---------------------------------------------- */
+
+#define WALK_STARTS 2        /* walks from different start normals, in lockstep; the fewest vertices win */
+#define WALK_K 8             /* candidate steps per walk and round (at most) */
+#define WALK_KI 4            /* the same around an estimated reach */
+#define WALK_REL 2e-2        /* the reach is bracketed to this relative width */
+#define WALK_MAX (0.75 * MK_PI) /* the largest normal step (the proofs need less than 180 degrees) */
+#define WALK_LAST 3          /* vertices kept for closing the cycle when max_points is reached */
+#define WALK_FORCED (MK_PI / 64.0) /* the least step taken uncertified (no finite error down to MIN_ANGLE) */
+#define WALK_RETRIES 8       /* walks restarted with a looser target when max_points would be exceeded */
+
+/* the first round's ladder: the previous step times 2^((k - 3) / 2) */
+static const double walk_ladder_ratio[WALK_K] = {
+	0.35355339059327373, 0.5, 0.70710678118654757, 1.0, 1.4142135623730951, 2.0, 2.8284271247461903, 4.0};
+
+/* One walk around the circle of normals: its start, where it is, and the
+ * search for its next step: tol its target, lo the largest step certified
+ * within it (its error, normal, point), hi the smallest uncertified step
+ * above it, width the bracket's width before the last round, d[0 .. nc) the
+ * next candidates. */
+typedef struct Walk {
+	double phi0, phi, guess, maxerr, tol;
+	int first, cur, count, done, force; /* force: take the one candidate, certified or not */
+	double lo, hi, lo_e, hi_e, width;
+	mkVec2 lo_n, lo_p;
+	int nc;
+	double d[WALK_K];
+} Walk;
+
+/* The rest of the circle from the walk's vertex, and the largest step. */
+static double walk_cap(const Walk *a, int max_points, double *rem)
 {
-	int cnt = *count;
-	if (cnt < 4) return MK_OK;
-	/* sel: ord[cnt + 1], reach[cnt], dp[cnt + 1], from[cnt + 1] */
-	if (!grow_i(&w->sel, &w->scap, 4 * cnt + 3) || !grow_i(&w->act, &w->acap, cnt) || !grow_i(&w->act2, &w->a2cap, cnt)
-		|| !work_batch(w, cnt, 2))
-		return MK_ERR_MEMORY;
-	int *ord = w->sel, *reach = ord + cnt + 1, *dp = reach + cnt, *from = dp + cnt + 1;
-	for (int k = 0, i = 0; k < cnt; ++k, i = w->next[i]) ord[k] = i;
-	ord[cnt] = 0;
-	int na = 0;
-	for (int k = 0; k < cnt; ++k) {
-		reach[k] = 1;
-		if (err[ord[k]] <= tol) w->act[na++] = k;
+	*rem = a->phi0 + 2.0 * MK_PI - a->phi;
+	double cap = *rem < WALK_MAX ? *rem : WALK_MAX;
+	if (a->count >= max_points - WALK_LAST && cap > 0.5 * MK_PI) cap = 0.5 * MK_PI;
+	return cap;
+}
+
+/* The first round of a step towards target tol: a ladder around the
+ * previous step, up to the cap. Past max_points - WALK_LAST vertices the
+ * walk closes the cycle in at most WALK_LAST + 1 steps of at most 90
+ * degrees, certified or not. */
+static void walk_ladder(Walk *a, double tol, int max_points)
+{
+	double rem, cap = walk_cap(a, max_points, &rem);
+	a->tol = tol;
+	a->lo = 0.0; a->hi = INFINITY; a->lo_e = a->hi_e = INFINITY; a->width = INFINITY;
+	a->nc = 0;
+	a->force = a->count >= max_points - WALK_LAST;
+	if (a->force) { a->d[a->nc++] = cap; return; }
+	for (int k = 0; k < WALK_K; ++k) {
+		double t = a->guess * walk_ladder_ratio[k];
+		if (t >= cap) { a->d[a->nc++] = cap; break; }
+		a->d[a->nc++] = t;
 	}
-	for (int span = 2; na > 0 && span < cnt; ++span) {
-		int nb = 0;
-		for (int a = 0; a < na; ++a) {
-			int k = w->act[a], q = k + span;
-			if (q > cnt) continue; /* arcs over vertex 0 are not used */
-			mkVec2 nu = wn2(w, ord[k]), nx = wn2(w, ord[q]);
-			if (!(mkVec2_Dot(nu, nx) >= 0.0 && mkVec2_Cross(nu, nx) > 0.0)) continue; /* Proof 1: below 90 degrees */
-			mkVec2 m = split_normal2(nu, nx, wp2(w, ord[k]), wp2(w, ord[q]));
-			w->m[0][nb] = m.x; w->m[1][nb] = m.y;
-			w->act2[nb++] = k;
-		}
-		if (nb == 0) break;
-		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], nb, w->q[0], w->q[1]);
-		if (r != MK_OK) return r;
-		na = 0;
-		for (int a = 0; a < nb; ++a) {
-			int k = w->act2[a], q = k + span;
-			double e = edge_err2(bound, wn2(w, ord[k]), wn2(w, ord[q]), wp2(w, ord[k]), wp2(w, ord[q]),
-				mkVec2_Make(w->m[0][a], w->m[1][a]), mkVec2_Make(w->q[0][a], w->q[1][a]));
-			if (e <= tol) {
-				reach[k] = span;
-				w->act[na++] = k;
+}
+
+/* After a round: 1 when the step lo is decided, else the next round's
+ * candidates in d. */
+static int walk_next(Walk *a, int max_points)
+{
+	double rem, cap = walk_cap(a, max_points, &rem);
+	if (a->lo == cap) return 1;
+	a->nc = 0;
+	if (a->lo == 0.0) { /* nothing certified: steps down to MIN_ANGLE */
+		if (a->hi <= MIN_ANGLE) {
+			if (isfinite(a->hi_e)) {
+				/* tol is below the rounding allowance here: the step
+				 * starts over with twice the error of the least step
+				 * as its target */
+				walk_ladder(a, 2.0 * a->hi_e, max_points);
+				return 0;
 			}
+			/* no finite error at all (NaN points): the previous step
+			 * (at least WALK_FORCED), uncertified */
+			double t = a->guess > WALK_FORCED ? a->guess : WALK_FORCED;
+			a->d[a->nc++] = t < cap ? t : cap;
+			a->force = 1;
+			return 0;
 		}
-	}
-	/* fewest arcs from position 0 to position cnt (vertex 0 again) */
-	for (int q = 0; q <= cnt; ++q) { dp[q] = q == 0 ? 0 : cnt + 1; from[q] = -1; }
-	for (int p = 0; p < cnt; ++p)
-		for (int sp = 1; sp <= reach[p] && p + sp <= cnt; ++sp)
-			if (dp[p] + 1 < dp[p + sp]) { dp[p + sp] = dp[p] + 1; from[p + sp] = p; }
-	/* relink, and the merged arcs' errors */
-	int nb = 0;
-	for (int q = cnt; q > 0; q = from[q]) {
-		int p = from[q];
-		w->next[ord[p]] = ord[q];
-		if (q - p > 1) {
-			mkVec2 nu = wn2(w, ord[p]), nx = wn2(w, ord[q]);
-			mkVec2 m = split_normal2(nu, nx, wp2(w, ord[p]), wp2(w, ord[q]));
-			w->m[0][nb] = m.x; w->m[1][nb] = m.y;
-			w->act2[nb++] = p;
+		for (int k = 0; k < WALK_K; ++k) {
+			double t = a->hi * exp2(-2.0 * (k + 1));
+			if (t <= MIN_ANGLE) { a->d[a->nc++] = MIN_ANGLE; break; }
+			a->d[a->nc++] = t;
 		}
+		return 0;
 	}
-	if (nb > 0) {
-		mkResult r = eval2(b1, b2, impl, w->m[0], w->m[1], nb, w->q[0], w->q[1]);
-		if (r != MK_OK) return r;
-		for (int a = 0; a < nb; ++a) {
-			int u = ord[w->act2[a]], x = w->next[u];
-			err[u] = edge_err2(bound, wn2(w, u), wn2(w, x), wp2(w, u), wp2(w, x), mkVec2_Make(w->m[0][a], w->m[1][a]),
-				mkVec2_Make(w->q[0][a], w->q[1][a]));
+	if (a->hi == INFINITY) { /* everything certified: longer steps */
+		for (int k = 0; k < WALK_K; ++k) {
+			double t = a->lo * exp2(0.5 * (k + 1));
+			if (t >= cap) { a->d[a->nc++] = cap; break; }
+			a->d[a->nc++] = t;
 		}
+		return 0;
 	}
-	*count = dp[cnt];
+	double width = a->hi - a->lo;
+	if (width <= WALK_REL * a->lo) return 1;
+	/* The error as a power of the step through the bracket's ends estimates
+	 * the reach; when the bracket at least halved in the last round, the
+	 * candidates sit 0.9 WALK_REL lo apart around the estimate, else they
+	 * divide the bracket evenly. */
+	double est = NAN, h = 0.9 * WALK_REL * a->lo;
+	if (a->lo_e > 0.0 && a->hi_e > a->lo_e && isfinite(a->hi_e)) {
+		double p = log(a->hi_e / a->lo_e) / log(a->hi / a->lo);
+		est = a->lo * pow(a->tol / a->lo_e, 1.0 / p);
+	}
+	if (est > a->lo && est < a->hi && 2.0 * width <= a->width && WALK_KI * h < width) {
+		double t0 = est - 0.5 * (WALK_KI - 1) * h;
+		if (t0 <= a->lo) t0 = a->lo + h;
+		if (t0 + (WALK_KI - 1) * h >= a->hi) t0 = a->hi - WALK_KI * h;
+		for (int k = 0; k < WALK_KI; ++k) a->d[a->nc++] = t0 + k * h;
+	} else {
+		for (int k = 0; k < WALK_K; ++k) a->d[a->nc++] = a->lo + width * (k + 1) / (WALK_K + 1);
+	}
+	a->width = width;
+	return 0;
+}
+
+/* Append a vertex to the node pool; -1 on memory. */
+static int walk_node(Work *w, int *nv, mkVec2 n, mkVec2 p)
+{
+	if (!work_verts(w, *nv + 1, 2) || !grow_i(&w->next, &w->ncap, *nv + 1) || !grow_d(&w->err2, &w->ecap, *nv + 1))
+		return -1;
+	int k = (*nv)++;
+	w->n[0][k] = n.x; w->n[1][k] = n.y;
+	w->p[0][k] = p.x; w->p[1][k] = p.y;
+	w->next[k] = k;
+	w->err2[k] = NAN;
+	return k;
+}
+
+/* Start a walk at normal angle phi with first guess `guess` towards target tol. */
+static mkResult walk_start(Work *w, Walk *a, mkBody2 b1, mkBody2 b2, mkImpl impl, double phi, double guess,
+	double tol, int max_points, int *nv)
+{
+	double nx, ny, px, py;
+	sincos_exact(phi, &nx, &ny);
+	mkResult r = eval2(b1, b2, impl, &nx, &ny, 1, &px, &py);
+	if (r != MK_OK) return r;
+	memset(a, 0, sizeof *a);
+	a->first = a->cur = walk_node(w, nv, mkVec2_Make(nx, ny), mkVec2_Make(px, py));
+	if (a->first < 0) return MK_ERR_MEMORY;
+	a->phi0 = a->phi = phi;
+	a->guess = guess;
+	a->count = 1;
+	walk_ladder(a, tol, max_points);
 	return MK_OK;
 }
 
-/* Adaptive (uniform_n == 0) or uniform boundary. Results in w: node order by
- * w->next from node 0, *count nodes. */
+/* The adaptive 2D boundary (docs/scene.md, "2D adaptive sampling"): greedy
+ * walks around the circle of normals. From each vertex the next is placed
+ * at (about) the largest normal step whose arc edge_err2 certifies within
+ * tol (Proofs 1-3, exactly the check of a fixed sampling), found in rounds
+ * of WALK_K candidate steps: a ladder around the previous step, then
+ * candidates inside the bracket [largest certified, smallest uncertified)
+ * until it is WALK_REL wide. Only a candidate whose own certificate is
+ * within tol is taken, so the result never relies on the error growing
+ * with the step, which the search assumes. The last arc ends at the walk's
+ * first vertex. Walk 0 starts at normal angle 0; once its first step s is
+ * known, walk j starts at s j / WALK_STARTS (a greedy walk ends with a
+ * short arc; another start may save a vertex); the walks share each round's
+ * two batch calls. The walk with the fewest vertices wins (the first to
+ * finish among equals; a walk is dropped as soon as it cannot beat a
+ * finished one), and its vertices move to nodes 0 .. count - 1.
+ * Where tol cannot be met (the errors then exceed tol and are reported):
+ * when no step down to MIN_ANGLE is certified, the step starts over with
+ * twice the error at MIN_ANGLE as its target (tol below the rounding
+ * allowance), or, if that error is not finite (NaN points), takes the
+ * previous step (at least WALK_FORCED) uncertified; when a walk reaches
+ * max_points - WALK_LAST vertices, all walks start over with a target
+ * looser by (1.1 / the fraction of the circle covered)^2, at least 2, up to
+ * WALK_RETRIES times, and after that close the cycle in steps of at most 90
+ * degrees. Results as for fixed normals: nodes by w->next from node 0,
+ * w->err2[i] the error of the arc i -> next[i]. Deterministic: the same
+ * rounds whatever the thread. */
+static mkResult walk2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, int max_points,
+	int *count, double *error)
+{
+	enum { LANES = WALK_STARTS * WALK_K };
+	Walk wk[WALK_STARTS];
+	double nx[LANES], ny[LANES], px[LANES], py[LANES], mx[LANES], my[LANES], qx[LANES], qy[LANES];
+	int nv = 0, nwalk = 1, best = -1, retries = 0;
+	double target = tol;
+	mkResult r = walk_start(w, &wk[0], b1, b2, impl, 0.0, MK_PI / 8.0, target, max_points, &nv);
+	if (r != MK_OK) return r;
+	for (;;) {
+		/* one round: every live walk's candidates, in two batch calls */
+		int nl = 0;
+		for (int j = 0; j < nwalk; ++j)
+			if (!wk[j].done)
+				for (int k = 0; k < wk[j].nc; ++k, ++nl) sincos_exact(wk[j].phi + wk[j].d[k], &nx[nl], &ny[nl]);
+		if (nl == 0) break;
+		r = eval2(b1, b2, impl, nx, ny, nl, px, py);
+		if (r != MK_OK) return r;
+		nl = 0;
+		for (int j = 0; j < nwalk; ++j) {
+			Walk *a = &wk[j];
+			if (a->done) continue;
+			double rem = a->phi0 + 2.0 * MK_PI - a->phi;
+			mkVec2 ni = wn2(w, a->cur), pi = wp2(w, a->cur);
+			for (int k = 0; k < a->nc; ++k, ++nl) {
+				if (a->d[k] == rem) { /* the closing arc ends at the first vertex itself */
+					nx[nl] = w->n[0][a->first]; ny[nl] = w->n[1][a->first];
+					px[nl] = w->p[0][a->first]; py[nl] = w->p[1][a->first];
+				}
+				mkVec2 m = split_normal2(ni, mkVec2_Make(nx[nl], ny[nl]), pi, mkVec2_Make(px[nl], py[nl]));
+				mx[nl] = m.x; my[nl] = m.y;
+			}
+		}
+		r = eval2(b1, b2, impl, mx, my, nl, qx, qy);
+		if (r != MK_OK) return r;
+		nl = 0;
+		int live = nwalk;
+		for (int j = 0; j < live; ++j) {
+			Walk *a = &wk[j];
+			if (a->done) continue;
+			mkVec2 ni = wn2(w, a->cur), pi = wp2(w, a->cur);
+			int first_lane = nl;
+			for (int k = 0; k < a->nc; ++k, ++nl) {
+				double e = edge_err2(bound, ni, mkVec2_Make(nx[nl], ny[nl]), pi, mkVec2_Make(px[nl], py[nl]),
+					mkVec2_Make(mx[nl], my[nl]), mkVec2_Make(qx[nl], qy[nl]));
+				qx[nl] = e; /* the lane's error from here on */
+				if (e <= a->tol && a->d[k] > a->lo) {
+					a->lo = a->d[k]; a->lo_e = e;
+					a->lo_n = mkVec2_Make(nx[nl], ny[nl]); a->lo_p = mkVec2_Make(px[nl], py[nl]);
+				}
+			}
+			if (!(a->hi > a->lo)) a->hi = INFINITY;
+			for (int k = 0, l = first_lane; k < a->nc; ++k, ++l)
+				if (!(qx[l] <= a->tol) && a->d[k] > a->lo && a->d[k] < a->hi) { a->hi = a->d[k]; a->hi_e = qx[l]; }
+			if (a->force) { /* the one candidate, certified or not */
+				int l = first_lane;
+				a->lo = a->d[0]; a->lo_e = qx[l];
+				a->lo_n = mkVec2_Make(nx[l], ny[l]); a->lo_p = mkVec2_Make(px[l], py[l]);
+			} else if (!walk_next(a, max_points)) {
+				continue;
+			}
+			/* the step lo is decided */
+			double rem = a->phi0 + 2.0 * MK_PI - a->phi;
+			w->err2[a->cur] = a->lo_e;
+			if (a->lo_e > a->maxerr || a->lo_e != a->lo_e) a->maxerr = a->lo_e;
+			if (a->lo == rem) {
+				w->next[a->cur] = a->first;
+				a->done = 1;
+				if (best < 0 || a->count < wk[best].count) best = j;
+				continue;
+			}
+			int k = walk_node(w, &nv, a->lo_n, a->lo_p);
+			if (k < 0) return MK_ERR_MEMORY;
+			w->next[a->cur] = k;
+			a->cur = k;
+			a->phi += a->lo;
+			a->guess = a->lo;
+			a->count++;
+			if (a->count >= max_points - WALK_LAST && retries < WALK_RETRIES) {
+				/* too many vertices: all walks start over, looser */
+				double f = (a->phi - a->phi0) / (2.0 * MK_PI), grow = 1.1 / f;
+				target *= grow * grow > 2.0 ? grow * grow : 2.0;
+				++retries;
+				nv = 0; nwalk = 1; best = -1;
+				r = walk_start(w, &wk[0], b1, b2, impl, 0.0, MK_PI / 8.0, target, max_points, &nv);
+				if (r != MK_OK) return r;
+				break;
+			}
+			walk_ladder(a, target, max_points);
+			if (j == 0 && a->count == 2) /* walk 0's first step is known: the other starts inside it */
+				for (; nwalk < WALK_STARTS; ++nwalk) {
+					r = walk_start(w, &wk[nwalk], b1, b2, impl, a->phi * nwalk / WALK_STARTS, a->guess, target,
+						max_points, &nv);
+					if (r != MK_OK) return r;
+				}
+		}
+		for (int j = 0; j < nwalk; ++j) /* drop the walks that cannot beat a finished one */
+			if (best >= 0 && !wk[j].done && wk[j].count >= wk[best].count) wk[j].done = 1;
+	}
+	/* the winner's vertices to nodes 0 .. count - 1, in order */
+	const Walk *a = &wk[best];
+	int cnt = a->count;
+	if (!grow_d(&w->cp, &w->cpcap, 5 * cnt)) return MK_ERR_MEMORY;
+	for (int k = 0, i = a->first; k < cnt; ++k, i = w->next[i]) {
+		w->cp[5 * k] = w->n[0][i]; w->cp[5 * k + 1] = w->n[1][i];
+		w->cp[5 * k + 2] = w->p[0][i]; w->cp[5 * k + 3] = w->p[1][i];
+		w->cp[5 * k + 4] = w->err2[i];
+	}
+	for (int k = 0; k < cnt; ++k) {
+		w->n[0][k] = w->cp[5 * k]; w->n[1][k] = w->cp[5 * k + 1];
+		w->p[0][k] = w->cp[5 * k + 2]; w->p[1][k] = w->cp[5 * k + 3];
+		w->err2[k] = w->cp[5 * k + 4];
+		w->next[k] = k + 1 < cnt ? k + 1 : 0;
+	}
+	*count = cnt;
+	*error = a->maxerr;
+	return MK_OK;
+}
+
+/* Adaptive (uniform_n == 0 and no given normals: walk2) or fixed normals
+ * (uniform_n normals 2 pi k / n, or the given ones), each arc certified
+ * by edge_err2. Results in w: node order by w->next from node 0, *count
+ * nodes, w->err2[i] the error of the arc i -> next[i]. */
 static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, int max_points,
 	int uniform_n, const double *given_x, const double *given_y, int *count, double *error)
 {
-	int K = uniform_n > 0 ? uniform_n : 8;
-	if (max_points < K) max_points = K;
-	if (!work_verts(w, K, 2) || !grow_i(&w->next, &w->ncap, K) || !grow_i(&w->act, &w->acap, K)
+	if (uniform_n == 0 && !given_x) return walk2(w, b1, b2, impl, bound, tol, max_points, count, error);
+	int K = uniform_n;
+	if (!work_verts(w, K, 2) || !grow_i(&w->next, &w->ncap, K) || !grow_d(&w->err2, &w->ecap, K)
 		|| !work_batch(w, K, 2))
 		return MK_ERR_MEMORY;
 	for (int k = 0; k < K; ++k) {
 		if (given_x) {
-			mkVec2 u = mkVec2_Normalize(mkVec2_Make(given_x[k], given_y[k]));
+			mkVec2 u = mkVec2_NormalizeInline(mkVec2_Make(given_x[k], given_y[k]));
 			w->n[0][k] = u.x; w->n[1][k] = u.y;
 		} else {
 			sincos_exact(2.0 * MK_PI * k / K, &w->n[0][k], &w->n[1][k]);
 		}
 		w->next[k] = (k + 1) % K;
-		w->act[k] = k;
 	}
 	mkResult r = eval2(b1, b2, impl, w->n[0], w->n[1], K, w->p[0], w->p[1]);
 	if (r != MK_OK) return r;
-	int nv = K, na = K;
+	/* split normals: the chord's outward normal when it lies between the
+	 * two normals (always, in exact arithmetic), else the bisector */
+	for (int i = 0; i < K; ++i) {
+		int j = w->next[i];
+		mkVec2 m = split_normal2(wn2(w, i), wn2(w, j), wp2(w, i), wp2(w, j));
+		w->m[0][i] = m.x; w->m[1][i] = m.y;
+	}
+	r = eval2(b1, b2, impl, w->m[0], w->m[1], K, w->q[0], w->q[1]);
+	if (r != MK_OK) return r;
 	double maxerr = 0.0;
-	while (na > 0) {
-		if (!work_batch(w, na, 2)) return MK_ERR_MEMORY;
-		/* split normals: the chord's outward normal when it lies between
-		 * the two normals (always, in exact arithmetic), else the bisector */
-		for (int a = 0; a < na; ++a) {
-			int i = w->act[a], j = w->next[i];
-			mkVec2 m = split_normal2(wn2(w, i), wn2(w, j), wp2(w, i), wp2(w, j));
-			w->m[0][a] = m.x; w->m[1][a] = m.y;
-		}
-		r = eval2(b1, b2, impl, w->m[0], w->m[1], na, w->q[0], w->q[1]);
-		if (r != MK_OK) return r;
-		int nn = 0;
-		if (!grow_i(&w->act2, &w->a2cap, 2 * na)) return MK_ERR_MEMORY;
-		for (int a = 0; a < na; ++a) {
-			int i = w->act[a], j = w->next[i];
-			mkVec2 ni = {w->n[0][i], w->n[1][i]}, nj = {w->n[0][j], w->n[1][j]};
-			mkVec2 pi = {w->p[0][i], w->p[1][i]}, pj = {w->p[0][j], w->p[1][j]};
-			mkVec2 m = {w->m[0][a], w->m[1][a]}, xm = {w->q[0][a], w->q[1][a]};
-			double err = edge_err2(bound, ni, nj, pi, pj, m, xm);
-			double ang = atan2(mkVec2_Cross(ni, nj), mkVec2_Dot(ni, nj));
-			int split = uniform_n == 0 && err > DENSE2 * tol && ang > MIN_ANGLE && nv < max_points;
-			if (!split) {
-				if (err > maxerr || err != err) maxerr = err;
-				if (!grow_d(&w->err2, &w->ecap, nv)) return MK_ERR_MEMORY;
-				w->err2[i] = err;
-				continue;
-			}
-			if (!work_verts(w, nv + 1, 2) || !grow_i(&w->next, &w->ncap, nv + 1)) return MK_ERR_MEMORY;
-			int k = nv++;
-			w->n[0][k] = m.x; w->n[1][k] = m.y;
-			w->p[0][k] = xm.x; w->p[1][k] = xm.y;
-			w->next[k] = j;
-			w->next[i] = k;
-			w->act2[nn++] = i;
-			w->act2[nn++] = k;
-		}
-		int *t = w->act; w->act = w->act2; w->act2 = t;
-		int tc = w->acap; w->acap = w->a2cap; w->a2cap = tc;
-		na = nn;
+	for (int i = 0; i < K; ++i) {
+		int j = w->next[i];
+		double err = edge_err2(bound, wn2(w, i), wn2(w, j), wp2(w, i), wp2(w, j), mkVec2_Make(w->m[0][i], w->m[1][i]),
+			mkVec2_Make(w->q[0][i], w->q[1][i]));
+		if (err > maxerr || err != err) maxerr = err;
+		w->err2[i] = err;
 	}
-	if (uniform_n == 0 && !given_x) {
-		mkResult rp = prune2(w, b1, b2, impl, bound, tol, w->err2, &nv);
-		if (rp != MK_OK) return rp;
-		maxerr = 0.0;
-		for (int k = 0, i = 0; k < nv; ++k, i = w->next[i])
-			if (w->err2[i] > maxerr || w->err2[i] != w->err2[i]) maxerr = w->err2[i];
-	}
-	*count = nv;
+	*count = K;
 	*error = maxerr;
 	return MK_OK;
 }
 
 /* Write the boundary of run2 (inner: the points; outer: the tangent
- * vertices) counter-clockwise from normal 0 into out (2 arrays). */
+ * vertices) counter-clockwise from node 0 into out (2 arrays). */
 static void emit2(const Work *w, mkBound bound, int count, double *ox, double *oy)
 {
 	int i = 0;

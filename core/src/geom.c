@@ -30,18 +30,9 @@ mkMat2 mkMat2_Shear(double s)
 	return r;
 }
 
-double mkVec2_Length(mkVec2 a)
-{
-	return sqrt(a.x * a.x + a.y * a.y);
-}
+double mkVec2_Length(mkVec2 a) { return mkVec2_LengthInline(a); }
 
-mkVec2 mkVec2_Normalize(mkVec2 a)
-{
-	double n = mkVec2_Length(a);
-	if (!(n > 0.0) || !isfinite(n))
-		return mkVec2_Make(NAN, NAN);
-	return mkVec2_Scale(a, 1.0 / n);
-}
+mkVec2 mkVec2_Normalize(mkVec2 a) { return mkVec2_NormalizeInline(a); }
 
 double mkVec3_Length(mkVec3 a) { return mkVec3_LengthInline(a); }
 

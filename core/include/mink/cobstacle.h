@@ -14,8 +14,10 @@
  *  - on request an outer boundary: the polygon (polytope) cut out by the
  *    tangent lines (planes) at the same kind of normals, which contains K;
  * and a certified bound on the Hausdorff distance of each to K. In the
- * adaptive mode normals are inserted until the certified bound is at most
- * the sampling tolerance, so points go where the curvature needs them. The
+ * adaptive mode normals are placed until the certified bound is at most the
+ * sampling tolerance (2D: a walk around the circle of normals, each vertex
+ * at about the farthest normal step its arc's bound allows; 3D: refinement
+ * of the octahedron), so points go where the curvature needs them. The
  * certificates and their conditions are proved in docs/scene.md.
  *
  * Bodies that are boxes or cylinders are modelled first (mink/scene.h); the
@@ -40,7 +42,7 @@
 MK_EXTERN_C_BEGIN
 
 typedef enum mkCSpaceMode {
-	/* normals inserted until the certified error is at most the tolerance */
+	/* normals placed until the certified error is at most the tolerance */
 	MK_CSPACE_ADAPTIVE = 0,
 	/* a fixed set of normals, the same for every boundary, certified: 2D
 	 * `uniform` normals 2 pi k / uniform; 3D the octahedron's 8 faces split
