@@ -41,7 +41,10 @@ typedef struct mkTol {
  *  - libccd: MPR/EPA stop at 1e-4 (their defaults); MPR's depth is
  *    measured along its portal's direction, not minimised, so only its
  *    status is checked; EPA's depth on deep superquadric overlaps was off by
- *    up to 2e-2 of the scale here; GJK's intersection
+ *    up to 2e-2 of the scale here, with tolerances tightened as well (the
+ *    ccd-gjk-epa-1e-* entries: their depth errors on deep superquadric
+ *    overlaps stop near 2e-7 of the scale at the median and keep EPA's
+ *    rare wrong faces, up to 0.1); GJK's intersection
  *    test is exact up to rounding of the support points but needs the
  *    origin clear of the simplex by its own 1e-6 tolerance;
  *  - FCL: distance_tolerance 1e-6 (measured errors up to 4e-7 of scale);
@@ -58,6 +61,9 @@ static const mkTol mkTols[] = {
 	{ "ccd-gjk", 1e-7, 0, 0 },
 	{ "ccd-mpr", 1e-5, 0, 0 },
 	{ "ccd-gjk-epa", 1e-5, 0, 5e-2 },
+	{ "ccd-gjk-epa-1e-6", 1e-5, 0, 5e-2 },
+	{ "ccd-gjk-epa-1e-8", 1e-5, 0, 5e-2 },
+	{ "ccd-gjk-epa-1e-10", 1e-5, 0, 5e-2 },
 	{ "fcl", 1e-7, 1e-6, 1e-6 },
 	{ "asc", 1e-12, 0, 0 },
 	{ "asc-eigen", 1e-8, 0, 0 },
@@ -233,7 +239,8 @@ static void mk_draw(unsigned long long *seed, int ell, int near, mkBody3 *b1, mk
  * Ipopt peers run on FCL's cases above and in the benchmark). */
 static void test_random_pairs(void)
 {
-	const char *fast[] = { "minksum-normal", "minksum-ray", "ccd-gjk", "ccd-mpr", "ccd-gjk-epa", "fcl", "asc", "asc-eigen" };
+	const char *fast[] = { "minksum-normal", "minksum-ray", "ccd-gjk", "ccd-mpr", "ccd-gjk-epa", "ccd-gjk-epa-1e-10", "fcl", "asc",
+		"asc-eigen" };
 	const mkCollider *referee = mkColliders_Find("referee");
 	unsigned long long seed = 2022;
 	int below = 0;

@@ -14,11 +14,11 @@ function(mk_run out)
   endif()
 endfunction()
 
-# Every pair kind, 2 trials, Implicit on trial 0 only. The registry has 13
+# Every pair kind, 2 trials, Implicit on trial 0 only. The registry has 16
 # entries besides the referee; asc, asc-eigen and fcl take ellipsoids only
 # (colliders.h). Trial 0 of near and deep is an ellipsoid pair, trial 1 a
-# superquadric pair. So: ellipsoids 2 x 13, superquadrics 2 x 10, near and
-# deep 13 + 10 each: 92 rows and the header.
+# superquadric pair. So: ellipsoids 2 x 16, superquadrics 2 x 13, near and
+# deep 16 + 13 each: 116 rows and the header.
 mk_run(${WORK}/c.csv --trials 2 --seed 7 --limit implicit=1)
 file(STRINGS ${WORK}/c.csv lines)
 list(GET lines 0 head)
@@ -26,8 +26,8 @@ if(NOT head STREQUAL "pair,trial,algorithm,seconds,status,distance,referee_dista
   message(FATAL_ERROR "header is '${head}'")
 endif()
 list(LENGTH lines n)
-if(NOT n EQUAL 93)
-  message(FATAL_ERROR "expected 93 lines, got ${n}")
+if(NOT n EQUAL 117)
+  message(FATAL_ERROR "expected 117 lines, got ${n}")
 endif()
 foreach(line IN LISTS lines)
   if(line MATCHES "^superquadrics,[0-9]+,(asc|asc-eigen|fcl),|^(near|deep),1,(asc|asc-eigen|fcl),")
@@ -45,7 +45,7 @@ foreach(line IN LISTS lines)
   endif()
   # Every measured row: a time, a status, the referee's distance.
   if(NOT line MATCHES "^pair," AND NOT line MATCHES ",skipped,"
-      AND NOT line MATCHES "^[a-z]+,[01],[a-z-]+,[0-9.e-]+,(separated|touching|overlapping|failed),[^,]*,[-0-9.e]+,")
+      AND NOT line MATCHES "^[a-z]+,[01],[a-z0-9.-]+,[0-9.e-]+,(separated|touching|overlapping|failed),[^,]*,[-0-9.e]+,")
     message(FATAL_ERROR "malformed row: ${line}")
   endif()
 endforeach()
