@@ -976,30 +976,29 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 
 /* The depth is min over unit n of h(n) = h_{K-d}(n) = -f(n), the support
  * function of the shifted contact space K - d (which holds the origin in
- * its interior when the bodies overlap). Every evaluated direction v gives
- * a point x = x(v) - d of K - d, and h(n) >= <n, x> for every n.
+ * its interior when the bodies overlap). Every evaluated direction c gives
+ * a point x = x(c) - d of K - d, and h(n) >= <n, x> for every n.
  *
  * Lipschitz bound: |h(n) - h(m)| <= L |n - m| with L = max |x| over K - d
- * <= R1 + R2 + |d| (R the bodies' radii about their centres), so over a
- * patch of chord radius rho about v, f <= f(v) + L rho. That bound is first
- * order in rho; the one used here is second order and needs no radius:
- *
- * Over a spherical triangle T with vertices v0, v1, v2 and their points
- * x0, x1, x2 (A_ij = <v_i, x_j>, A_ii = h(v_i)), every n in T is m / |m|,
- * m = sum lambda_i v_i (lambda in the simplex), and
- *   h(m) >= max_j <m, x_j> >= sum_j lambda_j <m, x_j> = lambda^T A lambda
- *         = sum_i lambda_i A_ii - 2 sum_{i<j} lambda_i lambda_j e_ij
- *        >= min_i A_ii - (2/3) max(0, max e_ij) =: B,
- * e_ij = (A_ii + A_jj - A_ij - A_ji) / 2 = <v_i - v_j, x_i - x_j> / 2 >= 0
- * (the monotonicity of support points; about (J-curvature) |v_i - v_j|^2),
- * 2 sum_{i<j} lambda_i lambda_j = 1 - |lambda|^2 <= 2/3. Then h(n) =
- * h(m) / |m| >= B when B >= 0 (|m| <= 1), >= B / dmin otherwise (dmin the
- * distance of the plane of v0, v1, v2 from the origin, <= |m|). So
- *     max over T of f <= -B (or -B / dmin),
- * with a loss against the true maximum that shrinks with the square of the
- * edge length, and no term in the gradient. The best normal n* found gives
- * one more bound, h(n) >= <n, x*> >= min_i <v_i, x*> (likewise divided),
- * which decides the triangles closest to n*. */
+ * <= R1 + R2 + |d| (R the bodies' radii about their centres; |d| from the
+ * shift by the centre line), so over a patch of chord radius rho about c,
+ * f <= f(c) + L rho: first order in rho, and L is of the size of the
+ * scale. The bound used is the plane <n, x> itself over the patch, a
+ * spherical triangle T with unit vertices v0, v1, v2: every n in T is
+ * m / |m| with m = sum lambda_i v_i (lambda in the simplex), so
+ *     <n, x> = <m, x> / |m| >= min_i <v_i, x> =: b    when b >= 0 (|m| <= 1),
+ *     <n, x> >= b / dmin                              when b < 0,
+ * dmin the distance of the plane of v0, v1, v2 from the origin (<= |m|).
+ * Hence max over T of f <= -(that bound), for any point x of K - d at hand:
+ * the triangle's centre's, its parent's centre's, its three siblings'
+ * centres' and the best normal's (the largest b wins, the map b -> bound
+ * being increasing). Against the true maximum over T it loses about the
+ * curvature radius of K at the optimum times the squared size of T, so
+ * near the optimum triangles are split down to about sqrt(2 tol /
+ * curvature). (A bound from the three vertices' points, second order
+ * without a gradient term, was tried: its loss is the largest curvature
+ * over T, unbounded near the nearly flat faces of superquadrics with
+ * exponents below 1, and it needed more evaluations.) */
 
 /* The 12 vertices (unnormalised) and 20 faces of an icosahedron: the
  * first subdivision of the sphere of normals. */
@@ -1014,11 +1013,13 @@ static const unsigned char mkIcoF[20][3] = {
 	{ 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 }
 };
 
-/* A spherical triangle of the subdivision (unit vertices), its depth, and
- * the points x' of K - d of its centre and of its parent's centre. */
+/* A spherical triangle of the subdivision and its depth. */
 typedef struct mkPatch {
-	mkVec3 v[3], x;
-	double lower;    /* the largest plane value of its points (mkPatch_Plane) */
+	mkVec3 v[3];     /* unit vertices */
+	mkVec3 x;        /* the point x(c) - d of K - d of its centre c */
+	double lower;    /* the largest plane value (mkPatch_Plane) of the points
+	                    of its centre, its parent's centre and its siblings'
+	                    centres */
 	int level;
 } mkPatch;
 

@@ -21,11 +21,12 @@
  *                     Overlapping bodies: the depth is the distance from d to
  *                     the boundary of K, which can have several local optima;
  *                     the solver restarts from a few directions (the centre
- *                     line and the bodies' axes) and keeps the best. The
- *                     bound f(n) <= sd still holds (the depth reported is an
- *                     upper bound of the true one); that no smaller depth was
- *                     missed is not certified (tested against a
- *                     global grid search).
+ *                     line, the bodies' axes, a lattice) and keeps the best,
+ *                     then a branch and bound over the sphere of normals
+ *                     certifies it global: sd <= f(n) + gap with gap <=
+ *                     MK_COLLIDE3_GLOBAL_TOL * scale (restarting Newton from
+ *                     any better direction it meets), or says it could not
+ *                     within its budget (certified 0, gap wider).
  *  mkCollide3_Ray     finds the boundary point of K on the centre line (the
  *                     paper's MinkSum (Ray)): minimises the convex function
  *                     H(u + s) = h1(u + s) + h2(-(u + s)) over s orthogonal to
