@@ -41,7 +41,7 @@ do for [i = 1:nmeth] {
 	mnames[i] = rest[1:strstrt(rest, "|") - 1]
 	rest = rest[strstrt(rest, "|") + 1:]
 }
-# Colours and point types cycle through 16 (the registry has 14 entries).
+# Colours and point types cycle through 16 (the registry has 17 entries).
 color_of(m) = word("#1b6ca8 #d1495b #edae49 #00798c #6a994e #8e7dbe #5fa8d3 #3d405b #f4845f #2a9d8f #9c6644 #e07a5f #81b29a #000000 #b5179e #7209b7", (m - 1) % 16 + 1)
 pt_of(m) = word("7 5 9 11 13 15 7 5 9 11 13 15 7 5 9 11", (m - 1) % 16 + 1) + 0 + ((m - 1) % 16 >= 6 ? -1 : 0)
 

@@ -45,6 +45,8 @@
 #define MK_NEWTON_MAX 12
 /* Halvings of a plain Newton step before the trust region takes over. */
 #define MK_BACKTRACK 4
+/* The golden ratio (the icosahedron of the overlap certificate). */
+#define MK_GOLDEN 1.6180339887498949
 
 const char *mkContact_Name(mkContact c)
 {
@@ -933,6 +935,8 @@ void mkCollision3_Clear(mkCollision3 *out)
 	out->scale = NAN;
 	out->iterations = -1;
 	out->restarts = -1;
+	out->certified = -1;
+	out->cert_evals = -1;
 }
 
 static void mkPairCtx_Init(mkPairCtx *c, const mkBody3 *b1, const mkBody3 *b2)
@@ -966,6 +970,223 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 		return x;
 	double gauge = pow(psi, 0.5 * b.shape.eps1);
 	return mkVec3_Add(b.t, mkVec3_Scale(mkVec3_Sub(x, b.t), 1.0 / gauge));
+}
+
+/* ---- the global certificate of an overlap --------------------------------- */
+
+/* The depth is min over unit n of h(n) = h_{K-d}(n) = -f(n), the support
+ * function of the shifted contact space K - d (which holds the origin in
+ * its interior when the bodies overlap). Every evaluated direction c gives
+ * a point x = x(c) - d of K - d, and h(n) >= <n, x> for every n.
+ *
+ * Lipschitz bound: |h(n) - h(m)| <= L |n - m| with L = max |x| over K - d
+ * <= R1 + R2 + |d| (R the bodies' radii about their centres; |d| from the
+ * shift by the centre line), so over a patch of chord radius rho about c,
+ * f <= f(c) + L rho: first order in rho, and L is of the size of the
+ * scale. The bound used is the plane <n, x> itself over the patch, a
+ * spherical triangle T with unit vertices v0, v1, v2: every n in T is
+ * m / |m| with m = sum lambda_i v_i (lambda in the simplex), so
+ *     <n, x> = <m, x> / |m| >= min_i <v_i, x> =: b    when b >= 0 (|m| <= 1),
+ *     <n, x> >= b / dmin                              when b < 0,
+ * dmin the distance of the plane of v0, v1, v2 from the origin (<= |m|).
+ * Hence max over T of f <= -(that bound), for any point x of K - d at hand:
+ * the triangle's centre's, its parent's centre's, its three siblings'
+ * centres' and the best normal's (the largest b wins, the map b -> bound
+ * being increasing). Against the true maximum over T it loses about the
+ * curvature radius of K at the optimum times the squared size of T, so
+ * near the optimum triangles are split down to about sqrt(2 tol /
+ * curvature). (A bound from the three vertices' points, second order
+ * without a gradient term, was tried: its loss is the largest curvature
+ * over T, unbounded near the nearly flat faces of superquadrics with
+ * exponents below 1, and it needed more evaluations.) */
+
+/* The 12 vertices (unnormalised) and 20 faces of an icosahedron: the
+ * first subdivision of the sphere of normals. */
+static const double mkIcoV[12][3] = {
+	{ -1, MK_GOLDEN, 0 }, { 1, MK_GOLDEN, 0 }, { -1, -MK_GOLDEN, 0 }, { 1, -MK_GOLDEN, 0 },
+	{ 0, -1, MK_GOLDEN }, { 0, 1, MK_GOLDEN }, { 0, -1, -MK_GOLDEN }, { 0, 1, -MK_GOLDEN },
+	{ MK_GOLDEN, 0, -1 }, { MK_GOLDEN, 0, 1 }, { -MK_GOLDEN, 0, -1 }, { -MK_GOLDEN, 0, 1 }
+};
+static const unsigned char mkIcoF[20][3] = {
+	{ 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 },
+	{ 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 },
+	{ 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 }
+};
+
+/* A spherical triangle of the subdivision and its depth. */
+typedef struct mkPatch {
+	mkVec3 v[3];     /* unit vertices */
+	mkVec3 x;        /* the point x(c) - d of K - d of its centre c */
+	double lower;    /* the largest plane value (mkPatch_Plane) of the points
+	                    of its centre, its parent's centre and its siblings'
+	                    centres */
+	int level;
+} mkPatch;
+
+/* The deepest subdivision (edges of about 1.1 / 2^40 radians). */
+#define MK_CERT_LEVELS 40
+
+/* min_i <v_i, x> over the triangle's vertices: the bound of <n, x> over
+ * the triangle when >= 0, else to be divided by dmin (mkPatch_Lower). */
+static double mkPatch_Plane(const mkPatch *p, mkVec3 x)
+{
+	double a = mkVec3_Dot(p->v[0], x), b = mkVec3_Dot(p->v[1], x), c = mkVec3_Dot(p->v[2], x);
+	a = b < a ? b : a;
+	return c < a ? c : a;
+}
+
+/* The state of a branch and bound. */
+typedef struct mkCertRun {
+	const mkPairCtx *c;
+	mkNormalState *best;
+	double *res, tol;
+	int *iters, used;
+	mkVec3 xs;       /* the best normal's point of K - d */
+} mkCertRun;
+
+/* The lower bound of h over the triangle from the largest plane value b
+ * (mkPatch_Plane) of its points: b when b >= 0, else b / dmin, dmin the
+ * distance of the triangle's plane from the origin (a monotone map of b,
+ * so the best point gives the best bound). */
+static double mkPatch_Lower(const mkPatch *p, double b)
+{
+	if (b >= 0.0)
+		return b;
+	mkVec3 nr = mkVec3_Cross(mkVec3_Sub(p->v[1], p->v[0]), mkVec3_Sub(p->v[2], p->v[0]));
+	double dmin = fabs(mkVec3_Dot(nr, p->v[0])) / mkVec3_LengthInline(nr);
+	return dmin > 0.0 ? b / dmin : -INFINITY;
+}
+
+/* Evaluates the centre of each of the n patches (their x) and their lower
+ * bounds from those points and xp, then restarts Newton from the best
+ * centre when it is more than tol above the best. Returns 0 on a
+ * non-finite evaluation. */
+static int mkCert_Centres(mkCertRun *r, mkPatch *p, int n, mkVec3 xp)
+{
+	int top = -1;
+	double ftop = -INFINITY;
+	for (int k = 0; k < n; ++k) {
+		mkVec3 cn = mkVec3_NormalizeInline(mkVec3_Add(p[k].v[0], mkVec3_Add(p[k].v[1], p[k].v[2])));
+		mkPairAt e;
+		mkPair_Eval(r->c, cn, &e);
+		p[k].x = mkVec3_Sub(e.x, r->c->d);
+		double f = -mkVec3_Dot(cn, p[k].x);
+		if (!(isfinite(f) && mkIsFinite3(p[k].x)))
+			return 0;
+		if (f > ftop) {
+			ftop = f;
+			top = k;
+		}
+	}
+	r->used += n;
+	/* each patch's plane values: its own centre's, its parent's centre's
+	 * (or the best normal's, for the first patches) and, among four
+	 * siblings, the siblings' */
+	for (int k = 0; k < n; ++k) {
+		double b = mkPatch_Plane(&p[k], xp);
+		for (int j = 0; j < n; ++j)
+			if (j == k || n <= 4) {
+				double bj = mkPatch_Plane(&p[k], p[j].x);
+				b = bj > b ? bj : b;
+			}
+		p[k].lower = b;
+	}
+	if (top >= 0 && ftop > r->best->f + r->tol) {
+		mkNormalState st;
+		double r2 = NAN;
+		int before = *r->iters;
+		mkNormal_Solve(r->c, mkVec3_NormalizeInline(mkVec3_Add(p[top].v[0], mkVec3_Add(p[top].v[1], p[top].v[2]))), &st,
+			r->iters, &r2);
+		r->used += *r->iters - before;
+		if (st.f > r->best->f) {
+			*r->best = st;
+			*r->res = r2;
+			r->xs = mkVec3_Sub(st.e.x, r->c->d);
+		}
+	}
+	return 1;
+}
+
+/* The upper bound of f over a patch: minus its lower bound of h (from its
+ * points and the best normal's point xs), plus the rounding of the dot
+ * products and support points (a few ulps of the scale). */
+static double mkPatch_Upper(const mkPatch *p, mkVec3 xs, double scale)
+{
+	double bs = mkPatch_Plane(p, xs);
+	double B = mkPatch_Lower(p, bs > p->lower ? bs : p->lower);
+	return -B + 64.0 * DBL_EPSILON * (fabs(B) + scale);
+}
+
+/* Branch and bound over the sphere of normals: certifies that no unit n has
+ * f(n) > best->f + tol, splitting a triangle in four (at its normalised
+ * edge midpoints, depth first) until its bound is at most best->f + tol,
+ * and restarting Newton from the best new centre when it is more than tol
+ * above the best (replacing *best when it ends higher). *upper receives an
+ * upper bound of sd (>= best->f): the largest bound of the pruned
+ * triangles, and when the budget (MK_COLLIDE3_CERT_EVALS evaluations:
+ * centres and Newton iterations) or the depth MK_CERT_LEVELS runs out
+ * first, also of those left unsplit. Returns 1 when every triangle was
+ * pruned (*upper <= best->f + tol), 0 when the budget or depth ran out,
+ * -1 on a non-finite evaluation (*upper NaN). *evals receives the
+ * evaluations used. The computed midpoints lie within a few ulps of their
+ * great circles, so the children cover their parent but for slivers that
+ * thin, over which f changes by less than the rounding margin added. */
+static int mkNormal_Certify(const mkPairCtx *c, mkNormalState *best, double *res, int *iters, double tol,
+	double *upper, int *evals)
+{
+	mkPatch stack[20 + 3 * MK_CERT_LEVELS];
+	mkCertRun r = { c, best, res, tol, iters, 0, mkVec3_Sub(best->e.x, c->d) };
+	double up = -INFINITY;
+	int top = 20, done = 1;
+	*upper = NAN;
+	for (int i = 0; i < 20; ++i) {
+		mkPatch *p = &stack[19 - i];
+		p->level = 0;
+		for (int k = 0; k < 3; ++k) {
+			const double *v = mkIcoV[mkIcoF[i][k]];
+			p->v[k] = mkVec3_NormalizeInline(mkVec3_Make(v[0], v[1], v[2]));
+		}
+	}
+	if (!mkCert_Centres(&r, stack, 20, r.xs)) {
+		*evals = r.used;
+		return -1;
+	}
+	while (top > 0) {
+		mkPatch p = stack[--top];
+		double ub = mkPatch_Upper(&p, r.xs, c->scale);
+		if (ub <= best->f + tol) {
+			up = ub > up ? ub : up;
+			continue;
+		}
+		if (p.level >= MK_CERT_LEVELS || r.used + 4 > MK_COLLIDE3_CERT_EVALS) {
+			/* out of budget: the bounds of what is left */
+			up = ub > up ? ub : up;
+			for (int k = 0; k < top; ++k) {
+				double u = mkPatch_Upper(&stack[k], r.xs, c->scale);
+				up = u > up ? u : up;
+			}
+			done = 0;
+			break;
+		}
+		mkVec3 m01 = mkVec3_NormalizeInline(mkVec3_Add(p.v[0], p.v[1]));
+		mkVec3 m12 = mkVec3_NormalizeInline(mkVec3_Add(p.v[1], p.v[2]));
+		mkVec3 m20 = mkVec3_NormalizeInline(mkVec3_Add(p.v[2], p.v[0]));
+		mkPatch *ch = &stack[top];
+		mkVec3 tri[4][3] = { { p.v[0], m01, m20 }, { m01, p.v[1], m12 }, { m20, m12, p.v[2] }, { m01, m12, m20 } };
+		for (int k = 0; k < 4; ++k) {
+			for (int j = 0; j < 3; ++j)
+				ch[k].v[j] = tri[k][j];
+			ch[k].level = p.level + 1;
+		}
+		if (!mkCert_Centres(&r, ch, 4, p.x)) {
+			*evals = r.used;
+			return -1;
+		}
+		top += 4;
+	}
+	*evals = r.used;
+	*upper = up > best->f ? up : best->f;
+	return done;
 }
 
 /* Extra starts for an overlap: the reversed centre line, the bodies' axis
@@ -1087,6 +1308,14 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 			}
 		}
 	}
+	double upper = NAN;
+	int certified = 1;
+	if (ok && best.f <= 0.0) {
+		/* Overlap (or touching): the depth certified global, or said not to be. */
+		int evals = 0;
+		certified = mkNormal_Certify(&c, &best, &res, &iters, MK_COLLIDE3_GLOBAL_TOL * c.scale, &upper, &evals) == 1;
+		out->cert_evals = evals;
+	}
 	out->iterations = iters;
 	out->normal = best.n;
 	out->bound = best.f;
@@ -1113,8 +1342,13 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 			span = s2;
 		}
 	}
-	if (best.f > 0.0)
+	if (best.f > 0.0) {
 		out->gap = span - best.f;
+		out->certified = 1;
+	} else {
+		out->gap = upper - best.f;
+		out->certified = certified;
+	}
 	out->status = mkContact_FromDistance(best.f, c.scale);
 	return MK_OK;
 }

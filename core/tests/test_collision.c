@@ -331,11 +331,72 @@ static void test_overlaps(void)
 			fprintf(stderr, "overlap trial %d (%s): depth %.17g, grid search %.17g\n", trial, ell ? "ellipsoids" : "superquadrics",
 				-c.distance, -ref);
 		}
+		/* The depth is certified global: sd in [bound, bound + gap] with
+		 * gap <= MK_COLLIDE3_GLOBAL_TOL * scale (plus rounding), and the
+		 * grid search (mkCollide3_Bound only, no code of the certificate)
+		 * finds nothing above the upper end. */
+		ENSURE(c.certified == 1);
+		ENSURE_LE(-1e-14 * c.scale, c.gap);
+		ENSURE_LE(c.gap, (MK_COLLIDE3_GLOBAL_TOL + 1e-14) * c.scale);
+		ENSURE_LE(ref, c.bound + c.gap + 1e-13 * c.scale);
 		mkCollision3 ray;
 		ENSURE(mkCollide3_Ray(b1, b2, &ray) == MK_OK && ray.status == MK_CONTACT_OVERLAPPING);
 	}
 	printf("overlaps: %d solved, %d where the grid search found a smaller depth\n", count, missed);
 	ENSURE(missed == 0);
+}
+
+/* Two hand cases of the overlap certificate. (1) A long, thin, box-like
+ * superquadric (semi-axes 6, 1.5, 1; eps1 = eps2 = 0.2) inside a sphere of
+ * radius 8, its centre offset by delta = 0.05 along its shortest axis u
+ * (both bodies under one random rotation). The depth in direction n is
+ * D(n) = 8 + h2(-n) - <n, d>. A superquadric with eps1, eps2 <= 1 contains
+ * the ellipsoid with its semi-axes, whose support function is at least the
+ * smallest semi-axis, so h2 >= 1 and D(n) >= 8 + 1 - delta for every n,
+ * with equality at n = u (h2(-u) = 1, the tip of the axis): the depth is
+ * 8.95 exactly, sd = -8.95. The opposite direction -u is a second local
+ * minimum, D(-u) = 9.05 (checked below), and the sides along the middle
+ * axis a third (9.5). (2) The same sphere with a concentric spheroid
+ * (6, 1, 1): D(n) = 8 + h2(n) is 9 on the whole circle orthogonal to the
+ * long axis, a ring of global minima the branch and bound can only resolve
+ * triangle by triangle: its budget runs out, which the answer must say
+ * (certified 0) while its bracket [bound, bound + gap] still holds. */
+static void test_overlap_certificate_hand(void)
+{
+	unsigned long long seed = 777;
+	for (int k = 0; k < 4; ++k) {
+		mkMat3 Q = mk_rand_rot(&seed);
+		mkShape3 ball = { 8, 8, 8, 1, 1 }, bar = { 6, 1.5, 1, 0.2, 0.2 };
+		mkVec3 u = mkMat3_MulVec(Q, mkVec3_Make(0, 0, 1));
+		mkBody3 b1 = mkBody3_Make(ball, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0));
+		mkBody3 b2 = mkBody3_Make(bar, Q, mkVec3_Scale(u, 0.05));
+		/* the competitor: f(-u) = -D(-u) (rounding of the rotation: ulps) */
+		ENSURE_NEAR(mkCollide3_Bound(b1, b2, mkVec3_Neg(u)), -9.05, 1e-13);
+		ENSURE_NEAR(mkCollide3_Bound(b1, b2, u), -8.95, 1e-13);
+		for (int order = 0; order < 2; ++order) {
+			mkCollision3 c;
+			ENSURE(mkCollide3_Normal(order ? b2 : b1, order ? b1 : b2, &c) == MK_OK);
+			ENSURE_NEAR(c.distance, -8.95, 1e-12 * c.scale);
+			ENSURE(c.status == MK_CONTACT_OVERLAPPING);
+			ENSURE(c.certified == 1);
+			ENSURE_LE(c.gap, (MK_COLLIDE3_GLOBAL_TOL + 1e-14) * c.scale);
+			/* the true sd -8.95 lies in the bracket */
+			ENSURE_LE(c.bound, -8.95 + 1e-12 * c.scale);
+			ENSURE_LE(-8.95, c.bound + c.gap + 1e-12 * c.scale);
+			ENSURE(c.cert_evals > 0);
+		}
+		mkShape3 rod = { 6, 1, 1, 1, 1 };
+		mkBody3 b3 = mkBody3_Make(rod, Q, mkVec3_Make(0, 0, 0));
+		mkCollision3 c;
+		ENSURE(mkCollide3_Normal(b1, b3, &c) == MK_OK);
+		ENSURE_NEAR(c.distance, -9.0, 1e-12 * c.scale);
+		ENSURE(c.certified == 0);
+		ENSURE(c.cert_evals >= MK_COLLIDE3_CERT_EVALS - 4);
+		ENSURE(isfinite(c.gap));
+		ENSURE_LE(-9.0, c.bound + c.gap + 1e-12 * c.scale);
+		printf("ring of minima: certified %d after %d evaluations, bracket width %.3g of the scale\n", c.certified,
+			c.cert_evals, c.gap / c.scale);
+	}
 }
 
 /* Ellipsoid pairs take their own code (support through Q = M diag(a,b,c)^2 M^T
@@ -478,6 +539,7 @@ int main(void)
 	test_spheres();
 	test_random_pairs();
 	test_overlaps();
+	test_overlap_certificate_hand();
 	test_general_maps();
 	test_ellipsoid_path();
 	test_near_touching();

@@ -11,7 +11,7 @@
 
 const char *const mkCollision_Columns[] = {
 	"pair", "trial", "algorithm", "seconds", "status", "distance", "referee_distance", "error", "agrees",
-	"success", "iterations", "limited", "referee_certain", NULL
+	"success", "iterations", "limited", "referee_certain", "certified", NULL
 };
 const char *const mkCollision_PairNames[MK_COLLISION_KINDS] = { "ellipsoids", "superquadrics", "near", "deep" };
 
@@ -95,6 +95,9 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 	mkMeta_Set(meta, "referee_certain", "1 when the referee's answer is certified: separated with its bracket "
 		"[lower, upper] of sd narrower than 1e-10 of the scale, or an overlap certified by an enclosing tetrahedron "
 		"of support points; referee_distance is its certified lower bound of sd either way");
+	mkMeta_Set(meta, "certified", "1/0 when the entry certifies its answer (minksum-normal: sd in [bound, bound + gap], "
+		"for overlaps by a branch and bound over the sphere of normals within MK_COLLIDE3_GLOBAL_TOL of the scale; 0: "
+		"its budget ran out, the depth is then a local optimum with a wider bracket); empty for entries that do not");
 	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread");
 	buf[0] = '\0';
 	for (int i = 0; i < o->nlimits; ++i)
@@ -279,6 +282,13 @@ static void mkWriteRow(mkCsv *csv, int kind, long trial, const mkCollider *c, do
 	else
 		mkCsv_Int(csv, limit);
 	mkCsv_Int(csv, truth->certain);
+	/* the entry's own certificate of its answer (minksum-normal: 0 for an
+	 * overlap whose depth could not be certified global within its
+	 * budget); empty for entries that certify nothing */
+	if (skipped || failed || out->certified < 0)
+		mkCsv_Empty(csv);
+	else
+		mkCsv_Int(csv, out->certified);
 	mkCsv_EndRow(csv);
 }
 

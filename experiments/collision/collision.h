@@ -33,7 +33,7 @@
 #include <mink/mink.h>
 #include <mink_exp/exp.h>
 
-#define MK_COLLISION_SCHEMA 3
+#define MK_COLLISION_SCHEMA 4
 #define MK_COLLISION_KINDS 4
 /* Room for --limit pairs (NAME=N). */
 #define MK_COLLISION_LIMITS 8

@@ -21,11 +21,12 @@
  *                     Overlapping bodies: the depth is the distance from d to
  *                     the boundary of K, which can have several local optima;
  *                     the solver restarts from a few directions (the centre
- *                     line and the bodies' axes) and keeps the best. The
- *                     bound f(n) <= sd still holds (the depth reported is an
- *                     upper bound of the true one); that no smaller depth was
- *                     missed is not certified (tested against a
- *                     global grid search).
+ *                     line, the bodies' axes, a lattice) and keeps the best,
+ *                     then a branch and bound over the sphere of normals
+ *                     certifies it global: sd <= f(n) + gap with gap <=
+ *                     MK_COLLIDE3_GLOBAL_TOL * scale (restarting Newton from
+ *                     any better direction it meets), or says it could not
+ *                     within its budget (certified 0, gap wider).
  *  mkCollide3_Ray     finds the boundary point of K on the centre line (the
  *                     paper's MinkSum (Ray)): minimises the convex function
  *                     H(u + s) = h1(u + s) + h2(-(u + s)) over s orthogonal to
@@ -80,12 +81,27 @@ typedef struct mkCollision3 {
 	double scale;       /* |d| + r1 + r2, r the bodies' circumradius bounds */
 	int iterations;     /* Newton iterations (all restarts) */
 	int restarts;       /* extra starts tried (Normal, overlap only) */
+	int certified;      /* Normal: 1 when sd is certified to lie in
+	                       [bound, bound + gap]: always for separated bodies,
+	                       and for overlaps when the branch and bound over
+	                       the sphere of normals finished within its budget
+	                       (gap <= MK_COLLIDE3_GLOBAL_TOL * scale up to
+	                       rounding); 0 when it did not (an overlap whose
+	                       depth is then a local optimum only, gap NaN);
+	                       -1 on failure and for Ray */
+	int cert_evals;     /* Normal, overlaps: pair evaluations the branch and
+	                       bound used (patch centres and the Newton
+	                       iterations of its restarts); -1 otherwise */
 } mkCollision3;
 
 /* Status band: |sd| <= MK_COLLIDE3_TOUCH_TOL * scale is "touching". */
 #define MK_COLLIDE3_TOUCH_TOL 1e-12
 /* Converged when the residual (see mkCollision3) is at most this. */
 #define MK_COLLIDE3_RESIDUAL_TOL 1e-12
+/* Overlaps: the depth is certified global within this (times the scale). */
+#define MK_COLLIDE3_GLOBAL_TOL 1e-8
+/* Overlaps: the branch and bound's budget of pair evaluations. */
+#define MK_COLLIDE3_CERT_EVALS 20000
 /* Newton iterations per start before giving up. */
 #define MK_COLLIDE3_MAX_ITER 100
 

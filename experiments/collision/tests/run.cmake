@@ -14,38 +14,48 @@ function(mk_run out)
   endif()
 endfunction()
 
-# Every pair kind, 2 trials, Implicit on trial 0 only. The registry has 13
+# Every pair kind, 2 trials, Implicit on trial 0 only. The registry has 16
 # entries besides the referee; asc, asc-eigen and fcl take ellipsoids only
 # (colliders.h). Trial 0 of near and deep is an ellipsoid pair, trial 1 a
-# superquadric pair. So: ellipsoids 2 x 13, superquadrics 2 x 10, near and
-# deep 13 + 10 each: 92 rows and the header.
+# superquadric pair. So: ellipsoids 2 x 16, superquadrics 2 x 13, near and
+# deep 16 + 13 each: 116 rows and the header.
 mk_run(${WORK}/c.csv --trials 2 --seed 7 --limit implicit=1)
 file(STRINGS ${WORK}/c.csv lines)
 list(GET lines 0 head)
-if(NOT head STREQUAL "pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited,referee_certain")
+if(NOT head STREQUAL "pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited,referee_certain,certified")
   message(FATAL_ERROR "header is '${head}'")
 endif()
 list(LENGTH lines n)
-if(NOT n EQUAL 93)
-  message(FATAL_ERROR "expected 93 lines, got ${n}")
+if(NOT n EQUAL 117)
+  message(FATAL_ERROR "expected 117 lines, got ${n}")
 endif()
 foreach(line IN LISTS lines)
   if(line MATCHES "^superquadrics,[0-9]+,(asc|asc-eigen|fcl),|^(near|deep),1,(asc|asc-eigen|fcl),")
     message(FATAL_ERROR "an ellipsoid-only entry ran on superquadrics: ${line}")
   endif()
-  if(line MATCHES "^[a-z]+,1,implicit," AND NOT line MATCHES "^[a-z]+,1,implicit,,skipped,,[-0-9.e]+,,,,,1,1$")
+  if(line MATCHES "^[a-z]+,1,implicit," AND NOT line MATCHES "^[a-z]+,1,implicit,,skipped,,[-0-9.e]+,,,,,1,1,$")
     message(FATAL_ERROR "implicit past its limit is not a skipped row: ${line}")
   endif()
-  if(line MATCHES "^[a-z]+,0,implicit," AND NOT line MATCHES ",(separated|touching|overlapping|failed),.*,1,1$")
+  if(line MATCHES "^[a-z]+,0,implicit," AND NOT line MATCHES ",(separated|touching|overlapping|failed),.*,1,1,$")
     message(FATAL_ERROR "implicit within its limit is not a measured row: ${line}")
   endif()
   # Every row: the referee certain on these pairs (column referee_certain).
-  if(NOT line MATCHES "^pair," AND NOT line MATCHES ",1$")
+  if(NOT line MATCHES "^pair," AND NOT line MATCHES ",1,[01]?$")
     message(FATAL_ERROR "the referee is not certain: ${line}")
+  endif()
+  # The entries' own certificates (column certified): minksum-normal
+  # certifies every answer here (separated: its witnesses; overlapping: its
+  # branch and bound within budget); entries that certify nothing leave it
+  # empty.
+  if(line MATCHES "^[a-z]+,[01],minksum-normal," AND NOT line MATCHES ",1,1$")
+    message(FATAL_ERROR "minksum-normal without its certificate: ${line}")
+  endif()
+  if(line MATCHES "^[a-z]+,[01],(ccd|gjk|asc|fcl|implicit|common)[a-z0-9.-]*," AND NOT line MATCHES ",$")
+    message(FATAL_ERROR "an entry that certifies nothing has a certified value: ${line}")
   endif()
   # Every measured row: a time, a status, the referee's distance.
   if(NOT line MATCHES "^pair," AND NOT line MATCHES ",skipped,"
-      AND NOT line MATCHES "^[a-z]+,[01],[a-z-]+,[0-9.e-]+,(separated|touching|overlapping|failed),[^,]*,[-0-9.e]+,")
+      AND NOT line MATCHES "^[a-z]+,[01],[a-z0-9.-]+,[0-9.e-]+,(separated|touching|overlapping|failed),[^,]*,[-0-9.e]+,")
     message(FATAL_ERROR "malformed row: ${line}")
   endif()
 endforeach()
@@ -66,7 +76,7 @@ endforeach()
 # on deep trial 1 of seed 7 (residual above 1e-10 after 100 Jacobians; seen
 # when this test was written): status failed, no distance, success 0, and
 # agrees 0 since the referee decides that pair.
-if(NOT "${lines}" MATCHES "deep,1,minksum-normal-lm,[0-9.e-]+,failed,,-[0-9.e]+,,0,0,,,1")
+if(NOT "${lines}" MATCHES "deep,1,minksum-normal-lm,[0-9.e-]+,failed,,-[0-9.e]+,,0,0,,,1,")
   message(FATAL_ERROR "deep trial 1: minksum-normal-lm is not a failed row")
 endif()
 file(STRINGS ${WORK}/c.csv.meta rot REGEX "^rotation_draw: paper$")

@@ -14,7 +14,9 @@
  *  - of the 11 published times, 3 have a counterpart;
  *  - the referee uncertain on superquadrics trial 2 (referee_certain 0):
  *    1 of 3 superquadric pairs, 0 of 3 ellipsoid pairs (trials 0..2, the
- *    skipped row of trial 2 counts as a pair).
+ *    skipped row of trial 2 counts as a pair);
+ *  - my-query's answers carry its own certificate (column certified) on
+ *    its 3 rows, 0 on superquadrics trial 1: 1 of 3 without it.
  * A missing result leaves all 11 "not reproduced yet". */
 #include "collision.h"
 
@@ -33,16 +35,16 @@ int main(int argc, char **argv)
 	FILE *fp = fopen(path, "w");
 	ENSURE(fp != NULL);
 	fputs("pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited,"
-		"referee_certain\n"
-		"ellipsoids,0,gjk-poly,0.010,separated,,0.5,,1,1,,,1\n"
-		"ellipsoids,0,minksum-normal-lm,0.002,separated,,0.5,,1,1,5,,1\n"
-		"ellipsoids,1,gjk-poly,0.020,separated,,-0.5,,0,1,,,1\n"
-		"ellipsoids,1,minksum-normal-lm,0.004,failed,,-0.5,,0,0,,,1\n"
-		"ellipsoids,2,implicit,,skipped,,0.3,,,,,2,1\n"
-		"superquadrics,0,minksum-normal-lm,0.0051,separated,,0.5,,1,1,7,,1\n"
-		"superquadrics,0,my-query,0.001,separated,0.5000001,0.5,1e-7,1,1,3,,1\n"
-		"superquadrics,1,my-query,0.003,overlapping,-0.2,-0.2000002,2e-7,1,1,3,,1\n"
-		"superquadrics,2,my-query,0.002,overlapping,-0.2,-0.2000004,4e-7,1,1,3,,0\n", fp);
+		"referee_certain,certified\n"
+		"ellipsoids,0,gjk-poly,0.010,separated,,0.5,,1,1,,,1,\n"
+		"ellipsoids,0,minksum-normal-lm,0.002,separated,,0.5,,1,1,5,,1,\n"
+		"ellipsoids,1,gjk-poly,0.020,separated,,-0.5,,0,1,,,1,\n"
+		"ellipsoids,1,minksum-normal-lm,0.004,failed,,-0.5,,0,0,,,1,\n"
+		"ellipsoids,2,implicit,,skipped,,0.3,,,,,2,1,\n"
+		"superquadrics,0,minksum-normal-lm,0.0051,separated,,0.5,,1,1,7,,1,\n"
+		"superquadrics,0,my-query,0.001,separated,0.5000001,0.5,1e-7,1,1,3,,1,1\n"
+		"superquadrics,1,my-query,0.003,overlapping,-0.2,-0.2000002,2e-7,1,1,3,,1,0\n"
+		"superquadrics,2,my-query,0.002,overlapping,-0.2,-0.2000004,4e-7,1,1,3,,0,1\n", fp);
 	fclose(fp);
 	snprintf(path, sizeof path, "%s/collision.csv.meta", argv[1]);
 	fp = fopen(path, "w");
@@ -62,6 +64,7 @@ int main(int argc, char **argv)
 	mkSummary_Expect(md, "where |referee sd| > 1e-09 × scale");
 	mkSummary_Expect(md, "beyond a --limit (implicit=2)");
 	mkSummary_Expect(md, "left out of agreement and errors: ellipsoids 0 of 3, superquadrics 1 of 3.");
+	mkSummary_Expect(md, "within its budget), of 3 certified or not: superquadrics my-query 1 of 3.");
 	mkSummary_Expect(md, "| ellipsoids | gjk-poly | 2 | 0 | 1.5e+04 | 1.5e+04 | 1.0000 | 0.5000 (1/2) | — | — |");
 	mkSummary_Expect(md, "| ellipsoids | minksum-normal-lm | 2 | 0 | 3e+03 | 3e+03 | 0.5000 | 0.5000 (1/2) | — | — |");
 	mkSummary_Expect(md, "| ellipsoids | implicit | 0 | 1 | — | — | — | — | — | — |");
