@@ -41,11 +41,15 @@ do for [fmt in formats] {
 	set multiplot layout 1, (havefig9 ? 4 : 3) title "C-obstacles certified to a tolerance (adaptive vs uniform) and Table 2 on 1 and 2 threads"
 	do for [d = 2:3] {
 		set title sprintf("%dD: points used against the tolerance", d)
+		unset logscale
+		# the tolerances of this dimension, larger on the left, half a decade of margin
+		# (a run with one tolerance would leave autoscale an empty range)
+		stats results using (isA(d, "adaptive") ? column("tol") : NaN) nooutput
 		set logscale xy
 		set xlabel "tolerance T"
 		set ylabel "points (all boundaries of the scene)"
 		set key top right
-		set xrange [*:*] reverse
+		set xrange [STATS_max * 3.0 : STATS_min / 3.0]
 		plot results using (isA(d, "adaptive") ? column("tol") : NaN):(column("points")) with points pt 7 ps 1.2 lc rgb "#1f77b4" title "adaptive", \
 		     results using (isA(d, "uniform") && capped(0) ? column("tol") : NaN):(column("points")) with points pt 4 ps 1.4 lc rgb "#d62728" title "uniform, same worst-case error", \
 		     results using (isA(d, "uniform") && capped(1) ? column("tol") : NaN):(column("points")) with points pt 8 ps 1.4 lc rgb "#d62728" title "uniform, capped (needs more)", \
