@@ -71,7 +71,7 @@ typedef struct Work {
 	/* vertices: normal n and point p */
 	double *n[3], *p[3];
 	int vcap[6];
-	int *next, ncap;           /* 2D: the counter-clockwise successor */
+	int *next, ncap;           /* 2D walks: a node's counter-clockwise successor */
 	double *m[3], *q[3];       /* batch normals and their points */
 	int mcap[6];
 	int *tri, tcap, *tri2, t2cap, *leaf, lcap; /* 3D triangles, 3 ints each */
@@ -81,7 +81,7 @@ typedef struct Work {
 	double *o[3]; int ocap[3]; /* 3D outer vertices */
 	int *fin, fcap;            /* 3D final (conforming) triangles */
 	double *pb; int pbcap;     /* paper mode: B1's half, the poses' directions, their points */
-	double *err2; int ecap;    /* 2D: the error of the arc i -> next[i] */
+	double *err2; int ecap;    /* 2D: the error of the arc from node i to the next */
 	double *cp; int cpcap;     /* 2D adaptive: the chosen walk's vertices */
 } Work;
 
@@ -375,9 +375,10 @@ static mkResult walk_start(Work *w, Walk *a, mkBody2 b1, mkBody2 b2, mkImpl impl
  * max_points - WALK_LAST vertices, all walks start over with a target
  * looser by (1.1 / the fraction of the circle covered)^2, at least 2, up to
  * WALK_RETRIES times, and after that close the cycle in steps of at most 90
- * degrees. Results as for fixed normals: nodes by w->next from node 0,
- * w->err2[i] the error of the arc i -> next[i]. Deterministic: the same
- * rounds whatever the thread. */
+ * degrees. Results as for fixed normals: nodes 0 .. count - 1 in
+ * counter-clockwise order, w->err2[i] the error of the arc from node i to
+ * node i + 1 (mod count). Deterministic: the same rounds whatever the
+ * thread. */
 static mkResult walk2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, int max_points,
 	int *count, double *error)
 {
@@ -491,7 +492,6 @@ static mkResult walk2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound boun
 		w->n[0][k] = w->cp[5 * k]; w->n[1][k] = w->cp[5 * k + 1];
 		w->p[0][k] = w->cp[5 * k + 2]; w->p[1][k] = w->cp[5 * k + 3];
 		w->err2[k] = w->cp[5 * k + 4];
-		w->next[k] = k + 1 < cnt ? k + 1 : 0;
 	}
 	*count = cnt;
 	*error = a->maxerr;
@@ -500,15 +500,15 @@ static mkResult walk2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound boun
 
 /* Adaptive (uniform_n == 0 and no given normals: walk2) or fixed normals
  * (uniform_n normals 2 pi k / n, or the given ones), each arc certified
- * by edge_err2. Results in w: node order by w->next from node 0, *count
- * nodes, w->err2[i] the error of the arc i -> next[i]. */
+ * by edge_err2. Results in w: *count nodes 0 .. count - 1 in
+ * counter-clockwise order, w->err2[i] the error of the arc from node i to
+ * node i + 1 (mod count). */
 static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound, double tol, int max_points,
 	int uniform_n, const double *given_x, const double *given_y, int *count, double *error)
 {
 	if (uniform_n == 0 && !given_x) return walk2(w, b1, b2, impl, bound, tol, max_points, count, error);
 	int K = uniform_n;
-	if (!work_verts(w, K, 2) || !grow_i(&w->next, &w->ncap, K) || !grow_d(&w->err2, &w->ecap, K)
-		|| !work_batch(w, K, 2))
+	if (!work_verts(w, K, 2) || !grow_d(&w->err2, &w->ecap, K) || !work_batch(w, K, 2))
 		return MK_ERR_MEMORY;
 	for (int k = 0; k < K; ++k) {
 		if (given_x) {
@@ -517,14 +517,13 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 		} else {
 			sincos_exact(2.0 * MK_PI * k / K, &w->n[0][k], &w->n[1][k]);
 		}
-		w->next[k] = (k + 1) % K;
 	}
 	mkResult r = eval2(b1, b2, impl, w->n[0], w->n[1], K, w->p[0], w->p[1]);
 	if (r != MK_OK) return r;
 	/* split normals: the chord's outward normal when it lies between the
 	 * two normals (always, in exact arithmetic), else the bisector */
 	for (int i = 0; i < K; ++i) {
-		int j = w->next[i];
+		int j = (i + 1) % K;
 		mkVec2 m = split_normal2(wn2(w, i), wn2(w, j), wp2(w, i), wp2(w, j));
 		w->m[0][i] = m.x; w->m[1][i] = m.y;
 	}
@@ -532,7 +531,7 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
 	if (r != MK_OK) return r;
 	double maxerr = 0.0;
 	for (int i = 0; i < K; ++i) {
-		int j = w->next[i];
+		int j = (i + 1) % K;
 		double err = edge_err2(bound, wn2(w, i), wn2(w, j), wp2(w, i), wp2(w, j), mkVec2_Make(w->m[0][i], w->m[1][i]),
 			mkVec2_Make(w->q[0][i], w->q[1][i]));
 		if (err > maxerr || err != err) maxerr = err;
@@ -547,17 +546,15 @@ static mkResult run2(Work *w, mkBody2 b1, mkBody2 b2, mkImpl impl, mkBound bound
  * vertices) counter-clockwise from node 0 into out (2 arrays). */
 static void emit2(const Work *w, mkBound bound, int count, double *ox, double *oy)
 {
-	int i = 0;
-	for (int k = 0; k < count; ++k) {
-		int j = w->next[i];
+	for (int i = 0; i < count; ++i) {
+		int j = (i + 1) % count;
 		if (bound == MK_BOUND_INNER) {
-			ox[k] = w->p[0][i]; oy[k] = w->p[1][i];
+			ox[i] = w->p[0][i]; oy[i] = w->p[1][i];
 		} else {
 			mkVec2 v = tangent_vertex(mkVec2_Make(w->n[0][i], w->n[1][i]), mkVec2_Make(w->p[0][i], w->p[1][i]),
 				mkVec2_Make(w->n[0][j], w->n[1][j]), mkVec2_Make(w->p[0][j], w->p[1][j]));
-			ox[k] = v.x; oy[k] = v.y;
+			ox[i] = v.x; oy[i] = v.y;
 		}
-		i = j;
 	}
 }
 
