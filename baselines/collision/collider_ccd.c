@@ -111,8 +111,9 @@ static mkResult mkRunEpa(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollisi
  * polytope for its nearest face, so a run cut off here costs about 0.1 s. */
 #define MK_CCD_TIGHT_CALLS 20000
 
-/* The bodies of a tight run and its count of support calls. */
-typedef struct mkCcdTight { const mkBody3 *b; long *calls; } mkCcdTight;
+/* A body of a tight run and the run's count of support calls. The body
+ * comes first, so mkCenter reads it through the same pointer. */
+typedef struct mkCcdTight { mkBody3 b; long *calls; } mkCcdTight;
 
 static void mkSupportTight(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
 {
@@ -121,26 +122,17 @@ static void mkSupportTight(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *o
 		ccdVec3Set(out, 0.0, 0.0, 0.0);
 		return;
 	}
-	mkVec3 p = mkBody3_Support(*t->b, mkVec3_Make(ccdVec3X(dir), ccdVec3Y(dir), ccdVec3Z(dir)));
-	ccdVec3Set(out, p.x, p.y, p.z);
-}
-
-static void mkCenterTight(const void *obj, ccd_vec3_t *out)
-{
-	const mkCcdTight *t = obj;
-	ccdVec3Set(out, t->b->t.x, t->b->t.y, t->b->t.z);
+	mkSupport(&t->b, dir, out);
 }
 
 static mkResult mkRunEpaTight(mkBody3 b1, mkBody3 b2, mkCollision3 *out, double k)
 {
 	long calls = 0;
-	mkCcdTight t1 = { &b1, &calls }, t2 = { &b2, &calls };
+	mkCcdTight t1 = { b1, &calls }, t2 = { b2, &calls };
 	double tol = k * mkCollide3_Scale(b1, b2);
 	ccd_t ccd;
-	CCD_INIT(&ccd);
+	mkInit(&ccd);
 	ccd.support1 = ccd.support2 = mkSupportTight;
-	ccd.center1 = ccd.center2 = mkCenterTight;
-	ccd.max_iterations = MK_CCD_MAX_ITER;
 	ccd.epa_tolerance = tol * tol;
 	ccd.dist_tolerance = tol;
 	ccd_real_t depth = 0;

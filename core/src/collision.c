@@ -1065,6 +1065,7 @@ static int mkCert_Centres(mkCertRun *r, mkPatch *p, int n, mkVec3 xp)
 {
 	int top = -1;
 	double ftop = -INFINITY;
+	mkVec3 ctop = mkVec3_Make(0.0, 0.0, 0.0);
 	for (int k = 0; k < n; ++k) {
 		mkVec3 cn = mkVec3_NormalizeInline(mkVec3_Add(p[k].v[0], mkVec3_Add(p[k].v[1], p[k].v[2])));
 		mkPairAt e;
@@ -1076,6 +1077,7 @@ static int mkCert_Centres(mkCertRun *r, mkPatch *p, int n, mkVec3 xp)
 		if (f > ftop) {
 			ftop = f;
 			top = k;
+			ctop = cn;
 		}
 	}
 	r->used += n;
@@ -1095,8 +1097,7 @@ static int mkCert_Centres(mkCertRun *r, mkPatch *p, int n, mkVec3 xp)
 		mkNormalState st;
 		double r2 = NAN;
 		int before = *r->iters;
-		mkNormal_Solve(r->c, mkVec3_NormalizeInline(mkVec3_Add(p[top].v[0], mkVec3_Add(p[top].v[1], p[top].v[2]))), &st,
-			r->iters, &r2);
+		mkNormal_Solve(r->c, ctop, &st, r->iters, &r2);
 		r->used += *r->iters - before;
 		if (st.f > r->best->f) {
 			*r->best = st;
