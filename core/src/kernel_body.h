@@ -465,7 +465,10 @@ static inline void KFN(load_unit3)(const KIO *pux, const KIO *puy, const KIO *pu
 /* block3 for a pair of ellipsoids: nothing out of line to overlap, so each
  * lane vector goes through the whole pipeline before the next, which keeps
  * its values in registers (the interleaved block spills them with 16 float
- * lanes). Per lane the same operations in the same order as block3. */
+ * lanes). Per lane the same operations in the same order as block3. Its
+ * sums and stores repeat block3's on purpose: as a shared inline helper
+ * GCC 12 did not inline them here in the f32 build, and 3D EE on double
+ * arrays went from 2.25 to 2.75 ns per point. */
 static inline void KFN(block3_ee)(const KPLAN3 *p, const KIO *pux, const KIO *puy, const KIO *puz,
 	KIO *px, KIO *py, KIO *pz, KIO *pkx, KIO *pky, KIO *pkz)
 {
