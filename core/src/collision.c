@@ -1199,7 +1199,8 @@ static int mkNormal_Certify(const mkPairCtx *c, mkNormalState *best, double *res
  * same axes. */
 enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 4, MK_SCAN_EXACT = 16 };
 
-mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
+/* The query from the centre line (start NULL) or from a given start. */
+static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
 {
 	mkCollision3_Clear(out);
 	mkPairCtx c;
@@ -1212,8 +1213,21 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	mkNormalState best;
 	int iters = 0;
 	double res = NAN, res2 = NAN;
-	int ok = mkNormal_Solve(&c, n0, &best, &iters, &res);
+	int ok = mkNormal_Solve(&c, start ? *start : n0, &best, &iters, &res);
 	out->restarts = 0;
+	if (start && !(ok && best.f > 0.0)) {
+		/* The given start did not end at a separation (an overlap, or a start
+		 * that did not converge): the centre line as without one, counted as
+		 * a restart. */
+		mkNormalState st;
+		int ok2 = mkNormal_Solve(&c, n0, &st, &iters, &res2);
+		out->restarts += 1;
+		if (ok2 && (!ok || st.f > best.f)) {
+			best = st;
+			res = res2;
+			ok = 1;
+		}
+	}
 	if (!(ok && best.f > 0.0)) {
 		/* Overlap (or a failed start): f may have several local maxima on the
 		 * sphere. Evaluate f at the candidate directions, restart from the
@@ -1352,6 +1366,22 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 	}
 	out->status = mkContact_FromDistance(best.f, c.scale);
 	return MK_OK;
+}
+
+mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
+{
+	return mkCollide3_NormalAt(b1, b2, NULL, out);
+}
+
+mkResult mkCollide3_NormalFrom(mkBody3 b1, mkBody3 b2, mkVec3 start, mkCollision3 *out)
+{
+	double len = mkVec3_LengthInline(start);
+	if (!(len > 0.0) || !isfinite(len)) {
+		mkCollision3_Clear(out);
+		return MK_ERR_ARGUMENT;
+	}
+	mkVec3 n = mkVec3_Scale(start, 1.0 / len);
+	return mkCollide3_NormalAt(b1, b2, &n, out);
 }
 
 /* ---- MinkSum (Ray) ------------------------------------------------------ */

@@ -509,6 +509,83 @@ static void test_near_touching(void)
 	}
 }
 
+/* mkCollide3_NormalFrom: the same answer from any start. Two spheres (sd by
+ * hand) from the worst start, the opposite of the answer; random separated
+ * and overlapping pairs from (a) the answer at a nearby pose (body 2 moved
+ * by 1e-2 of the scale and turned by about 0.01 rad), (b) a random
+ * direction, (c) the reversed answer: each within 1e-12 of the scale of the
+ * grid and pattern search (mkCollide3_Bound only), a true bound at its own
+ * normal, the status of the start-free query, overlaps certified; started
+ * at its own answer the solver must do less work than from the centre line;
+ * a zero or non-finite start is refused. */
+static void test_warm_start(void)
+{
+	unsigned long long seed = 777;
+	mkShape3 sphere1 = { 1, 1, 1, 1, 1 }, sphere2 = { 2, 2, 2, 1, 1 };
+	mkVec3 u = mkVec3_Normalize(mkVec3_Make(0.3, -0.5, 0.8));
+	mkBody3 s1 = mkBody3_Make(sphere1, mkMat3_Identity(), mkVec3_Make(1, 2, 3));
+	mkBody3 s2 = mkBody3_Make(sphere2, mk_rand_rot(&seed), mkVec3_Add(mkVec3_Make(1, 2, 3), mkVec3_Scale(u, 10)));
+	mkCollision3 c;
+	ENSURE(mkCollide3_NormalFrom(s1, s2, mkVec3_Neg(u), &c) == MK_OK);
+	ENSURE_NEAR(c.distance, 7.0, 1e-14 * c.scale);
+	ENSURE(c.status == MK_CONTACT_SEPARATED);
+	int cold_iters = 0, warm_iters = 0, count = 0;
+	for (int trial = 0; trial < 60; ++trial) {
+		int ell = trial % 3 == 0, overlap = trial % 4 == 3;
+		mkShape3 a, b;
+		draw_shapes(&seed, ell, &a, &b);
+		double lo = overlap ? -2 : 5, hi = overlap ? 2 : 15;
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi));
+		mkBody3 b1 = mkBody3_Make(a, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0));
+		mkMat3 R = mk_rand_rot(&seed);
+		mkBody3 b2 = mkBody3_Make(b, R, c2);
+		/* the nearby pose: moved and turned a little */
+		double sc = mkCollide3_Scale(b1, b2);
+		mkVec3 step = mkVec3_Scale(mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
+			mk_test_uniform(&seed, -1, 1))), 1e-2 * sc);
+		mkMat3 turn = mkMat3_FromQuat(1.0, 0.005, -0.004, 0.003);
+		mkBody3 b2n = mkBody3_Make(b, mkMat3_Mul(turn, R), mkVec3_Add(c2, step));
+		mkCollision3 cold, prev, warm;
+		ENSURE(mkCollide3_Normal(b1, b2, &cold) == MK_OK);
+		ENSURE(mkCollide3_Normal(b1, b2n, &prev) == MK_OK);
+		double ref = mk_brute(b1, b2);
+		mkVec3 starts[3] = { prev.normal,
+			mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)),
+			mkVec3_Neg(cold.normal) };
+		for (int k = 0; k < 3; ++k) {
+			mkResult r = mkCollide3_NormalFrom(b1, b2, starts[k], &warm);
+			ENSURE(r == MK_OK);
+			if (r != MK_OK) {
+				fprintf(stderr, "warm start trial %d, start %d: %s\n", trial, k, mkResult_Name(r));
+				continue;
+			}
+			++count;
+			ENSURE_NEAR(mkCollide3_Bound(b1, b2, warm.normal), warm.distance, 1e-12 * warm.scale);
+			ENSURE_LE(ref - warm.distance, 1e-12 * warm.scale);
+			ENSURE_NEAR(warm.distance, cold.distance, 1e-12 * warm.scale);
+			ENSURE(warm.status == cold.status);
+			if (warm.status == MK_CONTACT_OVERLAPPING)
+				ENSURE(warm.certified == 1);
+		}
+		/* from its own answer */
+		ENSURE(mkCollide3_NormalFrom(b1, b2, cold.normal, &warm) == MK_OK);
+		ENSURE_NEAR(warm.distance, cold.distance, 1e-12 * warm.scale);
+		if (cold.status == MK_CONTACT_SEPARATED) {
+			cold_iters += cold.iterations;
+			warm_iters += warm.iterations;
+		}
+	}
+	printf("warm starts: %d answers equal to the start-free ones; iterations on separated pairs from their answer %d, "
+	       "from the centre line %d\n", count, warm_iters, cold_iters);
+	ENSURE(count == 180);
+	ENSURE(2 * warm_iters < cold_iters);
+	mkVec3 bad[3] = { mkVec3_Make(0, 0, 0), mkVec3_Make(NAN, 0, 1), mkVec3_Make(INFINITY, 0, 0) };
+	for (int k = 0; k < 3; ++k) {
+		ENSURE(mkCollide3_NormalFrom(s1, s2, bad[k], &c) == MK_ERR_ARGUMENT);
+		ENSURE(c.status == MK_CONTACT_UNKNOWN && isnan(c.distance));
+	}
+}
+
 static void test_failures_reported(void)
 {
 	mkShape3 s = { 1, 1, 1, 1, 1 };
@@ -544,5 +621,6 @@ int main(void)
 	test_ellipsoid_path();
 	test_near_touching();
 	test_failures_reported();
+	test_warm_start();
 	return mk_summary("test_collision");
 }

@@ -122,6 +122,19 @@ MK_API mkContact mkContact_FromDistance(double sd, double scale);
  * be NULL. */
 MK_API mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out);
 
+/* mkCollide3_Normal started from the direction start (any nonzero finite
+ * vector, normalised here) instead of the centre line: for a sequence of
+ * nearby poses, the previous answer's normal. The answer is
+ * mkCollide3_Normal's within the solver's tolerance (for a separated pair
+ * every local maximum of f with f > 0 is the global one, since f is concave
+ * and positively homogeneous on the ball; when the start does not end at a
+ * separation, the centre line is tried next, counted in restarts, and an
+ * overlap's restarts and certificate follow as without a start); only the
+ * work to reach it differs. Returns
+ * MK_ERR_ARGUMENT (and a cleared answer) for a zero or non-finite start,
+ * otherwise as mkCollide3_Normal. */
+MK_API mkResult mkCollide3_NormalFrom(mkBody3 b1, mkBody3 b2, mkVec3 start, mkCollision3 *out);
+
 /* MinkSum (Ray): status, directional gap and witnesses. Failure as
  * mkCollide3_Normal; coincident centres are overlapping (no solve). */
 MK_API mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out);
