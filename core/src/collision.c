@@ -1375,12 +1375,14 @@ mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 
 mkResult mkCollide3_NormalFrom(mkBody3 b1, mkBody3 b2, mkVec3 start, mkCollision3 *out)
 {
-	double len = mkVec3_LengthInline(start);
-	if (!(len > 0.0) || !isfinite(len)) {
+	/* scaled by its largest component first, so that no length of a finite
+	 * nonzero vector overflows or underflows */
+	double m = fmax(fabs(start.x), fmax(fabs(start.y), fabs(start.z)));
+	if (!(m > 0.0) || !isfinite(m) || !mkIsFinite3(start)) {
 		mkCollision3_Clear(out);
 		return MK_ERR_ARGUMENT;
 	}
-	mkVec3 n = mkVec3_Scale(start, 1.0 / len);
+	mkVec3 n = mkVec3_NormalizeInline(mkVec3_Make(start.x / m, start.y / m, start.z / m));
 	return mkCollide3_NormalAt(b1, b2, &n, out);
 }
 

@@ -517,7 +517,8 @@ static void test_near_touching(void)
  * grid and pattern search (mkCollide3_Bound only), a true bound at its own
  * normal, the status of the start-free query, overlaps certified; started
  * at its own answer the solver must do less work than from the centre line;
- * a zero or non-finite start is refused. */
+ * a start of length 1e300 or 1e-310 is a direction like any other; a zero
+ * or non-finite start is refused. */
 static void test_warm_start(void)
 {
 	unsigned long long seed = 777;
@@ -529,6 +530,9 @@ static void test_warm_start(void)
 	ENSURE(mkCollide3_NormalFrom(s1, s2, mkVec3_Neg(u), &c) == MK_OK);
 	ENSURE_NEAR(c.distance, 7.0, 1e-14 * c.scale);
 	ENSURE(c.status == MK_CONTACT_SEPARATED);
+	/* -u is the minimum of f = 10 cos(angle to u) - 3: no ascent from there,
+	 * so the answer comes from the centre line, counted as a restart */
+	ENSURE(c.restarts == 1);
 	int cold_iters = 0, warm_iters = 0, count = 0;
 	for (int trial = 0; trial < 60; ++trial) {
 		int ell = trial % 3 == 0, overlap = trial % 4 == 3;
@@ -579,6 +583,14 @@ static void test_warm_start(void)
 	       "from the centre line %d\n", count, warm_iters, cold_iters);
 	ENSURE(count == 180);
 	ENSURE(2 * warm_iters < cold_iters);
+	/* any finite nonzero length is a direction, however large or small */
+	mkVec3 off = mkVec3_Add(u, mkVec3_Make(0.3, 0.2, -0.1));
+	mkVec3 far[2] = { mkVec3_Scale(off, 1e300), mkVec3_Scale(off, 1e-310) };
+	for (int k = 0; k < 2; ++k) {
+		ENSURE(mkCollide3_NormalFrom(s1, s2, far[k], &c) == MK_OK);
+		ENSURE_NEAR(c.distance, 7.0, 1e-14 * c.scale);
+		ENSURE(c.restarts == 0); /* the start itself ended there, no fallback */
+	}
 	mkVec3 bad[3] = { mkVec3_Make(0, 0, 0), mkVec3_Make(NAN, 0, 1), mkVec3_Make(INFINITY, 0, 0) };
 	for (int k = 0; k < 3; ++k) {
 		ENSURE(mkCollide3_NormalFrom(s1, s2, bad[k], &c) == MK_ERR_ARGUMENT);
