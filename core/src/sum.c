@@ -44,6 +44,21 @@ int mkParam_Parse(const char *s) { return parse_name(param_names, 2, s); }
 int mkImpl_Parse(const char *s) { return parse_name(impl_names, 4, s); }
 int mkPrecision_Parse(const char *s) { return parse_name(precision_names, 2, s); }
 
+/* Calls the kernel NAME built for the resolved impl: NAME_avx512,
+ * NAME_avx2 or NAME_scalar (every kernel has the three builds). */
+#if defined(MINK_HAVE_X86_KERNELS)
+#define MK_DISPATCH(impl, name, ...) \
+	do { \
+		switch (impl) { \
+		case MK_IMPL_AVX512: name##_avx512(__VA_ARGS__); break; \
+		case MK_IMPL_AVX2: name##_avx2(__VA_ARGS__); break; \
+		default: name##_scalar(__VA_ARGS__); break; \
+		} \
+	} while (0)
+#else
+#define MK_DISPATCH(impl, name, ...) name##_scalar(__VA_ARGS__)
+#endif
+
 int mkImpl_Available(mkImpl impl)
 {
 	switch (impl) {
@@ -322,22 +337,10 @@ mkResult mkSum2_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
 	plan2(&p, b1, b2, opt);
 	mkKPlan2f pf;
 	if (opt->precision == MK_PRECISION_F32 && mkKPlan2f_From(&pf, &p)) {
-		switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-		case MK_IMPL_AVX512: mkK2_Run_f32_avx512(&pf, ux, uy, n, x, y, kx, ky); break;
-		case MK_IMPL_AVX2: mkK2_Run_f32_avx2(&pf, ux, uy, n, x, y, kx, ky); break;
-#endif
-		default: mkK2_Run_f32_scalar(&pf, ux, uy, n, x, y, kx, ky); break;
-		}
+		MK_DISPATCH(impl, mkK2_Run_f32, &pf, ux, uy, n, x, y, kx, ky);
 		return MK_OK;
 	}
-	switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-	case MK_IMPL_AVX512: mkK2_Run_avx512(&p, ux, uy, n, x, y, kx, ky); break;
-	case MK_IMPL_AVX2: mkK2_Run_avx2(&p, ux, uy, n, x, y, kx, ky); break;
-#endif
-	default: mkK2_Run_scalar(&p, ux, uy, n, x, y, kx, ky); break;
-	}
+	MK_DISPATCH(impl, mkK2_Run, &p, ux, uy, n, x, y, kx, ky);
 	return MK_OK;
 }
 
@@ -364,22 +367,10 @@ mkResult mkSum3_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 	plan3(&p, b1, b2, opt);
 	mkKPlan3f pf;
 	if (opt->precision == MK_PRECISION_F32 && mkKPlan3f_From(&pf, &p)) {
-		switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-		case MK_IMPL_AVX512: mkK3_Run_f32_avx512(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-		case MK_IMPL_AVX2: mkK3_Run_f32_avx2(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-#endif
-		default: mkK3_Run_f32_scalar(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-		}
+		MK_DISPATCH(impl, mkK3_Run_f32, &pf, ux, uy, uz, n, x, y, z, kx, ky, kz);
 		return MK_OK;
 	}
-	switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-	case MK_IMPL_AVX512: mkK3_Run_avx512(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-	case MK_IMPL_AVX2: mkK3_Run_avx2(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-#endif
-	default: mkK3_Run_scalar(&p, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-	}
+	MK_DISPATCH(impl, mkK3_Run, &p, ux, uy, uz, n, x, y, z, kx, ky, kz);
 	return MK_OK;
 }
 
@@ -399,13 +390,7 @@ mkResult mkSum2f_Batch(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt,
 		mkKPlan2f pf;
 		plan2(&p, b1, b2, opt);
 		if (mkKPlan2f_From(&pf, &p)) {
-			switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-			case MK_IMPL_AVX512: mkK2_Run_f32io_avx512(&pf, ux, uy, n, x, y, kx, ky); break;
-			case MK_IMPL_AVX2: mkK2_Run_f32io_avx2(&pf, ux, uy, n, x, y, kx, ky); break;
-#endif
-			default: mkK2_Run_f32io_scalar(&pf, ux, uy, n, x, y, kx, ky); break;
-			}
+			MK_DISPATCH(impl, mkK2_Run_f32io, &pf, ux, uy, n, x, y, kx, ky);
 			return MK_OK;
 		}
 	}
@@ -435,13 +420,7 @@ mkResult mkSum3f_Batch(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt,
 		mkKPlan3f pf;
 		plan3(&p, b1, b2, opt);
 		if (mkKPlan3f_From(&pf, &p)) {
-			switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-			case MK_IMPL_AVX512: mkK3_Run_f32io_avx512(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-			case MK_IMPL_AVX2: mkK3_Run_f32io_avx2(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-#endif
-			default: mkK3_Run_f32io_scalar(&pf, ux, uy, uz, n, x, y, z, kx, ky, kz); break;
-			}
+			MK_DISPATCH(impl, mkK3_Run_f32io, &pf, ux, uy, uz, n, x, y, z, kx, ky, kz);
 			return MK_OK;
 		}
 	}
@@ -632,13 +611,7 @@ mkResult mkKOne2_Init(mkKOne2 *w, mkBody2 b1, mkShape2 s2, const mkSumOptions *o
 		w->k[d] = buf + (size_t)d * n;
 		w->g[d] = buf + (size_t)(2 + d) * n;
 	}
-	switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-	case MK_IMPL_AVX512: mkK2_SurfaceRun_avx512(&w->p.s1, ux, uy, n, w->k[0], w->k[1], w->g[0], w->g[1]); break;
-	case MK_IMPL_AVX2: mkK2_SurfaceRun_avx2(&w->p.s1, ux, uy, n, w->k[0], w->k[1], w->g[0], w->g[1]); break;
-#endif
-	default: mkK2_SurfaceRun_scalar(&w->p.s1, ux, uy, n, w->k[0], w->k[1], w->g[0], w->g[1]); break;
-	}
+	MK_DISPATCH(impl, mkK2_SurfaceRun, &w->p.s1, ux, uy, n, w->k[0], w->k[1], w->g[0], w->g[1]);
 	const mkKPlan2 *p = &w->p;
 	for (int i = 0; i < n; ++i) { /* block2's k1, k2 */
 		double x1 = w->k[0][i], x2 = w->k[1][i];
@@ -659,22 +632,8 @@ void mkKOne2_Run(const mkKOne2 *w, const mkMat2 *M2, int m, double *scratch, dou
 			for (int j = 0; j < 2; ++j) { D2[o][i][j] = sg * D.m[i][j]; A[o][i][j] = M2[o].m[i][j]; }
 	}
 	const mkKPlan2 *p = &w->p;
-	switch (w->impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-	case MK_IMPL_AVX512:
-		mkK2_PoseRun_avx512(&p->s2, p->form, w->k[0], w->k[1], w->g[0], w->g[1], w->n,
-			(const double (*)[2][2])D2, (const double (*)[2][2])A, sg, p->t2p, m, scratch, x, y);
-		break;
-	case MK_IMPL_AVX2:
-		mkK2_PoseRun_avx2(&p->s2, p->form, w->k[0], w->k[1], w->g[0], w->g[1], w->n,
-			(const double (*)[2][2])D2, (const double (*)[2][2])A, sg, p->t2p, m, scratch, x, y);
-		break;
-#endif
-	default:
-		mkK2_PoseRun_scalar(&p->s2, p->form, w->k[0], w->k[1], w->g[0], w->g[1], w->n,
-			(const double (*)[2][2])D2, (const double (*)[2][2])A, sg, p->t2p, m, scratch, x, y);
-		break;
-	}
+	MK_DISPATCH(w->impl, mkK2_PoseRun, &p->s2, p->form, w->k[0], w->k[1], w->g[0], w->g[1], w->n,
+		(const double (*)[2][2])D2, (const double (*)[2][2])A, sg, p->t2p, m, scratch, x, y);
 }
 
 mkResult mkKOne3_Init(mkKOne3 *w, mkBody3 b1, mkShape3 s2, const mkSumOptions *opt,
@@ -692,19 +651,8 @@ mkResult mkKOne3_Init(mkKOne3 *w, mkBody3 b1, mkShape3 s2, const mkSumOptions *o
 		w->k[d] = buf + (size_t)d * n;
 		w->g[d] = buf + (size_t)(3 + d) * n;
 	}
-	switch (impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-	case MK_IMPL_AVX512:
-		mkK3_SurfaceRun_avx512(&w->p.s1, ux, uy, uz, n, w->k[0], w->k[1], w->k[2], w->g[0], w->g[1], w->g[2]);
-		break;
-	case MK_IMPL_AVX2:
-		mkK3_SurfaceRun_avx2(&w->p.s1, ux, uy, uz, n, w->k[0], w->k[1], w->k[2], w->g[0], w->g[1], w->g[2]);
-		break;
-#endif
-	default:
-		mkK3_SurfaceRun_scalar(&w->p.s1, ux, uy, uz, n, w->k[0], w->k[1], w->k[2], w->g[0], w->g[1], w->g[2]);
-		break;
-	}
+	MK_DISPATCH(impl, mkK3_SurfaceRun, &w->p.s1, ux, uy, uz, n, w->k[0], w->k[1], w->k[2], w->g[0], w->g[1],
+		w->g[2]);
 	const mkKPlan3 *p = &w->p;
 	for (int i = 0; i < n; ++i) { /* block3's k1, k2, k3 */
 		double x1 = w->k[0][i], x2 = w->k[1][i], x3 = w->k[2][i];
@@ -726,20 +674,6 @@ void mkKOne3_Run(const mkKOne3 *w, const mkMat3 *M2, int m, double *scratch, dou
 	}
 	const mkKPlan3 *p = &w->p;
 	const double *const k[3] = {w->k[0], w->k[1], w->k[2]}, *const g[3] = {w->g[0], w->g[1], w->g[2]};
-	switch (w->impl) {
-#if defined(MINK_HAVE_X86_KERNELS)
-	case MK_IMPL_AVX512:
-		mkK3_PoseRun_avx512(&p->s2, p->form, k, g, w->n, (const double (*)[3][3])D2, (const double (*)[3][3])A, sg,
-			p->t2p, m, scratch, x, y, z);
-		break;
-	case MK_IMPL_AVX2:
-		mkK3_PoseRun_avx2(&p->s2, p->form, k, g, w->n, (const double (*)[3][3])D2, (const double (*)[3][3])A, sg,
-			p->t2p, m, scratch, x, y, z);
-		break;
-#endif
-	default:
-		mkK3_PoseRun_scalar(&p->s2, p->form, k, g, w->n, (const double (*)[3][3])D2, (const double (*)[3][3])A, sg,
-			p->t2p, m, scratch, x, y, z);
-		break;
-	}
+	MK_DISPATCH(w->impl, mkK3_PoseRun, &p->s2, p->form, k, g, w->n,
+		(const double (*)[3][3])D2, (const double (*)[3][3])A, sg, p->t2p, m, scratch, x, y, z);
 }
