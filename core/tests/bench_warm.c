@@ -5,10 +5,10 @@
  *
  *   bench_warm [PAIRS [STEPS [STEP]]]
  *
- * PAIRS pairs of the paper's superquadric draws (B1 semi-axes U(1,11)^3,
- * centre U(-5,5)^3; B2 semi-axes U(1,6)^3, centre U(5,15)^3; exponents
- * U(0.1,1.9); rotations from four U(0,1) quaternion components), seed 2022
- * (the draws of the collision experiment's first kind); each pair then
+ * PAIRS superquadric pairs from the paper's distributions (B1 semi-axes
+ * U(1,11)^3, centre U(-5,5)^3; B2 semi-axes U(1,6)^3, centre U(5,15)^3;
+ * exponents U(0.1,1.9); rotations from four U(0,1) quaternion components),
+ * drawn with SplitMix64 from seed 2022; each pair then
  * moves STEPS times: B2 translated by STEP times the pair's scale in a
  * random direction and turned by about STEP radians about a random axis.
  * Per step both queries run (order alternating), each timed alone with
@@ -41,10 +41,20 @@ static double unit(void)
 }
 static double uniform(double a, double b) { return a + (b - a) * unit(); }
 
+/* One body; the draws in a fixed order (an initializer's or an argument
+ * list's order of evaluation is unspecified in C). */
 static mkBody3 draw(double amax, double clo, double chi)
 {
-	mkShape3 s = { uniform(1, amax), uniform(1, amax), uniform(1, amax), uniform(0.1, 1.9), uniform(0.1, 1.9) };
-	mkVec3 t = mkVec3_Make(uniform(clo, chi), uniform(clo, chi), uniform(clo, chi));
+	mkShape3 s;
+	s.a = uniform(1, amax);
+	s.b = uniform(1, amax);
+	s.c = uniform(1, amax);
+	s.eps1 = uniform(0.1, 1.9);
+	s.eps2 = uniform(0.1, 1.9);
+	mkVec3 t;
+	t.x = uniform(clo, chi);
+	t.y = uniform(clo, chi);
+	t.z = uniform(clo, chi);
 	double q[4];
 	for (int i = 0; i < 4; ++i)
 		q[i] = unit();
