@@ -1378,7 +1378,7 @@ mkResult mkCollide3_NormalFrom(mkBody3 b1, mkBody3 b2, mkVec3 start, mkCollision
 	/* scaled by its largest component first, so that no length of a finite
 	 * nonzero vector overflows or underflows */
 	double m = fmax(fabs(start.x), fmax(fabs(start.y), fabs(start.z)));
-	if (!(m > 0.0) || !isfinite(m) || !mkIsFinite3(start)) {
+	if (!mkIsFinite3(start) || !(m > 0.0)) {
 		mkCollision3_Clear(out);
 		return MK_ERR_ARGUMENT;
 	}
