@@ -173,12 +173,29 @@ static void mkEntryStat_Row(mkDoc *d, mkEntryStat *st, const char *pair, const c
 	mkDoc_Row(d, row);
 }
 
-/* The first row naming `entry`, or -1. */
-static long mkFirstRow(const mkTable *t, int calg, const char *entry)
+/* The entries of the results in the order of their first row, at most
+ * MK_SUMMARY_ENTRIES (the registry has about 20); returns their count. */
+#define MK_SUMMARY_ENTRIES 64
+static int mkEntryNames(const mkTable *t, int calg, const char *names[MK_SUMMARY_ENTRIES])
 {
-	for (long r = 0; r < t->rows; ++r)
-		if (strcmp(mkTable_Str(t, r, calg), entry) == 0)
-			return r;
+	int n = 0;
+	for (long r = 0; r < t->rows; ++r) {
+		const char *entry = mkTable_Str(t, r, calg);
+		int i = 0;
+		while (i < n && strcmp(names[i], entry) != 0)
+			++i;
+		if (i == n && n < MK_SUMMARY_ENTRIES)
+			names[n++] = entry;
+	}
+	return n;
+}
+
+/* The index of `name` among names[0 .. n), or -1. */
+static int mkIndexOf(const char *const *names, int n, const char *name)
+{
+	for (int i = 0; i < n; ++i)
+		if (strcmp(names[i], name) == 0)
+			return i;
 	return -1;
 }
 
@@ -236,26 +253,28 @@ static void mkCollision_Certified(mkDoc *d, const mkTable *t)
 		mkDoc_Para(d, "Entries' own certificates: not recorded (results written before the column certified).");
 		return;
 	}
+	/* one pass: per kind and entry, the answers with a value and those 0 */
+	const char *names[MK_SUMMARY_ENTRIES];
+	int ne = mkEntryNames(t, calg, names);
+	long with[MK_COLLISION_KINDS][MK_SUMMARY_ENTRIES] = { { 0 } };
+	long without[MK_COLLISION_KINDS][MK_SUMMARY_ENTRIES] = { { 0 } };
+	for (long r = 0; r < t->rows; ++r) {
+		double v = mkTable_Num(t, r, cc);
+		int k = mkIndexOf(mkCollision_PairNames, MK_COLLISION_KINDS, mkTable_Str(t, r, cpair));
+		int e = mkIndexOf(names, ne, mkTable_Str(t, r, calg));
+		if (isnan(v) || k < 0 || e < 0)
+			continue;
+		with[k][e] += 1;
+		without[k][e] += v == 0.0;
+	}
 	char text[1024] = "";
 	long total = 0;
 	for (int k = 0; k < MK_COLLISION_KINDS; ++k)
-		for (long r = 0; r < t->rows; ++r) {
-			const char *entry = mkTable_Str(t, r, calg);
-			if (mkFirstRow(t, calg, entry) < r)
-				continue;
-			long with = 0, without = 0;
-			for (long q = r; q < t->rows; ++q) {
-				double v = mkTable_Num(t, q, cc);
-				if (isnan(v) || strcmp(mkTable_Str(t, q, calg), entry) != 0
-					|| strcmp(mkTable_Str(t, q, cpair), mkCollision_PairNames[k]) != 0)
-					continue;
-				with += 1;
-				without += v == 0.0;
-			}
-			total += with;
-			if (without > 0)
+		for (int e = 0; e < ne; ++e) {
+			total += with[k][e];
+			if (without[k][e] > 0)
 				snprintf(text + strlen(text), sizeof text - strlen(text), "%s%s %s %ld of %ld", text[0] ? ", " : "",
-					mkCollision_PairNames[k], entry, without, with);
+					mkCollision_PairNames[k], names[e], without[k][e], with[k][e]);
 		}
 	mkDoc_Para(d, "Answers without the certificate their entry gives (column certified 0; minksum-normal: an overlap "
 		"whose depth was not certified global within its budget), of %ld certified or not: %s.", total,
@@ -283,14 +302,13 @@ static void mkCollision_Details(mkDoc *d, const mkTable *t, const mkMeta *m)
 	st.us = malloc(room);
 	st.de = malloc(room);
 	st.pe = malloc(room);
+	const char *names[MK_SUMMARY_ENTRIES];
+	int ne = mkEntryNames(t, calg, names);
 	for (int k = 0; st.us && st.de && st.pe && k < MK_COLLISION_KINDS; ++k)
-		for (long r = 0; r < t->rows; ++r) {
-			const char *entry = mkTable_Str(t, r, calg);
-			if (mkFirstRow(t, calg, entry) < r)
-				continue;
-			mkEntryStat_Load(&st, t, mkCollision_PairNames[k], entry);
+		for (int e = 0; e < ne; ++e) {
+			mkEntryStat_Load(&st, t, mkCollision_PairNames[k], names[e]);
 			if (st.n + st.skipped > 0)
-				mkEntryStat_Row(d, &st, mkCollision_PairNames[k], entry);
+				mkEntryStat_Row(d, &st, mkCollision_PairNames[k], names[e]);
 		}
 	free(st.us);
 	free(st.de);
