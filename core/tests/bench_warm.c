@@ -23,6 +23,8 @@
 
 #include <mink/mink.h>
 
+#include "ensure.h"
+
 static double now_s(void)
 {
 	struct timespec t;
@@ -31,15 +33,8 @@ static double now_s(void)
 }
 
 static unsigned long long state = 2022;
-static double unit(void)
-{
-	unsigned long long z = (state += 0x9E3779B97F4A7C15ULL);
-	z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-	z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-	z ^= z >> 31;
-	return (double)(z >> 11) * 0x1.0p-53;
-}
-static double uniform(double a, double b) { return a + (b - a) * unit(); }
+static double unit(void) { return mk_test_unit(&state); }
+static double uniform(double a, double b) { return mk_test_uniform(&state, a, b); }
 
 /* One body; the draws in a fixed order (an initializer's or an argument
  * list's order of evaluation is unspecified in C). */
