@@ -532,6 +532,71 @@ static double mkTrustStep(const double g[2], double A[2][2], double radius, doub
 	return g0 * z[0] + g1 * z[1] - 0.5 * (l0 * z[0] * z[0] + l1 * z[1] * z[1]);
 }
 
+/* ---- exact line searches ------------------------------------------------ */
+
+/* One probe of a function of one variable t: its value and derivative. */
+typedef void (*mkLineFn)(void *ctx, double t, double *v, double *dv);
+
+/* Maximises a function v(t) of one variable that is concave (MinkSum (Ray):
+ * -psi along a line) or concave near its maximum (MinkSum (Normal): f along
+ * a great circle), from t = 0, where its value is v0 and its slope d0 > 0.
+ * The bracket [0, h] is widened by 4 while the slope at its end is still
+ * positive; then each step probes where the tangent lines at the bracket's
+ * two ends cross (on a concave function they bound it from above there; on
+ * a piecewise linear one that point is the kink itself, so a nearly kinked
+ * support function, where Newton's model fails, takes a few probes instead
+ * of a bisection to rounding), or the midpoint when the last step did not
+ * halve the bracket, and keeps the end whose slope has the same sign. It
+ * stops when the tangent lines' bound is within 4 ulps of the best value
+ * found (|v| + scale), or when no double lies inside the bracket; then it
+ * returns 1 (converged), else 0 (out of probes, or the slope never turned).
+ * The probes themselves keep the best point (fn's context). */
+static int mkLine_Max(mkLineFn fn, void *ctx, double h, double v0, double d0, double scale)
+{
+	double lo = 0.0, vlo = v0, dlo = d0, hi = h, vhi, dhi;
+	double best = v0;
+	fn(ctx, hi, &vhi, &dhi);
+	for (int k = 0; dhi > 0.0 && k < 40 && hi < 1e8; ++k) {
+		best = fmax(best, vhi);
+		lo = hi;
+		vlo = vhi;
+		dlo = dhi;
+		hi *= 4.0;
+		fn(ctx, hi, &vhi, &dhi);
+	}
+	best = fmax(best, vhi);
+	if (!(dhi <= 0.0))
+		return 0; /* still rising (or NaN) */
+	int halved = 1;
+	for (int k = 0; k < 100; ++k) {
+		double t = 0.5 * (lo + hi);
+		if (dlo - dhi > 0.0) {
+			double cross = (vhi - vlo + dlo * lo - dhi * hi) / (dlo - dhi);
+			double bound = vlo + dlo * (cross - lo);
+			if (bound - best <= 4.0 * DBL_EPSILON * (fabs(best) + scale))
+				return 1;
+			if (halved && cross > lo && cross < hi)
+				t = cross;
+		}
+		if (!(t > lo && t < hi))
+			return 1; /* the bracket is down to adjacent doubles */
+		double v, dv, width = hi - lo;
+		fn(ctx, t, &v, &dv);
+		best = fmax(best, v);
+		if (dv > 0.0) {
+			lo = t;
+			vlo = v;
+			dlo = dv;
+		} else {
+			hi = t;
+			vhi = v;
+			dhi = dv;
+		}
+		halved = hi - lo <= 0.5 * width;
+	}
+	return 0;
+}
+
 /* ---- MinkSum (Normal) --------------------------------------------------- */
 
 /* The state at a unit normal n. */
@@ -560,50 +625,68 @@ static double mkNormal_Value(const mkPairCtx *c, mkVec3 n)
 	return mkVec3_Dot(n, c->d) - mkPair_Eval(c, n, &e);
 }
 
-/* The slope of f along the great circle from n towards the unit tangent e,
- * at m = normalize(n + t e): <P_m e, d - x(m)> (up to a positive factor). */
-static double mkNormal_Slope(const mkPairCtx *c, mkVec3 n, mkVec3 e, double t)
+/* f along the great circle from n towards the unit tangent e, at
+ * m = normalize(n + t e): the value and its derivative in t,
+ * <P_m e, d - x(m)> / |n + t e| (P_m the projection orthogonal to m). The
+ * best probe's supports are kept, so that the search's answer needs no
+ * evaluation of its own. */
+typedef struct mkNormalLine {
+	const mkPairCtx *c;
+	mkVec3 n, e;
+	double best;
+	mkVec3 mbest;
+	mkPairAt at;
+} mkNormalLine;
+
+static void mkNormal_LineAt(void *p, double t, double *v, double *dv)
 {
-	mkVec3 m = mkVec3_NormalizeInline(mkVec3_Add(n, mkVec3_Scale(e, t)));
+	mkNormalLine *L = p;
+	mkVec3 y = mkVec3_Add(L->n, mkVec3_Scale(L->e, t));
+	double len = mkVec3_LengthInline(y);
+	mkVec3 m = mkVec3_Scale(y, 1.0 / len);
 	mkPairAt pe;
-	mkPair_Eval(c, m, &pe);
-	mkVec3 r = mkVec3_Sub(c->d, pe.x);
-	return mkVec3_Dot(e, r) - mkVec3_Dot(e, m) * mkVec3_Dot(m, r);
+	double H = mkPair_Eval(L->c, m, &pe);
+	mkVec3 r = mkVec3_Sub(L->c->d, pe.x);
+	*v = mkVec3_Dot(m, L->c->d) - H;
+	*dv = (mkVec3_Dot(L->e, r) - mkVec3_Dot(L->e, m) * mkVec3_Dot(m, r)) / len;
+	if (*v > L->best) {
+		L->best = *v;
+		L->mbest = m;
+		L->at = pe;
+	}
 }
 
-/* Maximise f along the great circle through st->n in the tangent direction e
- * by bisection on the sign of the slope: the safeguard where f is too far
- * from quadratic for Newton (near an axis of a body with an exponent well
- * below 1, where the support point crosses a nearly flat face within a tiny
- * change of the normal). Returns 1 when the bracket shrank to rounding. */
+/* Maximise f exactly along the great circle through st->n in the tangent
+ * direction e (mkLine_Max): the safeguard where f is too far from quadratic
+ * for Newton (near an axis of a body with an exponent well below 1, where
+ * the support point crosses a nearly flat face within a tiny change of the
+ * normal). st moves to the best point found. Returns 1 when the search
+ * converged. */
 static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, double h)
 {
-	mkVec3 n = st->n;
-	double s0 = mkNormal_Slope(c, n, e, 0.0);
-	if (s0 < 0.0)
+	double slope = mkVec3_Dot(e, mkVec3_Sub(c->d, st->e.x));
+	if (slope == 0.0)
+		return 1;
+	if (slope < 0.0) {
 		e = mkVec3_Neg(e);
-	double lo = 0.0, hi = h;
-	int k = 0;
-	while (mkNormal_Slope(c, n, e, hi) > 0.0 && hi < 1e6 && k++ < 40) {
-		lo = hi;
-		hi *= 4.0;
+		slope = -slope;
 	}
-	for (k = 0; k < 120; ++k) {
-		double mid = 0.5 * (lo + hi);
-		if (mid <= lo || mid >= hi)
-			break;
-		if (mkNormal_Slope(c, n, e, mid) > 0.0)
-			lo = mid;
-		else
-			hi = mid;
+	mkNormalLine L;
+	L.c = c;
+	L.n = st->n;
+	L.e = e;
+	L.best = st->f;
+	int done = mkLine_Max(mkNormal_LineAt, &L, h, st->f, slope, c->scale);
+	if (L.best > st->f) {
+		st->n = L.mbest;
+		st->e = L.at;
+		st->f = L.best;
+		mkTangents(st->n, &st->t1, &st->t2);
+		mkVec3 r = mkVec3_Sub(c->d, st->e.x);
+		st->g[0] = mkVec3_Dot(st->t1, r);
+		st->g[1] = mkVec3_Dot(st->t2, r);
 	}
-	mkVec3 nlo = mkVec3_NormalizeInline(mkVec3_Add(n, mkVec3_Scale(e, lo)));
-	mkVec3 nhi = mkVec3_NormalizeInline(mkVec3_Add(n, mkVec3_Scale(e, hi)));
-	double flo = mkNormal_Value(c, nlo), fhi = mkNormal_Value(c, nhi);
-	mkVec3 nb = fhi > flo ? nhi : nlo;
-	if (fmax(flo, fhi) >= st->f)
-		mkNormal_Eval(c, nb, st);
-	return hi - lo <= 8.0 * DBL_EPSILON * (1.0 + hi);
+	return done;
 }
 
 static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][2])
@@ -1465,52 +1548,67 @@ static double mkRay_Value(const mkPairCtx *c, mkRayFrame *f, const double s[2])
 	return H;
 }
 
-static double mkRay_SlopeAt(const mkPairCtx *c, mkRayFrame *f, const double base[2], const double e[2],
-	mkVec3 ew, double t)
+/* -psi along s + t e (e a unit vector of the plane), concave in t: the
+ * value and the derivative -<e, x> (e in 3D); every probe's contact-space
+ * point is kept for the lower bound, and the best probe's supports. */
+typedef struct mkRayLine {
+	const mkPairCtx *c;
+	mkRayFrame *f;
+	double base[2], e[2];
+	mkVec3 ew;
+	double best, sbest;
+	mkPairAt at;
+} mkRayLine;
+
+static void mkRay_LineAt(void *p, double t, double *v, double *dv)
 {
-	double s[2] = { base[0] + t * e[0], base[1] + t * e[1] };
+	mkRayLine *L = p;
+	double s[2] = { L->base[0] + t * L->e[0], L->base[1] + t * L->e[1] };
 	mkPairAt pe;
-	mkPair_Eval(c, mkRay_Point(f, s), &pe);
-	mkRay_Keep(f, pe.x);
-	return mkVec3_Dot(ew, pe.x);
+	double H = mkPair_Eval(L->c, mkRay_Point(L->f, s), &pe);
+	mkRay_Keep(L->f, pe.x);
+	*v = -H;
+	*dv = -mkVec3_Dot(L->ew, pe.x);
+	if (*v > L->best) {
+		L->best = *v;
+		L->sbest = t;
+		L->at = pe;
+	}
 }
 
-/* psi along s + t e (e a unit vector of the plane): convex in t; minimised
- * by bisection on the sign of its slope <e, x>. Returns 1 when the bracket
- * shrank to rounding. */
+/* Minimise psi exactly along s + t e (mkLine_Max on -psi); st moves to the
+ * best point found. Returns 1 when the search converged. */
 static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, const double e0[2], double h)
 {
-	double e[2] = { e0[0], e0[1] };
-	mkVec3 ew = mkVec3_Add(mkVec3_Scale(f->t1, e[0]), mkVec3_Scale(f->t2, e[1]));
-	double base[2] = { st->s[0], st->s[1] };
-#define MK_RAY_SLOPE(t) mkRay_SlopeAt(c, f, base, e, ew, (t))
-	if (mkVec3_Dot(ew, st->e.x) > 0.0) {
-		e[0] = -e[0];
-		e[1] = -e[1];
-		ew = mkVec3_Neg(ew);
+	mkRayLine L;
+	L.c = c;
+	L.f = f;
+	L.base[0] = st->s[0];
+	L.base[1] = st->s[1];
+	L.e[0] = e0[0];
+	L.e[1] = e0[1];
+	L.ew = mkVec3_Add(mkVec3_Scale(f->t1, e0[0]), mkVec3_Scale(f->t2, e0[1]));
+	double slope = -mkVec3_Dot(L.ew, st->e.x);
+	if (slope == 0.0)
+		return 1;
+	if (slope < 0.0) {
+		L.e[0] = -L.e[0];
+		L.e[1] = -L.e[1];
+		L.ew = mkVec3_Neg(L.ew);
+		slope = -slope;
 	}
-	double lo = 0.0, hi = h;
-	int k = 0;
-	while (MK_RAY_SLOPE(hi) < 0.0 && hi < 1e8 && k++ < 40) {
-		lo = hi;
-		hi *= 4.0;
+	L.best = -st->H;
+	int done = mkLine_Max(mkRay_LineAt, &L, h, -st->H, slope, c->scale);
+	if (L.best > -st->H) {
+		st->s[0] = L.base[0] + L.sbest * L.e[0];
+		st->s[1] = L.base[1] + L.sbest * L.e[1];
+		st->m = mkRay_Point(f, st->s);
+		st->e = L.at;
+		st->H = -L.best;
+		st->g[0] = -mkVec3_Dot(f->t1, st->e.x);
+		st->g[1] = -mkVec3_Dot(f->t2, st->e.x);
 	}
-	for (k = 0; k < 120; ++k) {
-		double mid = 0.5 * (lo + hi);
-		if (mid <= lo || mid >= hi)
-			break;
-		if (MK_RAY_SLOPE(mid) < 0.0)
-			lo = mid;
-		else
-			hi = mid;
-	}
-#undef MK_RAY_SLOPE
-	double slo[2] = { base[0] + lo * e[0], base[1] + lo * e[1] };
-	double shi[2] = { base[0] + hi * e[0], base[1] + hi * e[1] };
-	double plo = mkRay_Value(c, f, slo), phi = mkRay_Value(c, f, shi);
-	if (fmin(plo, phi) <= st->H)
-		mkRay_Eval(c, f, phi < plo ? shi : slo, st);
-	return hi - lo <= 8.0 * DBL_EPSILON * (1.0 + hi + mkLen2(base[0], base[1]));
+	return done;
 }
 
 mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
