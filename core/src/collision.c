@@ -1055,6 +1055,129 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 	return mkVec3_Add(b.t, mkVec3_Scale(mkVec3_Sub(x, b.t), 1.0 / gauge));
 }
 
+/* ---- witness points on nearly flat faces ---------------------------------- */
+
+/* Pair evaluations the witness iteration (mkNormal_Hull) may spend. */
+#define MK_HULL_EVALS 64
+
+/* The least-norm point of the convex hull of w[0..k), k <= 4: every subset
+ * of one, two or three points is tried (the nearest point of its affine hull
+ * by the normal equations), those with nonnegative weights kept, the least
+ * norm wins. lam receives the weights (0 outside the winning subset). */
+static mkVec3 mkHull_Nearest(const mkVec3 *w, int k, double lam[4])
+{
+	double bestn = INFINITY;
+	mkVec3 best = w[0];
+	for (int i = 0; i < 4; ++i)
+		lam[i] = i == 0 ? 1.0 : 0.0;
+	for (int mask = 1; mask < (1 << k); ++mask) {
+		int id[4], n = 0;
+		for (int i = 0; i < k; ++i)
+			if (mask & (1 << i))
+				id[n++] = i;
+		if (n > 3)
+			continue;
+		double mu[3] = { 1.0, 0.0, 0.0 };
+		if (n == 2) {
+			mkVec3 e = mkVec3_Sub(w[id[1]], w[id[0]]);
+			double ee = mkVec3_Dot(e, e);
+			if (!(ee > 0.0))
+				continue;
+			mu[1] = -mkVec3_Dot(e, w[id[0]]) / ee;
+			mu[0] = 1.0 - mu[1];
+		} else if (n == 3) {
+			mkVec3 e1 = mkVec3_Sub(w[id[1]], w[id[0]]), e2 = mkVec3_Sub(w[id[2]], w[id[0]]);
+			double a = mkVec3_Dot(e1, e1), b = mkVec3_Dot(e1, e2), c = mkVec3_Dot(e2, e2);
+			double r1 = -mkVec3_Dot(e1, w[id[0]]), r2 = -mkVec3_Dot(e2, w[id[0]]);
+			double det = a * c - b * b;
+			if (!(det > 1e-300 && det > 1e-14 * a * c))
+				continue;
+			mu[1] = (c * r1 - b * r2) / det;
+			mu[2] = (a * r2 - b * r1) / det;
+			mu[0] = 1.0 - mu[1] - mu[2];
+		}
+		if (mu[0] < 0.0 || mu[1] < 0.0 || mu[2] < 0.0)
+			continue;
+		mkVec3 z = mkVec3_Make(0.0, 0.0, 0.0);
+		for (int j = 0; j < n; ++j)
+			z = mkVec3_Add(z, mkVec3_Scale(w[id[j]], mu[j]));
+		double zn = mkVec3_Dot(z, z);
+		if (zn < bestn) {
+			bestn = zn;
+			best = z;
+			for (int i = 0; i < 4; ++i)
+				lam[i] = 0.0;
+			for (int j = 0; j < n; ++j)
+				lam[id[j]] = mu[j];
+		}
+	}
+	return best;
+}
+
+/* Witness points of a separated answer whose support points leave a gap:
+ * near a nearly flat face the normal does not resolve where on the face the
+ * nearest points lie (the support point crosses the face within a rounding
+ * change of n). Gilbert's distance iteration on B2 - B1 from the answer:
+ * the support point of B2 - B1 towards the origin from the current least-
+ * norm point z (c2 + s2(-m) - c1 - s1(m), m = z / |z|: one pair evaluation)
+ * joins the points kept, and the least-norm point of their hull keeps at
+ * most three of them; it stops when |z| is within 1e-13 of the scale of
+ * <m, that point> (= f(m), a lower bound of the distance). The weights give
+ * a point of each body (their difference is z), each then moved radially
+ * onto its boundary; *p1, *p2 are replaced when that pair is closer. The
+ * distance and the normal are left as the solver found them. */
+static void mkNormal_Hull(const mkPairCtx *c, const mkNormalState *st, mkVec3 *p1, mkVec3 *p2)
+{
+	const mkVec3 c1 = c->b1->t, c2 = c->b2->t;
+	mkVec3 a[4], b[4], w[4];
+	double lam[4] = { 1.0, 0.0, 0.0, 0.0 };
+	int k = 1;
+	a[0] = mkVec3_Add(c1, st->e.a1.s);
+	b[0] = mkVec3_Add(c2, st->e.a2.s);
+	w[0] = mkVec3_Sub(b[0], a[0]);
+	mkVec3 z = w[0];
+	double tol = 1e-13 * c->scale;
+	for (int it = 0; it < MK_HULL_EVALS; ++it) {
+		double zl = mkVec3_LengthInline(z);
+		if (!(zl > 0.0))
+			break;
+		mkVec3 m = mkVec3_Scale(z, 1.0 / zl);
+		mkPairAt e;
+		mkPair_Eval(c, m, &e);
+		mkVec3 an = mkVec3_Add(c1, e.a1.s), bn = mkVec3_Add(c2, e.a2.s), wn = mkVec3_Sub(bn, an);
+		if (!(zl - mkVec3_Dot(m, wn) > tol))
+			break;
+		a[k] = an;
+		b[k] = bn;
+		w[k] = wn;
+		++k;
+		z = mkHull_Nearest(w, k, lam);
+		/* keep the points that carry weight */
+		int j = 0;
+		for (int i = 0; i < k; ++i)
+			if (lam[i] > 0.0) {
+				a[j] = a[i];
+				b[j] = b[i];
+				w[j] = w[i];
+				lam[j] = lam[i];
+				++j;
+			}
+		k = j;
+	}
+	mkVec3 q1 = mkVec3_Make(0.0, 0.0, 0.0), q2 = q1;
+	for (int i = 0; i < k; ++i) {
+		q1 = mkVec3_Add(q1, mkVec3_Scale(a[i], lam[i]));
+		q2 = mkVec3_Add(q2, mkVec3_Scale(b[i], lam[i]));
+	}
+	q1 = mkRadial(*c->b1, q1);
+	q2 = mkRadial(*c->b2, q2);
+	if (mkIsFinite3(q1) && mkIsFinite3(q2)
+		&& mkVec3_LengthInline(mkVec3_Sub(q2, q1)) < mkVec3_LengthInline(mkVec3_Sub(*p2, *p1))) {
+		*p1 = q1;
+		*p2 = q2;
+	}
+}
+
 /* ---- the global certificate of an overlap --------------------------------- */
 
 /* The depth is min over unit n of h(n) = h_{K-d}(n) = -f(n), the support
@@ -1438,6 +1561,11 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 		} else if (s2 < span) {
 			out->p2 = q2;
 			span = s2;
+		}
+		if (span - best.f > MK_COLLIDE3_TOUCH_TOL * c.scale) {
+			/* still apart: where on the face, by the hull of support points */
+			mkNormal_Hull(&c, &best, &out->p1, &out->p2);
+			span = mkVec3_LengthInline(mkVec3_Sub(out->p2, out->p1));
 		}
 	}
 	if (best.f > 0.0) {

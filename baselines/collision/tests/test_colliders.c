@@ -283,6 +283,50 @@ static void test_random_pairs(void)
 	ENSURE(below == 0);
 }
 
+/* Box-like pairs (every exponent in [0.05, 0.3]; nearly flat faces) against
+ * the referee: both core queries give its status, MinkSum (Normal) its
+ * distance within 1e-10 of the scale, and witness points whose span is
+ * within 1e-10 of the scale of the referee's distance (so they are the
+ * nearest points, not just points of the right faces). */
+static void test_boxlike_pairs(void)
+{
+	const mkCollider *referee = mkColliders_Find("referee");
+	unsigned long long seed = 31;
+	double worst = 0.0;
+	int sep = 0;
+	for (int trial = 0; trial < 30; ++trial) {
+		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
+		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
+		s1.eps1 = mk_test_uniform(&seed, 0.05, 0.3);
+		s1.eps2 = mk_test_uniform(&seed, 0.05, 0.3);
+		s2.eps1 = mk_test_uniform(&seed, 0.05, 0.3);
+		s2.eps2 = mk_test_uniform(&seed, 0.05, 0.3);
+		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
+		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15));
+		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkColliderScratch s;
+		mkCollision3 ref, mine, ray;
+		ENSURE(mkCollider_Run(referee, b1, b2, &s, &ref) == MK_OK);
+		ENSURE(mkCollide3_Normal(b1, b2, &mine) == MK_OK);
+		ENSURE(mkCollide3_Ray(b1, b2, &ray) == MK_OK);
+		if (!(ref.gap <= 1e-10 * ref.scale) || fabs(ref.distance) <= 1e-9 * ref.scale)
+			continue; /* the referee not certain, or within the status margin */
+		ENSURE(mine.status == ref.status);
+		ENSURE(ray.status == ref.status);
+		ENSURE_NEAR(mine.distance, ref.distance, 1e-10 * mine.scale);
+		if (ref.status != MK_CONTACT_SEPARATED)
+			continue;
+		++sep;
+		double span = mkVec3_Length(mkVec3_Sub(mine.p2, mine.p1));
+		ENSURE_NEAR(span, ref.distance, 1e-10 * mine.scale);
+		if (fabs(span - ref.distance) > worst * mine.scale)
+			worst = fabs(span - ref.distance) / mine.scale;
+	}
+	printf("box-like pairs: %d separated and certain, witness span within %.2g of the scale of the referee's distance\n", sep,
+		worst);
+	ENSURE(sep >= 20);
+}
+
 /* The three deep overlaps of the collision experiment (kind deep, seed
  * 2022: trials 935, 1251 and 6479) on which the Newton restarts alone ended
  * in a local optimum of the depth (errors 1.2e-3, 6.7e-3 and 6.5e-2 of the
@@ -393,6 +437,7 @@ int main(void)
 	test_registry();
 	test_fcl_cases();
 	test_random_pairs();
+	test_boxlike_pairs();
 	test_deep_pairs();
 	test_near_touching();
 	printf("%-18s %6s %8s %6s\n", "entry", "runs", "no-verdict", "wrong");
