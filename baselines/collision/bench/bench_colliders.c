@@ -17,14 +17,17 @@
  * (ellipsoids: 1); rotations from four U(0,1) quaternion components,
  * normalised. "near" pairs: a superquadric or ellipsoid pair moved along
  * minksum-normal's normal so that the signed distance is s * scale, s in
- * {1e-1, ..., 1e-6}, and "deep" pairs: centres within U(-2,2)^3.
+ * {1e-1, ..., 1e-6}, and "deep" pairs: centres within U(-2,2)^3. "box-like"
+ * pairs (only when asked for, KIND 4): the superquadric draws with every
+ * exponent U(0.05, 0.3), nearly flat faces and nearly kinked support
+ * functions.
  *
  * Timing: CLOCK_MONOTONIC around the run call only (prepare untimed), the
  * entries interleaved pair by pair (A B C A B C ...), one thread.
  *
  * usage: bench_colliders [--help] [pairs per kind, default 2000] [seed, default 2022]
  *                        [entries to leave out, comma-separated, e.g. implicit]
- *                        [only this kind: 0 ellipsoids .. 3 deep-overlap] */
+ *                        [only this kind: 0 ellipsoids .. 3 deep-overlap, 4 box-like] */
 #define _POSIX_C_SOURCE 199309L
 #include <mink/colliders.h>
 
@@ -53,12 +56,13 @@ static double mkUnit(void)
 }
 static double mkUniform(double a, double b) { return a + (b - a) * mkUnit(); }
 
-static mkBody3 mkDraw(double amax, double clo, double chi, int ellipsoid)
+/* Exponents U(elo, ehi) unless an ellipsoid. */
+static mkBody3 mkDraw(double amax, double clo, double chi, int ellipsoid, double elo, double ehi)
 {
 	mkShape3 s = { mkUniform(1, amax), mkUniform(1, amax), mkUniform(1, amax), 1.0, 1.0 };
 	if (!ellipsoid) {
-		s.eps1 = mkUniform(0.1, 1.9);
-		s.eps2 = mkUniform(0.1, 1.9);
+		s.eps1 = mkUniform(elo, ehi);
+		s.eps2 = mkUniform(elo, ehi);
 	}
 	mkVec3 t = mkVec3_Make(mkUniform(clo, chi), mkUniform(clo, chi), mkUniform(clo, chi));
 	double q[4];
@@ -93,8 +97,10 @@ static int mkListed(const char *list, const char *name)
 	return 0;
 }
 
-enum { MK_KINDS = 4 };
-static const char *const mkKindNames[MK_KINDS] = { "ellipsoids", "superquadrics", "near-touching", "deep-overlap" };
+/* Kinds 0 .. 3 run by default; box-like (4) only when asked for. */
+enum { MK_KINDS = 5, MK_KINDS_DEFAULT = 4 };
+static const char *const mkKindNames[MK_KINDS] = { "ellipsoids", "superquadrics", "near-touching", "deep-overlap",
+	"box-like" };
 
 static const char mkUsage[] =
 	"usage: bench_colliders [PAIRS [SEED [SKIP [KIND]]]]\n"
@@ -105,7 +111,8 @@ static const char mkUsage[] =
 	"  SEED   run seed, 0..2^64-1, decimal or 0x.. (default 2022)\n"
 	"  SKIP   entries to leave out, comma-separated, e.g. implicit (default none)\n"
 	"  KIND   only this kind: 0 ellipsoids, 1 superquadrics, 2 near-touching,\n"
-	"         3 deep-overlap (default all)\n";
+	"         3 deep-overlap (default: these four), 4 box-like (superquadric\n"
+	"         draws with every exponent U(0.05, 0.3): nearly flat faces)\n";
 
 /* An integer argument in [lo, hi], or exit 2 with one line naming it. */
 static long mkArgInt(const char *name, const char *text, long lo, long hi)
@@ -166,17 +173,18 @@ int main(int argc, char **argv)
 		"# entries interleaved pair by pair); errors |value - referee| / scale; status compared outside |sd| <= %g scale\n",
 		pairs, seed, margin);
 	for (int kind = 0; kind < MK_KINDS; ++kind) {
-		if (only >= 0 && kind != only)
+		if (only >= 0 ? kind != only : kind >= MK_KINDS_DEFAULT)
 			continue;
 		mkState = seed * 1000003ULL + (unsigned long long)kind;
 		for (int p = 0; p < pairs; ++p) {
-			int ell = kind == 0 || (kind >= 2 && p % 2 == 0);
+			int ell = kind == 0 || ((kind == 2 || kind == 3) && p % 2 == 0);
+			double elo = kind == 4 ? 0.05 : 0.1, ehi = kind == 4 ? 0.3 : 1.9;
 			if (kind == 3) {
-				B1[p] = mkDraw(11.0, -1.0, 1.0, ell);
-				B2[p] = mkDraw(6.0, -2.0, 2.0, ell);
+				B1[p] = mkDraw(11.0, -1.0, 1.0, ell, elo, ehi);
+				B2[p] = mkDraw(6.0, -2.0, 2.0, ell, elo, ehi);
 			} else {
-				B1[p] = mkDraw(11.0, -5.0, 5.0, ell);
-				B2[p] = mkDraw(6.0, 5.0, 15.0, ell);
+				B1[p] = mkDraw(11.0, -5.0, 5.0, ell, elo, ehi);
+				B2[p] = mkDraw(6.0, 5.0, 15.0, ell, elo, ehi);
 			}
 			if (kind == 2) {
 				static const double sep[6] = { 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6 };
