@@ -98,7 +98,9 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 	mkMeta_Set(meta, "certified", "1/0 when the entry certifies its answer (minksum-normal: sd in [bound, bound + gap], "
 		"for overlaps by a branch and bound over the sphere of normals within MK_COLLIDE3_GLOBAL_TOL of the scale; 0: "
 		"its budget ran out, the depth is then a local optimum with a wider bracket); empty for entries that do not");
-	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread");
+	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread; a run "
+		"under 1 ms is repeated at once on the same pair and the faster of the two kept (the first call after "
+		"the other entries' calls finds its code and the pair out of cache)");
 	buf[0] = '\0';
 	for (int i = 0; i < o->nlimits; ++i)
 		snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%s=%ld", i ? "," : "", o->limit_entry[i]->name,
@@ -237,6 +239,9 @@ typedef struct mkTruth {
 
 /* The widest referee bracket (times the scale) judged against. */
 #define MK_REFEREE_CERTAIN 1e-10
+/* Entries whose call took less (seconds) are timed twice in a row on the
+ * pair, the faster call kept (mkCollision_Trial). */
+#define MK_WARM_BELOW 1e-3
 
 static void mkCsv_Maybe(mkCsv *csv, double v)
 {
@@ -329,6 +334,17 @@ int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *
 		if (r == MK_OK)
 			r = c->run(b1, b2, &scratch, &out);
 		double seconds = mkClock_Wall() - t0;
+		if (r == MK_OK && seconds < MK_WARM_BELOW) {
+			/* A second call on the pair, the faster kept: the first pays for
+			 * the caches the other entries' calls evicted (the same answer:
+			 * every entry is deterministic). */
+			mkCollision3 again;
+			t0 = mkClock_Wall();
+			mkResult r2 = c->run(b1, b2, &scratch, &again);
+			double s2 = mkClock_Wall() - t0;
+			if (r2 == MK_OK && s2 < seconds)
+				seconds = s2;
+		}
 		mkWriteRow(csv, kind, trial, c, seconds, r, &out, &truth, limit, 0);
 	}
 	return 0;
