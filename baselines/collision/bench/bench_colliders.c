@@ -6,10 +6,13 @@
  * entry's signed distance lies outside the referee's bracket by more than
  * 1e-10 of the scale ("below" its certified lower bound, or "above" its
  * certified upper bound on separated pairs: such an answer is certainly that
- * wrong). Pairs where the referee is not certain (its bracket wider than
- * 1e-10 of the scale, or an overlap it could not certify) are counted
- * ("uncertain") and left out of the status comparison and the errors; the
- * referee's own time and bracket widths are printed per kind. A benchmark that
+ * wrong), and for entries that give witness points the largest
+ * ||p2 - p1| - sd| / scale over the separated pairs ("wit_max": 0 when the
+ * witnesses are the nearest points). Pairs where the referee is not certain
+ * (its bracket wider than 1e-10 of the scale, or an overlap it could not
+ * certify) are counted ("uncertain") and left out of the status comparison
+ * and the errors; the referee's own time and bracket widths are printed per
+ * kind. A benchmark that
  * prints figures, not a test.
  *
  * Draws (as experiments/collision.c): B1 semi-axes U(1,11)^3, centre
@@ -197,10 +200,12 @@ int main(int argc, char **argv)
 			reftime[p] = 1e6 * (mkNow() - t0);
 		}
 		int nref_fail = 0, nuncertain = 0;
-		printf("\n## %s\n%-18s %9s %9s %7s %8s %6s %6s %10s %10s %10s %10s %10s %10s\n", mkKindNames[kind], "entry", "median_us",
-			"mean_us", "failed", "disagree", "below", "above", "dist_med", "dist_p99", "dist_max", "pen_med", "pen_p99", "pen_max");
+		printf("\n## %s\n%-18s %9s %9s %7s %8s %6s %6s %10s %10s %10s %10s %10s %10s %10s\n", mkKindNames[kind], "entry",
+			"median_us", "mean_us", "failed", "disagree", "below", "above", "dist_med", "dist_p99", "dist_max", "pen_med",
+			"pen_p99", "pen_max", "wit_max");
 		int nt[64] = { 0 }, nd[64] = { 0 }, np[64] = { 0 }, fails[64] = { 0 }, dis[64] = { 0 }, worse[64] = { 0 };
 		int above[64] = { 0 };
+		double wit[64] = { 0 };
 		for (int p = 0; p < pairs; ++p) {
 			double sdr = ref[p].distance, scale = ref[p].scale;
 			if (!isfinite(sdr))
@@ -250,6 +255,11 @@ int main(int argc, char **argv)
 					continue;
 				if (isfinite(out.distance) && sdr > 0.0 && out.distance > 0.0 && (c->gives & MK_GIVES_DISTANCE))
 					derr[(size_t)e * (size_t)pairs + (size_t)nd[e]++] = fabs(out.distance - sdr) / scale;
+				if (sdr > 0.0 && out.status == MK_CONTACT_SEPARATED && (c->gives & MK_GIVES_WITNESS)) {
+					/* how far the witnesses are from being the nearest points */
+					double w = fabs(mkVec3_Length(mkVec3_Sub(out.p2, out.p1)) - sdr) / scale;
+					wit[e] = isnan(w) || w > wit[e] ? w : wit[e];
+				}
 				if (isfinite(out.distance) && sdr < 0.0 && out.distance < 0.0 && (c->gives & MK_GIVES_PENETRATION))
 					perr[(size_t)e * (size_t)pairs + (size_t)np[e]++] = fabs(out.distance - sdr) / scale;
 			}
@@ -264,9 +274,10 @@ int main(int argc, char **argv)
 				mean += t[i];
 			mean /= nt[e];
 			double *dd = derr + (size_t)e * (size_t)pairs, *pp = perr + (size_t)e * (size_t)pairs;
-			printf("%-18s %9.3f %9.3f %7d %8d %6d %6d %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e\n", c->name, mkQuantile(t, nt[e], 0.5),
-				mean, fails[e], dis[e], worse[e], above[e], mkQuantile(dd, nd[e], 0.5), mkQuantile(dd, nd[e], 0.99), mkQuantile(dd, nd[e], 1.0),
-				mkQuantile(pp, np[e], 0.5), mkQuantile(pp, np[e], 0.99), mkQuantile(pp, np[e], 1.0));
+			printf("%-18s %9.3f %9.3f %7d %8d %6d %6d %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e\n", c->name,
+				mkQuantile(t, nt[e], 0.5), mean, fails[e], dis[e], worse[e], above[e], mkQuantile(dd, nd[e], 0.5),
+				mkQuantile(dd, nd[e], 0.99), mkQuantile(dd, nd[e], 1.0), mkQuantile(pp, np[e], 0.5), mkQuantile(pp, np[e], 0.99),
+				mkQuantile(pp, np[e], 1.0), c->gives & MK_GIVES_WITNESS ? wit[e] : NAN);
 		}
 		int nsep = 0, ng = 0;
 		double rmean = 0.0;
