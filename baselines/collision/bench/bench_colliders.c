@@ -12,8 +12,7 @@
  * (its bracket wider than 1e-10 of the scale, or an overlap it could not
  * certify) are counted ("uncertain") and left out of the status comparison
  * and the errors; the referee's own time and bracket widths are printed per
- * kind. A benchmark that
- * prints figures, not a test.
+ * kind. A benchmark that prints figures, not a test.
  *
  * Draws (as experiments/collision.c): B1 semi-axes U(1,11)^3, centre
  * U(-5,5)^3; B2 semi-axes U(1,6)^3, centre U(5,15)^3; exponents U(0.1,1.9)
