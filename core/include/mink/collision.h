@@ -66,7 +66,10 @@ typedef struct mkCollision3 {
 	                       Normal: NaN */
 	mkVec3 normal;      /* unit n, pointing from B1 towards B2 */
 	mkVec3 p1, p2;      /* witness points on the boundaries of B1 and B2
-	                       (p2 - p1 = sd n at the optimum) */
+	                       (p2 - p1 = sd n at the optimum; Normal on a
+	                       separated pair: the nearest points, found on
+	                       nearly flat faces by Gilbert's iteration from the
+	                       answer, within gap of the distance) */
 	double bound;       /* f(n) at the answer: a lower bound of sd */
 	double gap;         /* certificate width: separated (Normal), |p2 - p1| -
 	                       f(n) >= 0 (up to rounding, a few ulps of the
