@@ -23,15 +23,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "draw3.h"
 #include "ensure.h"
-
-static mkMat3 mk_rand_rot(unsigned long long *seed)
-{
-	double q[4];
-	for (int i = 0; i < 4; ++i)
-		q[i] = mk_test_uniform(seed, -1.0, 1.0);
-	return mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
-}
 
 /* The gauge of a placed body at x: Psi^(eps1/2), 1 on the boundary. */
 static double mk_gauge(mkBody3 b, mkVec3 x)
@@ -45,7 +38,7 @@ static void test_jacobian(void)
 	for (int trial = 0; trial < 200; ++trial) {
 		mkShape3 s = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11),
 			trial % 4 == 0 ? 1.0 : mk_test_uniform(&seed, 0.1, 1.9), trial % 4 == 0 ? 1.0 : mk_test_uniform(&seed, 0.1, 1.9) };
-		mkBody3 b = mkBody3_Make(s, mk_rand_rot(&seed), mkVec3_Make(1, 2, 3));
+		mkBody3 b = mkBody3_Make(s, mk_test_rotation(&seed), mkVec3_Make(1, 2, 3));
 		mkVec3 n = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
 			mk_test_uniform(&seed, -1, 1)));
 		mkMat3 J;
@@ -105,7 +98,7 @@ static void test_support_edges(void)
 				 * (1e-17)^0.005 = 0.82): the nearly kinked support functions
 				 * of docs/collide.md, where two codes legitimately differ. */
 				int rotated = kind >= 3 && trial % 2;
-				mkBody3 b = mkBody3_Make(s, rotated ? mk_rand_rot(&seed) : mkMat3_Identity(), mkVec3_Make(1, 2, 3));
+				mkBody3 b = mkBody3_Make(s, rotated ? mk_test_rotation(&seed) : mkMat3_Identity(), mkVec3_Make(1, 2, 3));
 				if (kind < 3) {
 					/* along an axis (kind; first 12 trials) or in a
 					 * coordinate plane (kind's component 0) */
@@ -138,7 +131,7 @@ static void test_fcl_cases(void)
 	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
 	unsigned long long seed = 5;
 	for (int rot = 0; rot < 6; ++rot) {
-		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_rand_rot(&seed);
+		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_test_rotation(&seed);
 		for (int k = 0; k < (int)(sizeof xs / sizeof xs[0]); ++k) {
 			double want = xs[k] - 30.0;
 			mkVec3 c2 = mkMat3_MulVec(R, mkVec3_Make(xs[k], 0, 0));
@@ -185,7 +178,7 @@ static void test_spheres(void)
 		mkShape3 s1 = { r1, r1, r1, 1, 1 }, s2 = { r2, r2, r2, 1, 1 };
 		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
-		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), c1), b2 = mkBody3_Make(s2, mk_test_rotation(&seed), c2);
 		double dist = mkVec3_Length(mkVec3_Sub(c2, c1));
 		mkCollision3 c;
 		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
@@ -260,7 +253,7 @@ static void test_random_pairs(void)
 		draw_shapes(&seed, ell, &s1, &s2);
 		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15));
-		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), c1), b2 = mkBody3_Make(s2, mk_test_rotation(&seed), c2);
 		mkCollision3 c;
 		mkResult r = mkCollide3_Normal(b1, b2, &c);
 		if (r != MK_OK) {
@@ -321,15 +314,8 @@ static void test_boxlike_pairs(void)
 	int sep = 0, stalled = 0;
 	double worst = 0.0;
 	for (int trial = 0; trial < 40; ++trial) {
-		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
-		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
-		s1.eps1 = mk_test_uniform(&seed, 0.05, 0.3);
-		s1.eps2 = mk_test_uniform(&seed, 0.05, 0.3);
-		s2.eps1 = mk_test_uniform(&seed, 0.05, 0.3);
-		s2.eps2 = mk_test_uniform(&seed, 0.05, 0.3);
-		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
-		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15));
-		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkBody3 b1, b2;
+		mk_test_pair3(&seed, 0.05, 0.3, &b1, &b2);
 		mkCollision3 c, ray;
 		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
 		ENSURE(mkCollide3_Ray(b1, b2, &ray) == MK_OK);
@@ -356,7 +342,7 @@ static void test_boxlike_pairs(void)
 			continue;
 		}
 		mkBody3 b3 = b2;
-		b3.t = mkVec3_Sub(b2.t, mkVec3_Scale(mkVec3_Normalize(mkVec3_Sub(c2, c1)), ray.directional));
+		b3.t = mkVec3_Sub(b2.t, mkVec3_Scale(mkVec3_Normalize(mkVec3_Sub(b2.t, b1.t)), ray.directional));
 		mkCollision3 touch;
 		ENSURE(mkCollide3_Normal(b1, b3, &touch) == MK_OK);
 		ENSURE_LE(fabs(touch.distance), 1e-10 * touch.scale);
@@ -381,7 +367,7 @@ static void test_overlaps(void)
 		mkShape3 s1, s2;
 		draw_shapes(&seed, ell, &s1, &s2);
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3));
-		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0)), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), mkVec3_Make(0, 0, 0)), b2 = mkBody3_Make(s2, mk_test_rotation(&seed), c2);
 		mkCollision3 c;
 		mkResult r = mkCollide3_Normal(b1, b2, &c);
 		ENSURE(r == MK_OK);
@@ -430,10 +416,10 @@ static void test_overlap_certificate_hand(void)
 {
 	unsigned long long seed = 777;
 	for (int k = 0; k < 4; ++k) {
-		mkMat3 Q = mk_rand_rot(&seed);
+		mkMat3 Q = mk_test_rotation(&seed);
 		mkShape3 ball = { 8, 8, 8, 1, 1 }, bar = { 6, 1.5, 1, 0.2, 0.2 };
 		mkVec3 u = mkMat3_MulVec(Q, mkVec3_Make(0, 0, 1));
-		mkBody3 b1 = mkBody3_Make(ball, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0));
+		mkBody3 b1 = mkBody3_Make(ball, mk_test_rotation(&seed), mkVec3_Make(0, 0, 0));
 		mkBody3 b2 = mkBody3_Make(bar, Q, mkVec3_Scale(u, 0.05));
 		/* the competitor: f(-u) = -D(-u) (rounding of the rotation: ulps) */
 		ENSURE_NEAR(mkCollide3_Bound(b1, b2, mkVec3_Neg(u)), -9.05, 1e-13);
@@ -484,7 +470,7 @@ static void test_ellipsoid_path(void)
 		double lo = kind == 1 ? -2.0 : 5.0, hi = kind == 1 ? 2.0 : 15.0;
 		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1));
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi));
-		mkMat3 M1 = mk_rand_rot(&seed), M2 = mk_rand_rot(&seed);
+		mkMat3 M1 = mk_test_rotation(&seed), M2 = mk_test_rotation(&seed);
 		if (kind == 2) {
 			mkMat3 S = mkMat3_Identity();
 			S.m[0][1] = mk_test_uniform(&seed, -0.8, 0.8);
@@ -526,9 +512,9 @@ static void test_general_maps(void)
 		S.m[0][1] = mk_test_uniform(&seed, -0.8, 0.8);
 		S.m[1][2] = mk_test_uniform(&seed, -0.8, 0.8);
 		S.m[2][2] = mk_test_uniform(&seed, 0.5, 1.5);
-		mkBody3 b1 = mkBody3_Make(s1, mkMat3_Mul(mk_rand_rot(&seed), S), mkVec3_Make(0, 0, 0));
+		mkBody3 b1 = mkBody3_Make(s1, mkMat3_Mul(mk_test_rotation(&seed), S), mkVec3_Make(0, 0, 0));
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9));
-		mkBody3 b2 = mkBody3_Make(s2, mkMat3_Mul(S, mk_rand_rot(&seed)), c2);
+		mkBody3 b2 = mkBody3_Make(s2, mkMat3_Mul(S, mk_test_rotation(&seed)), c2);
 		mkCollision3 c;
 		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
 		ENSURE_NEAR(mkCollide3_Bound(b1, b2, c.normal), c.distance, 1e-12 * c.scale);
@@ -552,9 +538,9 @@ static void test_near_touching(void)
 		int ell = trial % 2 == 0;
 		mkShape3 s1, s2;
 		draw_shapes(&seed, ell, &s1, &s2);
-		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0));
+		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), mkVec3_Make(0, 0, 0));
 		mkVec3 dir = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)));
-		mkBody3 b2 = mkBody3_Make(s2, mk_rand_rot(&seed), mkVec3_Scale(dir, 30.0));
+		mkBody3 b2 = mkBody3_Make(s2, mk_test_rotation(&seed), mkVec3_Scale(dir, 30.0));
 		mkCollision3 c;
 		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
 		for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k) {
@@ -590,7 +576,7 @@ static void test_warm_start(void)
 	mkShape3 sphere1 = { 1, 1, 1, 1, 1 }, sphere2 = { 2, 2, 2, 1, 1 };
 	mkVec3 u = mkVec3_Normalize(mkVec3_Make(0.3, -0.5, 0.8));
 	mkBody3 s1 = mkBody3_Make(sphere1, mkMat3_Identity(), mkVec3_Make(1, 2, 3));
-	mkBody3 s2 = mkBody3_Make(sphere2, mk_rand_rot(&seed), mkVec3_Add(mkVec3_Make(1, 2, 3), mkVec3_Scale(u, 10)));
+	mkBody3 s2 = mkBody3_Make(sphere2, mk_test_rotation(&seed), mkVec3_Add(mkVec3_Make(1, 2, 3), mkVec3_Scale(u, 10)));
 	mkCollision3 c;
 	ENSURE(mkCollide3_NormalFrom(s1, s2, mkVec3_Neg(u), &c) == MK_OK);
 	ENSURE_NEAR(c.distance, 7.0, 1e-14 * c.scale);
@@ -605,8 +591,8 @@ static void test_warm_start(void)
 		draw_shapes(&seed, ell, &a, &b);
 		double lo = overlap ? -2 : 5, hi = overlap ? 2 : 15;
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi), mk_test_uniform(&seed, lo, hi));
-		mkBody3 b1 = mkBody3_Make(a, mk_rand_rot(&seed), mkVec3_Make(0, 0, 0));
-		mkMat3 R = mk_rand_rot(&seed);
+		mkBody3 b1 = mkBody3_Make(a, mk_test_rotation(&seed), mkVec3_Make(0, 0, 0));
+		mkMat3 R = mk_test_rotation(&seed);
 		mkBody3 b2 = mkBody3_Make(b, R, c2);
 		/* the nearby pose: moved and turned a little */
 		double sc = mkCollide3_Scale(b1, b2);

@@ -10,6 +10,9 @@
  *  - near-touching pairs: a pair moved along the answer's normal to a signed
  *    distance of s * scale, s = 1e-1 ... 1e-6, which is exact (the optimum
  *    normal of a separated pair does not change under that move);
+ *  - box-like pairs (every exponent U(0.05, 0.3)) against the referee: the
+ *    core queries' status and distance, and witness points that are the
+ *    nearest points;
  *  - ASC in closed form against ASC by Eigen's eigenvalues and the referee.
  * Each entry has its own accuracy, set below from what it can do: the exact
  * queries to rounding, the peers to their documented tolerances (measured
@@ -22,6 +25,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "draw3.h"
 #include "ensure.h"
 
 typedef struct mkTol {
@@ -76,14 +80,6 @@ static const mkTol *mkTolOf(const char *name)
 		if (strcmp(mkTols[i].name, name) == 0)
 			return &mkTols[i];
 	return NULL;
-}
-
-static mkMat3 mk_rand_rot(unsigned long long *seed)
-{
-	double q[4];
-	for (int i = 0; i < 4; ++i)
-		q[i] = mk_test_uniform(seed, -1.0, 1.0);
-	return mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
 }
 
 static int mkFails[32], mkWrong[32], mkRuns[32];
@@ -190,7 +186,7 @@ static void test_fcl_cases(void)
 	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
 	unsigned long long seed = 17;
 	for (int rot = 0; rot < 3; ++rot) {
-		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_rand_rot(&seed);
+		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_test_rotation(&seed);
 		for (size_t k = 0; k < sizeof xs / sizeof xs[0]; ++k) {
 			mkBody3 A = mkBody3_Make(s1, R, mkVec3_Make(0, 0, 0));
 			mkBody3 B = mkBody3_Make(s2, R, mkMat3_MulVec(R, mkVec3_Make(xs[k], 0, 0)));
@@ -231,8 +227,8 @@ static void mk_draw(unsigned long long *seed, int ell, int near, mkBody3 *b1, mk
 	mkVec3 c2 = mkVec3_Make(mk_test_uniform(seed, lo, hi), mk_test_uniform(seed, lo, hi), mk_test_uniform(seed, lo, hi));
 	if (near)
 		c2 = mkVec3_Add(c1, c2);
-	*b1 = mkBody3_Make(s1, mk_rand_rot(seed), c1);
-	*b2 = mkBody3_Make(s2, mk_rand_rot(seed), c2);
+	*b1 = mkBody3_Make(s1, mk_test_rotation(seed), c1);
+	*b2 = mkBody3_Make(s2, mk_test_rotation(seed), c2);
 }
 
 /* Random pairs against the referee, for the fast entries (the slow LM and
@@ -295,15 +291,8 @@ static void test_boxlike_pairs(void)
 	double worst = 0.0;
 	int sep = 0;
 	for (int trial = 0; trial < 30; ++trial) {
-		mkShape3 s1 = { mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), mk_test_uniform(&seed, 1, 11), 1, 1 };
-		mkShape3 s2 = { mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
-		s1.eps1 = mk_test_uniform(&seed, 0.05, 0.3);
-		s1.eps2 = mk_test_uniform(&seed, 0.05, 0.3);
-		s2.eps1 = mk_test_uniform(&seed, 0.05, 0.3);
-		s2.eps2 = mk_test_uniform(&seed, 0.05, 0.3);
-		mkVec3 c1 = mkVec3_Make(mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5), mk_test_uniform(&seed, -5, 5));
-		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15));
-		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1), b2 = mkBody3_Make(s2, mk_rand_rot(&seed), c2);
+		mkBody3 b1, b2;
+		mk_test_pair3(&seed, 0.05, 0.3, &b1, &b2);
 		mkColliderScratch s;
 		mkCollision3 ref, mine, ray;
 		ENSURE(mkCollider_Run(referee, b1, b2, &s, &ref) == MK_OK);
