@@ -303,7 +303,8 @@ static void test_random_pairs(void)
  * gauge). Checked: the answer's bound is a true bound and nobody finds a
  * better direction; the witness points lie on the boundaries and their span
  * exceeds the distance by at most 1e-10 of the scale, for separated pairs
- * (the code before the hull iteration left up to 6e-3 of the scale here);
+ * (the code before the hull iteration left up to 4.9e-4 of the scale here,
+ * and failed on one pair);
  * MinkSum (Ray) gives the same status, and B2 moved back along the centre
  * line by Ray's directional gap touches B1, where Ray converged (it ran out
  * of iterations on 2 of these pairs, zigzagging across a kink: its status
