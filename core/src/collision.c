@@ -1059,6 +1059,12 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 
 /* Pair evaluations the witness iteration (mkNormal_Hull) may spend. */
 #define MK_HULL_EVALS 64
+/* The same iteration as the fallback of a separated pair on which Newton
+ * did not converge: its budget of pair evaluations, the bracket it aims
+ * for and the widest it accepts (times the scale). */
+#define MK_GILBERT_EVALS 2000
+#define MK_GILBERT_TOL 1e-12
+#define MK_GILBERT_ACCEPT 1e-10
 
 /* The least-norm point of the convex hull of w[0..k), k <= 4: every subset
  * of one, two or three points is tried (the nearest point of its affine hull
@@ -1114,19 +1120,29 @@ static mkVec3 mkHull_Nearest(const mkVec3 *w, int k, double lam[4])
 	return best;
 }
 
-/* Witness points of a separated answer whose support points leave a gap:
- * near a nearly flat face the normal does not resolve where on the face the
- * nearest points lie (the support point crosses the face within a rounding
- * change of n). Gilbert's distance iteration on B2 - B1 from the answer:
- * the support point of B2 - B1 towards the origin from the current least-
- * norm point z (c2 + s2(-m) - c1 - s1(m), m = z / |z|: one pair evaluation)
- * joins the points kept, and the least-norm point of their hull keeps at
- * most three of them; it stops when |z| is within 1e-13 of the scale of
- * <m, that point> (= f(m), a lower bound of the distance). The weights give
- * a point of each body (their difference is z), each then moved radially
- * onto its boundary; *p1, *p2 are replaced when that pair is closer. The
- * distance and the normal are left as the solver found them. */
-static void mkNormal_Hull(const mkPairCtx *c, const mkNormalState *st, mkVec3 *p1, mkVec3 *p2)
+/* Gilbert's distance iteration on B2 - B1 from the state st of a
+ * separated pair: the support point of B2 - B1 towards the origin from the
+ * current least-norm point z (c2 + s2(-m) - c1 - s1(m), m = z / |z|: one
+ * pair evaluation) joins the points kept, and the least-norm point of their
+ * hull keeps at most three of them. Every z is a point of B2 - B1 (a convex
+ * combination of differences of points of the bodies), so |z| >= sd, and
+ * every f(m) <= sd. At most budget evaluations; it stops when |z| is within
+ * tol of f(m) (improve = 0) or of the largest f met (improve = 1, which then
+ * also moves st to the evaluated state of largest f). The weights give a
+ * point of each body (their difference is z), each then moved radially onto
+ * its boundary; *p1, *p2 are replaced when that pair is closer. Returns the
+ * least |z| (the upper bound of sd); *evals receives the evaluations made.
+ *
+ * Two uses. Witness points of a separated answer whose support points leave
+ * a gap (improve = 0): near a nearly flat face the normal does not resolve
+ * where on the face the nearest points lie (the support point crosses the
+ * face within a rounding change of n); the distance and the normal are left
+ * as the solver found them. And the fallback of a separated pair on which
+ * Newton did not converge (improve = 1): on a ridge of a nearly kinked
+ * support function, where no smooth model fits, the primal iteration still
+ * brackets sd (mkCollide3_NormalAt). */
+static double mkNormal_Hull(const mkPairCtx *c, mkNormalState *st, int budget, double tol, int improve, mkVec3 *p1,
+	mkVec3 *p2, int *evals)
 {
 	const mkVec3 c1 = c->b1->t, c2 = c->b2->t;
 	mkVec3 a[4], b[4], w[4];
@@ -1136,16 +1152,25 @@ static void mkNormal_Hull(const mkPairCtx *c, const mkNormalState *st, mkVec3 *p
 	b[0] = mkVec3_Add(c2, st->e.a2.s);
 	w[0] = mkVec3_Sub(b[0], a[0]);
 	mkVec3 z = w[0];
-	double tol = 1e-13 * c->scale;
-	for (int it = 0; it < MK_HULL_EVALS; ++it) {
+	double upper = mkVec3_LengthInline(z);
+	*evals = 0;
+	for (int it = 0; it < budget; ++it) {
 		double zl = mkVec3_LengthInline(z);
 		if (!(zl > 0.0))
 			break;
+		upper = fmin(upper, zl);
 		mkVec3 m = mkVec3_Scale(z, 1.0 / zl);
-		mkPairAt e;
-		mkPair_Eval(c, m, &e);
-		mkVec3 an = mkVec3_Add(c1, e.a1.s), bn = mkVec3_Add(c2, e.a2.s), wn = mkVec3_Sub(bn, an);
-		if (!(zl - mkVec3_Dot(m, wn) > tol))
+		mkNormalState ev;
+		if (improve) {
+			mkNormal_Eval(c, m, &ev);
+			if (ev.f > st->f)
+				*st = ev;
+		} else
+			mkPair_Eval(c, m, &ev.e);
+		*evals += 1;
+		const mkPairAt *e = &ev.e;
+		mkVec3 an = mkVec3_Add(c1, e->a1.s), bn = mkVec3_Add(c2, e->a2.s), wn = mkVec3_Sub(bn, an);
+		if (!(zl - (improve ? st->f : mkVec3_Dot(m, wn)) > tol))
 			break;
 		a[k] = an;
 		b[k] = bn;
@@ -1176,6 +1201,7 @@ static void mkNormal_Hull(const mkPairCtx *c, const mkNormalState *st, mkVec3 *p
 		*p1 = q1;
 		*p2 = q2;
 	}
+	return fmin(upper, mkVec3_LengthInline(z));
 }
 
 /* ---- the global certificate of an overlap --------------------------------- */
@@ -1420,6 +1446,7 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 	int iters = 0;
 	double res = NAN, res2 = NAN;
 	int ok = mkNormal_Solve(&c, start ? *start : n0, &best, &iters, &res);
+	int stalled = ok == 2;
 	out->restarts = 0;
 	if (start && !(ok && best.f > 0.0)) {
 		/* The given start did not end at a separation (an overlap, or a start
@@ -1432,6 +1459,27 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 			best = st;
 			res = res2;
 			ok = 1;
+			stalled = ok2 == 2;
+		}
+	}
+	/* A separated pair (f > 0 bounds sd from below) on which Newton did not
+	 * converge, or stopped on a stalled value, on a ridge of a nearly kinked
+	 * support function: Gilbert's iteration brackets sd between the largest
+	 * f it meets and the least |z| (mkNormal_Hull), and the answer stands
+	 * when the bracket is within MK_GILBERT_ACCEPT of the scale; the
+	 * residual reported is then the bracket's width. */
+	int gilbert = 0;
+	mkVec3 gp1 = mkVec3_Make(NAN, NAN, NAN), gp2 = gp1;
+	if ((!ok || stalled) && isfinite(best.f) && best.f > 0.0) {
+		gp1 = mkVec3_Add(b1.t, best.e.a1.s);
+		gp2 = mkVec3_Add(b2.t, best.e.a2.s);
+		int evals;
+		double up = mkNormal_Hull(&c, &best, MK_GILBERT_EVALS, MK_GILBERT_TOL * c.scale, 1, &gp1, &gp2, &evals);
+		iters += evals;
+		if (up - best.f <= MK_GILBERT_ACCEPT * c.scale) {
+			ok = 1;
+			gilbert = 1;
+			res = up - best.f;
 		}
 	}
 	if (!(ok && best.f > 0.0)) {
@@ -1526,16 +1574,29 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 				best = st;
 				res = res2;
 				ok = 1;
+				stalled = ok2 == 2;
 			}
 		}
 	}
 	double upper = NAN;
 	int certified = 1;
-	if (ok && best.f <= 0.0) {
-		/* Overlap (or touching): the depth certified global, or said not to be. */
+	if (isfinite(best.f) && best.f <= 0.0 && mkIsFinite3(best.n)) {
+		/* Overlap (or touching): the depth certified global, or said not to
+		 * be. When no start converged (a ridge of a nearly kinked support
+		 * function), the branch and bound runs from the best state met at
+		 * the tighter MK_GILBERT_ACCEPT (its restarts climb the ridge), and
+		 * the answer stands only when it completes; the residual reported
+		 * is then the width of its bracket. */
 		int evals = 0;
-		certified = mkNormal_Certify(&c, &best, &res, &iters, MK_COLLIDE3_GLOBAL_TOL * c.scale, &upper, &evals) == 1;
+		int done = mkNormal_Certify(&c, &best, &res, &iters,
+			(ok ? MK_COLLIDE3_GLOBAL_TOL : MK_GILBERT_ACCEPT) * c.scale, &upper, &evals) == 1;
 		out->cert_evals = evals;
+		if (ok)
+			certified = done;
+		else if (done) {
+			ok = 1;
+			res = upper - best.f;
+		}
 	}
 	out->iterations = iters;
 	out->normal = best.n;
@@ -1564,8 +1625,17 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 		}
 		if (span - best.f > MK_COLLIDE3_TOUCH_TOL * c.scale) {
 			/* still apart: where on the face, by the hull of support points */
-			mkNormal_Hull(&c, &best, &out->p1, &out->p2);
+			int evals;
+			mkNormal_Hull(&c, &best, MK_HULL_EVALS, 1e-13 * c.scale, 0, &out->p1, &out->p2, &evals);
 			span = mkVec3_LengthInline(mkVec3_Sub(out->p2, out->p1));
+		}
+	}
+	if (gilbert) {
+		double gs = mkVec3_LengthInline(mkVec3_Sub(gp2, gp1));
+		if (mkIsFinite3(gp1) && mkIsFinite3(gp2) && gs < span) {
+			out->p1 = gp1;
+			out->p2 = gp2;
+			span = gs;
 		}
 	}
 	if (best.f > 0.0) {

@@ -12,7 +12,9 @@
  *    normal of a separated pair does not change under that move);
  *  - box-like pairs (every exponent U(0.05, 0.3)) against the referee: the
  *    core queries' status and distance, and witness points that are the
- *    nearest points;
+ *    nearest points; six box-like pairs written exactly on which Newton
+ *    alone did not converge, and pairs with every exponent 1e-6 or
+ *    1.999999, against the referee;
  *  - ASC in closed form against ASC by Eigen's eigenvalues and the referee.
  * Each entry has its own accuracy, set below from what it can do: the exact
  * queries to rounding, the peers to their documented tolerances (measured
@@ -395,6 +397,154 @@ static void test_deep_pairs(void)
 	}
 }
 
+/* Pairs on which no Newton start of minksum-normal converged before the
+ * fallbacks (docs/collide.md, "Sixth pass"): box-like pairs of
+ * mink_bench_colliders (KIND 4; its seed and pair index), bodies written
+ * exactly. The first four are separated (Newton stalls on a ridge of a nearly
+ * kinked support function, and Gilbert's iteration brackets sd); the last
+ * two overlap (no start converged, and the branch and bound at 1e-10 of the
+ * scale certifies the depth). Reference: the referee, certain on all six.
+ * The code before returned MK_ERR_CONVERGENCE on every one. */
+static const struct { unsigned long long seed; int trial; mkHexBody b1, b2; } mkRidgePairs[] = {
+	{ 2022, 294,
+	  { { 0x1.495a79e4235c6p+1, 0x1.351de0032c528p+3, 0x1.33c377fc39c7ep+3, 0x1.2d096421343d8p-2, 0x1.4395eef1806aap-3 },
+	    { -0x1.9fa011afc47dp-1, -0x1.e9e51c1383202p+0, 0x1.6b45f7d9afc4p-1 },
+	    { -0x1.c5173219d9f96p-1, 0x1.58023ce63f40cp-2, 0x1.4a41c11392f5cp-2,
+	      0x1.b05a76d02d0bp-2, 0x1.bdefcfd4c6f83p-1, 0x1.014f39a9efdbcp-2,
+	      -0x1.926751778c09p-3, 0x1.6f252b4f1e3f6p-2, -0x1.d3408c315eb7ap-1 } },
+	  { { 0x1.049b7119b4ecap+1, 0x1.32f698e5f760cp+2, 0x1.0601d88d17cdp+2, 0x1.0e6f279584a16p-2, 0x1.b524d0005991cp-3 },
+	    { 0x1.388c5dd6e4be8p+3, 0x1.28cc0260c5d5cp+3, 0x1.169187de4b9b6p+3 },
+	    { -0x1.6399dc578b00ep-1, 0x1.357d87c4c086ep-2, 0x1.4e48b975db22ep-1,
+	      0x1.4b50b70f94b6ap-1, -0x1.12e1d0d9639dp-3, 0x1.8041334e84d7dp-1,
+	      0x1.4201bc8f4ab49p-2, 0x1.e33164b4539d5p-1, -0x1.a3416bff72aep-4 } } },
+	{ 2022, 370,
+	  { { 0x1.44256a08a2dfcp+3, 0x1.03c7813259515p+3, 0x1.4afae100f14c8p+3, 0x1.b71b0407c05c2p-5, 0x1.ff09d882202d2p-3 },
+	    { -0x1.5f25d9482238p+1, -0x1.0cd4e885e926p+2, 0x1.eb34557001eb8p+0 },
+	    { 0x1.4a1323fdea95p-1, 0x1.5cc318b5d8006p-2, 0x1.5e687ef5e320cp-1,
+	      0x1.869a6297851dfp-1, -0x1.d606d1b53c96p-3, -0x1.3575bbf25341bp-1,
+	      -0x1.8fa52afe207dp-5, 0x1.d2d3b55fdd271p-1, -0x1.a193c16414d68p-2 } },
+	  { { 0x1.f23c6fd76d1c5p+0, 0x1.60f2b3aad614cp+1, 0x1.a168f65e314d2p+1, 0x1.d01ec672a906cp-3, 0x1.c6f828a976fd6p-5 },
+	    { 0x1.0d3c2345c66dfp+3, 0x1.8b75468abc20cp+2, 0x1.7031a169d707ap+3 },
+	    { 0x1.49109a5a3c18p-8, 0x1.6774ca8f975p-8, 0x1.fffc6048444c5p-1,
+	      0x1.4b8045cae9d84p-1, -0x1.86317ca3ae6aep-1, 0x1.e713b00608cp-11,
+	      0x1.862f649bc40f7p-1, 0x1.4b7d509b3c92cp-1, -0x1.e38382eae45p-8 } } },
+	{ 2022, 1308,
+	  { { 0x1.eabff6a1a379dp+2, 0x1.d85b78e85de5ep+1, 0x1.0d6991b6243dcp+2, 0x1.670f91697fb35p-4, 0x1.1d3cc7fded6fap-3 },
+	    { -0x1.1a3f746d5177ap+1, -0x1.6cf4ed3d68084p+1, 0x1.463769a53b668p+0 },
+	    { 0x1.2b5c2f5519327p-1, -0x1.a361b8d5e6132p-4, 0x1.9c0afea4ee955p-1,
+	      0x1.104fdf6f7554ep-2, 0x1.ec3a49ef9033fp-1, -0x1.225f743437d2ep-4,
+	      -0x1.886a174baafdbp-1, 0x1.0597e0613f7c6p-2, 0x1.2dbd7f9479a2dp-1 } },
+	  { { 0x1.56fa4b7047008p+2, 0x1.e5212153e03fbp+1, 0x1.08bd50b11872dp+0, 0x1.e10e39786032p-3, 0x1.d2896f26b2a96p-5 },
+	    { 0x1.8673b883d1d56p+2, 0x1.7af082c5fc5d1p+3, 0x1.b597a750996a1p+3 },
+	    { 0x1.b6eb839ee57fp-3, 0x1.4b73c8ee0555bp-1, 0x1.767d6c5f4a748p-1,
+	      0x1.7844d3bc50a53p-1, -0x1.3345aefdd513cp-1, 0x1.436a995d128bap-2,
+	      0x1.496e73221481p-1, 0x1.e11ca8c88f05ep-2, -0x1.3570130cc5616p-1 } } },
+	{ 2022, 1454,
+	  { { 0x1.2ce59e7b27775p+3, 0x1.a28991bbdfb09p+2, 0x1.643cb4e9c28fdp+2, 0x1.ff61c6b2da4cap-5, 0x1.d237f34cff5bfp-4 },
+	    { -0x1.9185a81009848p+1, 0x1.31e896cad931p+2, 0x1.53a992a0de7d4p+1 },
+	    { 0x1.5dacb6b404adcp-3, 0x1.7c7eb638b5b7ap-1, 0x1.4b3f9c750267ap-1,
+	      0x1.e16e7c0b8fabp-1, 0x1.2c4e5450fdde8p-4, -0x1.545811e85e3b6p-2,
+	      -0x1.2d8014d26daf9p-2, 0x1.5486d84f28b26p-1, -0x1.5f5e60091cd12p-1 } },
+	  { { 0x1.50e3163af268bp+2, 0x1.32b54efe386dap+0, 0x1.f7577b0be258p+0, 0x1.514d8e70b031ap-3, 0x1.b1c0101c5153ep-5 },
+	    { 0x1.319d1bede6c7cp+3, 0x1.dc16b4239ce12p+3, 0x1.173442c055718p+3 },
+	    { -0x1.694e2536976b4p-2, -0x1.18c5860ef04e8p-1, 0x1.842b85317f989p-1,
+	      0x1.deded47ffab14p-1, -0x1.d74a6a6a7659p-3, 0x1.1347fa23f73cap-2,
+	      0x1.bb1a9ee387cep-6, 0x1.9b9e2248e3cfdp-1, 0x1.302d1728f7c0ep-1 } } },
+	{ 7, 3757,
+	  { { 0x1.303997ea57acap+2, 0x1.929c4e425a238p+2, 0x1.4a35e42b853a9p+3, 0x1.aa5fea86ada43p-4, 0x1.ce300a9db31p-3 },
+	    { 0x1.220b3dd155a9p+0, 0x1.c95e6dc50dp-8, 0x1.27ee20b2034bcp+1 },
+	    { -0x1.5454937a53be4p-2, 0x1.cbe3e657aba54p-2, 0x1.a8a20210367c7p-1,
+	      0x1.4000a9912e9f6p-1, -0x1.1b7b3e73ada58p-1, 0x1.19bee4d13b165p-1,
+	      0x1.69a4c85d85df5p-1, 0x1.6709752211b27p-1, -0x1.8c0173b4fd1ap-4 } },
+	  { { 0x1.2231d93863fccp+1, 0x1.7517fe2ec5774p+2, 0x1.7d12ded1610dp+1, 0x1.78b89ca180c68p-3, 0x1.434de01f40ad1p-4 },
+	    { 0x1.0e9d8f806130bp+3, 0x1.4352c302db55cp+3, 0x1.5d542d3f1d838p+2 },
+	    { -0x1.2e8abe6ac0308p-2, -0x1.30e65a87599bap-1, 0x1.7e7cf7d2dde64p-1,
+	      0x1.dc7aa24d9d83ep-1, -0x1.56b78e4f6f2p-9, 0x1.76c0bdbe537c6p-2,
+	      -0x1.ba55fc9c4fefep-3, 0x1.9b501abc218dbp-1, 0x1.1c2471467289fp-1 } } },
+	{ 7, 8568,
+	  { { 0x1.3d06fa36c8cecp+3, 0x1.5a39a72cb6bdcp+3, 0x1.e42af5508efaap+1, 0x1.5792283fa0e43p-4, 0x1.11e91e314fa79p-4 },
+	    { 0x1.32df6b4f51538p-1, 0x1.ce28ce6c6f9fp+1, 0x1.4938961cbf09p+1 },
+	    { 0x1.b8e4a0b275f5fp-1, 0x1.6e2911b68c7f7p-2, 0x1.72134639ef4cp-2,
+	      0x1.037955a6e2334p-1, -0x1.1818c5a7b20ep-1, -0x1.551ecc7710307p-1,
+	      -0x1.4bff76083ae94p-5, 0x1.8385043c82337p-1, -0x1.4dfaa30359b92p-1 } },
+	  { { 0x1.92a68be332419p+1, 0x1.1cd80b8835a44p+2, 0x1.885149f4328e8p+1, 0x1.f0b3b9ac2f806p-5, 0x1.bc58918a04696p-5 },
+	    { 0x1.6baa769d3bf75p+3, 0x1.69e1a39a4d71cp+3, 0x1.791f2545e7aacp+2 },
+	    { 0x1.8990cb4d8272cp-3, 0x1.a4f891bf42e7cp-1, 0x1.124fa3460d3ecp-1,
+	      0x1.e3b0c298356a8p-1, -0x1.3612317ab23ep-2, 0x1.01ba9c6b7b7cdp-3,
+	      0x1.101411334ace8p-2, 0x1.ed8614547d6eep-2, -0x1.ab7ce7d654424p-1 } } },
+};
+
+static void test_ridge_pairs(void)
+{
+	const mkCollider *referee = mkColliders_Find("referee");
+	for (size_t k = 0; k < sizeof mkRidgePairs / sizeof mkRidgePairs[0]; ++k) {
+		mkBody3 b1 = mk_hex_body(&mkRidgePairs[k].b1), b2 = mk_hex_body(&mkRidgePairs[k].b2);
+		mkColliderScratch s;
+		mkCollision3 ref, mine;
+		ENSURE(mkCollider_Run(referee, b1, b2, &s, &ref) == MK_OK);
+		ENSURE(mkCollide3_Normal(b1, b2, &mine) == MK_OK);
+		ENSURE(ref.residual <= 1e-10);
+		ENSURE(mine.status == ref.status);
+		ENSURE_NEAR(mine.distance, ref.distance, 1e-10 * mine.scale);
+		ENSURE(mine.certified == 1);
+		ENSURE_LE(mine.gap, 1e-10 * mine.scale);
+		ENSURE_LE(ref.distance, mine.bound + mine.gap + 1e-13 * mine.scale);
+		if (ref.status == MK_CONTACT_SEPARATED)
+			ENSURE_LE(mine.bound, ref.distance + ref.gap + 1e-13 * mine.scale);
+		printf("ridge pair (seed %llu, %d): sd %.17g, referee %.17g (difference %.2g of the scale), gap %.2g, "
+			"%d iterations\n", mkRidgePairs[k].seed, mkRidgePairs[k].trial, mine.distance, ref.distance,
+			fabs(mine.distance - ref.distance) / mine.scale, mine.gap / mine.scale, mine.iterations);
+	}
+}
+
+/* Pairs at the ends of the exponent range: every exponent 1e-6 or 1.999999
+ * (box-like and needle-like faces, nearly kinked support functions), the
+ * paper's sizes, B2's centre drawn as usual or pulled towards B1's (then
+ * mostly overlapping). Against the referee where it is certain: no failure,
+ * the same status outside the margin, the distance within 1e-10 of the
+ * scale on separated pairs, and within the answer's certified gap (at most
+ * MK_COLLIDE3_GLOBAL_TOL of the scale) on overlaps. The code before the
+ * fallbacks failed 26 of 600 such pairs and was off by up to 7.9e-3 of the
+ * scale (measured). */
+static void test_extreme_pairs(void)
+{
+	const mkCollider *referee = mkColliders_Find("referee");
+	unsigned long long seed = 57;
+	int certain = 0, overlaps = 0;
+	double worst = 0.0;
+	for (int trial = 0; trial < 60; ++trial) {
+		mkBody3 p1, p2;
+		mk_test_pair3(&seed, 0.5, 0.5, &p1, &p2);
+		mkShape3 s1 = p1.shape, s2 = p2.shape;
+		double *e[4] = { &s1.eps1, &s1.eps2, &s2.eps1, &s2.eps2 };
+		for (int i = 0; i < 4; ++i)
+			*e[i] = mk_test_unit(&seed) < 0.5 ? 1e-6 : 1.999999;
+		mkVec3 c2 = trial % 2 ? mkVec3_Add(p1.t, mkVec3_Scale(mkVec3_Sub(p2.t, p1.t), 0.3)) : p2.t;
+		mkBody3 b1 = mkBody3_Make(s1, p1.M, p1.t), b2 = mkBody3_Make(s2, p2.M, c2);
+		mkColliderScratch s;
+		mkCollision3 ref, mine;
+		ENSURE(mkCollider_Run(referee, b1, b2, &s, &ref) == MK_OK);
+		ENSURE(mkCollide3_Normal(b1, b2, &mine) == MK_OK);
+		if (!(ref.residual <= 1e-10) || fabs(ref.distance) <= 1e-9 * ref.scale)
+			continue;
+		++certain;
+		ENSURE(mine.status == ref.status);
+		ENSURE(mine.certified == 1);
+		double err = fabs(mine.distance - ref.distance) / mine.scale;
+		if (ref.status == MK_CONTACT_SEPARATED)
+			ENSURE_LE(err, 1e-10);
+		else {
+			++overlaps;
+			ENSURE_LE(mine.gap, (MK_COLLIDE3_GLOBAL_TOL + 1e-14) * mine.scale);
+			ENSURE_LE(err * mine.scale, mine.gap + 1e-13 * mine.scale);
+		}
+		worst = err > worst ? err : worst;
+	}
+	printf("extreme exponents: %d pairs certain (%d overlapping), largest difference %.2g of the scale\n", certain,
+		overlaps, worst);
+	ENSURE(certain >= 40 && overlaps >= 10);
+}
+
 static void test_near_touching(void)
 {
 	unsigned long long seed = 99;
@@ -428,6 +578,8 @@ int main(void)
 	test_random_pairs();
 	test_boxlike_pairs();
 	test_deep_pairs();
+	test_ridge_pairs();
+	test_extreme_pairs();
 	test_near_touching();
 	printf("%-18s %6s %8s %6s\n", "entry", "runs", "no-verdict", "wrong");
 	for (int i = 0; i < mkColliders_Count(); ++i)

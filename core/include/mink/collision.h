@@ -27,6 +27,12 @@
  *                     MK_COLLIDE3_GLOBAL_TOL * scale (restarting Newton from
  *                     any better direction it meets), or says it could not
  *                     within its budget (certified 0, gap wider).
+ *                     Where the support function is nearly kinked (exponents
+ *                     near 0 or 2) Newton can stall on a ridge; a separated
+ *                     pair is then answered by Gilbert's distance iteration
+ *                     on B2 - B1 (a two-sided bracket of sd), an overlap on
+ *                     which no start converged by the branch and bound at
+ *                     1e-10 of the scale.
  *  mkCollide3_Ray     finds the boundary point of K on the centre line (the
  *                     paper's MinkSum (Ray)): minimises the convex function
  *                     H(u + s) = h1(u + s) + h2(-(u + s)) over s orthogonal to
@@ -73,16 +79,22 @@ typedef struct mkCollision3 {
 	double bound;       /* f(n) at the answer: a lower bound of sd */
 	double gap;         /* certificate width: separated (Normal), |p2 - p1| -
 	                       f(n) >= 0 (up to rounding, a few ulps of the
-	                       scale) and sd lies in [f(n), |p2 - p1|]; NaN
-	                       when no two-sided bound is known (overlap, Ray) */
+	                       scale; up to about 1e-10 of it when Gilbert's
+	                       iteration answered) and sd lies in [f(n),
+	                       |p2 - p1|]; overlaps: see certified; NaN when no
+	                       two-sided bound is known (Ray) */
 	double residual;    /* optimality residual at the answer, relative to
 	                       scale: |tangential part of d - x(n)| / scale
 	                       (Normal), |x(n) off the centre line| / scale (Ray);
 	                       a Ray whose iteration stalled but whose status is
 	                       certain by bounds reports the width of its bracket
-	                       of the boundary distance instead */
+	                       of the boundary distance instead, and a Normal
+	                       answered by a fallback (Gilbert's iteration, or
+	                       the branch and bound when no start converged) the
+	                       width of its bracket of sd */
 	double scale;       /* |d| + r1 + r2, r the bodies' circumradius bounds */
-	int iterations;     /* Newton iterations (all restarts) */
+	int iterations;     /* Newton iterations (all restarts), and the pair
+	                       evaluations of Gilbert's iteration when it ran */
 	int restarts;       /* extra starts tried (Normal, overlap only) */
 	int certified;      /* Normal: 1 when sd is certified to lie in
 	                       [bound, bound + gap]: always for separated bodies,
@@ -118,7 +130,9 @@ MK_API mkContact mkContact_FromDistance(double sd, double scale);
 
 /* MinkSum (Normal): signed distance, witnesses, status. Returns MK_OK, or
  * MK_ERR_CONVERGENCE when no start converged within MK_COLLIDE3_MAX_ITER
- * iterations or the iterate became non-finite (a degenerate pose; coincident
+ * iterations and the fallback (Gilbert's iteration on a separated pair, the
+ * branch and bound on an overlap) did not bracket sd within 1e-10 of the
+ * scale, or the iterate became non-finite (a degenerate pose; coincident
  * centres are fine), and MK_ERR_UNSUPPORTED when the scale is not finite;
  * the answer then has status MK_CONTACT_UNKNOWN, distance NaN, and the last
  * iterate's numbers (bound, residual, witnesses) for diagnosis. out must not
