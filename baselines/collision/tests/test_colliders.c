@@ -377,15 +377,21 @@ static mkBody3 mk_hex_body(const mkHexBody *h)
 	return mkBody3_Make(s, M, mkVec3_Make(h->t[0], h->t[1], h->t[2]));
 }
 
+/* The referee's and minksum-normal's answers on a pair written exactly;
+ * both must give one. */
+static void mk_hex_answers(const mkHexBody *h1, const mkHexBody *h2, mkCollision3 *ref, mkCollision3 *mine)
+{
+	mkBody3 b1 = mk_hex_body(h1), b2 = mk_hex_body(h2);
+	mkColliderScratch s;
+	ENSURE(mkCollider_Run(mkColliders_Find("referee"), b1, b2, &s, ref) == MK_OK);
+	ENSURE(mkCollide3_Normal(b1, b2, mine) == MK_OK);
+}
+
 static void test_deep_pairs(void)
 {
-	const mkCollider *referee = mkColliders_Find("referee");
 	for (size_t k = 0; k < sizeof mkDeepPairs / sizeof mkDeepPairs[0]; ++k) {
-		mkBody3 b1 = mk_hex_body(&mkDeepPairs[k].b1), b2 = mk_hex_body(&mkDeepPairs[k].b2);
-		mkColliderScratch s;
 		mkCollision3 ref, mine;
-		ENSURE(mkCollider_Run(referee, b1, b2, &s, &ref) == MK_OK);
-		ENSURE(mkCollide3_Normal(b1, b2, &mine) == MK_OK);
+		mk_hex_answers(&mkDeepPairs[k].b1, &mkDeepPairs[k].b2, &ref, &mine);
 		ENSURE(ref.status == MK_CONTACT_OVERLAPPING && ref.residual == 0.0);
 		ENSURE_NEAR(mine.distance, ref.distance, 1e-10 * mine.scale);
 		ENSURE(mine.certified == 1);
@@ -476,13 +482,9 @@ static const struct { unsigned long long seed; int trial; mkHexBody b1, b2; } mk
 
 static void test_ridge_pairs(void)
 {
-	const mkCollider *referee = mkColliders_Find("referee");
 	for (size_t k = 0; k < sizeof mkRidgePairs / sizeof mkRidgePairs[0]; ++k) {
-		mkBody3 b1 = mk_hex_body(&mkRidgePairs[k].b1), b2 = mk_hex_body(&mkRidgePairs[k].b2);
-		mkColliderScratch s;
 		mkCollision3 ref, mine;
-		ENSURE(mkCollider_Run(referee, b1, b2, &s, &ref) == MK_OK);
-		ENSURE(mkCollide3_Normal(b1, b2, &mine) == MK_OK);
+		mk_hex_answers(&mkRidgePairs[k].b1, &mkRidgePairs[k].b2, &ref, &mine);
 		ENSURE(ref.residual <= 1e-10);
 		ENSURE(mine.status == ref.status);
 		ENSURE_NEAR(mine.distance, ref.distance, 1e-10 * mine.scale);
