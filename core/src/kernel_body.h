@@ -152,14 +152,40 @@ static inline void KFN(se_surface)(const KSHAPE2 *s, const KV *u1, const KV *u2,
 	}
 }
 
-/* Theorem 1's f~(d): the support point in direction d (any nonzero d). */
+/* The lanes of an ellipse or ellipsoid support point whose |A d|^2 = ss
+ * left the range where 1/sqrt is exact enough (below KTINY or above its
+ * reciprocal): v = A d is divided by its largest component first, and a
+ * zero d (B2's direction, B1's gradient through D2, can round to exactly 0
+ * when the two maps together are close to singular) takes the convention of
+ * the superquadric support map, the point (a, 0, 0). Other lanes keep x. */
+static inline void KFN(ell_fix)(KS a, KS b, KS c, KV ss, KV v1, KV v2, KV v3, KV *x1, KV *x2, KV *x3)
+{
+	KV m = KFN(kmax)(KFN(kmax)(KABS(v1), KABS(v2)), KABS(v3));
+	KM zero = m == 0.0;
+	KV md = KSEL(zero, KSPLAT(1.0), m);
+	KV w1 = v1 / md, w2 = v2 / md, w3 = v3 / md;
+	KV inv = KRSQRT(KSEL(zero, KSPLAT(1.0), w1 * w1 + w2 * w2 + w3 * w3));
+	KV f1 = KSEL(zero, KSPLAT(a), a * w1 * inv), f2 = KSEL(zero, KSPLAT(0.0), b * w2 * inv);
+	KV f3 = KSEL(zero, KSPLAT(0.0), c * w3 * inv);
+	KM lo = ss >= KSPLAT(KTINY), hi = ss <= KSPLAT(1.0 / KTINY);
+	*x1 = KSEL(lo, *x1, f1); *x2 = KSEL(lo, *x2, f2); *x3 = KSEL(lo, *x3, f3);
+	*x1 = KSEL(hi, *x1, f1); *x2 = KSEL(hi, *x2, f2); *x3 = KSEL(hi, *x3, f3);
+}
+
+/* Theorem 1's f~(d): the support point in direction d (a zero d gives the
+ * point (a, 0), as pair_dual's convention for equal components does). */
 static inline void KFN(se_support)(const KSHAPE2 *s, const KV *d1, const KV *d2, KV *x1, KV *x2)
 {
-	if (s->ellipse) { /* A^2 d / |A d| */
+	if (s->ellipse) { /* A^2 d / |A d|; ell_fix for lanes out of range */
 		KFOR(j) {
 			KV v1 = s->a * d1[j], v2 = s->b * d2[j];
-			KV inv = KRSQRT(v1 * v1 + v2 * v2);
+			KV ss = v1 * v1 + v2 * v2;
+			KV inv = KRSQRT(ss);
 			x1[j] = s->a * v1 * inv; x2[j] = s->b * v2 * inv;
+			if (!KALL(ss >= KSPLAT(KTINY)) || !KALL(ss <= KSPLAT(1.0 / KTINY))) {
+				KV x3 = KSPLAT(0.0);
+				KFN(ell_fix)(s->a, s->b, KC(1.0), ss, v1, v2, KSPLAT(0.0), &x1[j], &x2[j], &x3);
+			}
 		}
 		return;
 	}
@@ -317,12 +343,16 @@ static inline void KFN(ell_surface3)(const KSHAPE3 *s, KV u1, KV u2, KV u3,
 	*m1 = KDIV_AXIS(u1, s, a); *m2 = KDIV_AXIS(u2, s, b); *m3 = KDIV_AXIS(u3, s, c);
 }
 
-/* An ellipsoid's support point A^2 d / |A d| on one lane vector. */
+/* An ellipsoid's support point A^2 d / |A d| on one lane vector (any d:
+ * ell_fix for the rare lanes out of range). */
 static inline void KFN(ell_support3)(const KSHAPE3 *s, KV d1, KV d2, KV d3, KV *x1, KV *x2, KV *x3)
 {
 	KV v1 = s->a * d1, v2 = s->b * d2, v3 = s->c * d3;
-	KV inv = KRSQRT(v1 * v1 + v2 * v2 + v3 * v3);
+	KV ss = v1 * v1 + v2 * v2 + v3 * v3;
+	KV inv = KRSQRT(ss);
 	*x1 = s->a * v1 * inv; *x2 = s->b * v2 * inv; *x3 = s->c * v3 * inv;
+	if (!KALL(ss >= KSPLAT(KTINY)) || !KALL(ss <= KSPLAT(1.0 / KTINY)))
+		KFN(ell_fix)(s->a, s->b, s->c, ss, v1, v2, v3, x1, x2, x3);
 }
 
 static inline void KFN(sq_surface)(const KSHAPE3 *s, const KV *u1, const KV *u2, const KV *u3,
@@ -400,9 +430,16 @@ static inline void KFN(sq_gradinv_logs)(const KSHAPE3 *s, const KV *m1, const KV
 	KFOR(j) al[j] = KLOG(q[j]) * s->inv2me2;  /* log(w_min / w_max) in the inner pair */
 	KFOR(j) L12[j] = KEXP(2.0 * al[j]);
 	KFOR(j) L12[j] = KLOG1P1(L12[j]);
+	/* A zero direction (possible: B2's direction is B1's gradient through
+	 * D2, which can round to 0 when the two maps together are close to
+	 * singular) takes sq_support's convention, the larger of two equal
+	 * components being the first: P12 counts as the larger, t12 = 0,
+	 * t3 = -inf (the point (a, 0, 0)); for P > 0 both are unchanged. */
+	KFOR(j) P[j] = KSEL(P[j] > 0.0, P[j], KSPLAT(1.0));
 	KFOR(j) t12[j] = KLOG(P12[j] / P[j]);
 	KFOR(j) t3[j] = KLOG(p3[j] / P[j]);
 	KFOR(j) {
+		t12[j] = KSEL(P12[j] >= p3[j], KSPLAT(0.0), t12[j]);
 		D[j] = (t12[j] - t3[j] + KC(0.5 * s->twome2) * L12[j]) * s->inv2me1;
 		le[j] = KC(-2.0) * KABS(D[j]);
 	}

@@ -478,6 +478,48 @@ static void test_spaced(void)
 	ENSURE(mkSample3_Spaced(1, 0.5, 0.5, ux, uy, uz) == MK_ERR_ARGUMENT);
 }
 
+/* A zero direction for B2 (found by core.fuzz): B1's gradient at the
+ * surface parameter (0, 1, 1)/sqrt 2 goes through D2 = M2^T M1^-T, and with
+ * these two maps (each within body.h's condition bound, together beyond
+ * 1/eps) every component cancels to exactly 0. The gradient form took
+ * log(0/0) there and returned NaN; it must return a finite point, and the
+ * same as the normal form (Theorem 1's support map, another code path),
+ * whose convention for a zero direction is the point (a, 0, 0). */
+static void test_zero_direction(void)
+{
+	mkShape3 s1 = {6.8437497025908669e-08, 1, 1, 1, 1}, s2 = {1.0000000000000001e-09, 1, 1, 1.9999990000000001, 1};
+	mkMat3 M1 = {{{-7.9607832432341059, -614094622.14093494, -614094622.14093494},
+		{-614094622.14093494, -614094622.14093494, -614094622.16408348},
+		{-581954923.58059061, -614094622.14093494, -614094622.14093494}}};
+	mkMat3 M2 = {{{-7.9607843139638135, 0, 0}, {-7.9607843141930079, -2.0000183554366231, -3383855.1534282248},
+		{-3383855.1534282248, -3383855.1534282248, -3383855.1534282248}}};
+	mkBody3 b1 = mkBody3_Make(s1, M1, (mkVec3){-521971822043.56311, -999999999951.59839, -999999897066.43042});
+	ux[0] = 0.0;
+	uy[0] = 0.5;
+	uz[0] = 0.5;
+	/* B2 a superquadric (the gradient inverse), then an ellipsoid (A^2 d / |A d|,
+	 * 0/0 before), the second case also from core.fuzz */
+	for (int k = 0; k < 2; ++k) {
+		mkShape3 sk = s2;
+		if (k == 1) {
+			sk.c = 1e9;
+			sk.eps1 = 1.0;
+		}
+		mkBody3 b2 = mkBody3_Make(sk, M2, (mkVec3){-508021805.51157469, -521971822043.56311, -521971822043.52783});
+		ENSURE(mkBody3_IsValid(b1, "body1", NULL, 0) && mkBody3_IsValid(b2, "body2", NULL, 0));
+		for (int ii = 0; ii < 3; ++ii) {
+			if (!mkImpl_Available(impls[ii]))
+				continue;
+			ENSURE(run3(b1, b2, MK_SET_PLUS, MK_FORM_NORMAL, MK_PARAM_SURFACE, impls[ii], 1, 0) == MK_OK);
+			ENSURE(run3(b1, b2, MK_SET_PLUS, MK_FORM_GRADIENT, MK_PARAM_SURFACE, impls[ii], 1, 1) == MK_OK);
+			for (int c = 0; c < 6; ++c) {
+				ENSURE(isfinite(o[0][c][0]) && isfinite(o[1][c][0]));
+				ENSURE_NEAR(o[1][c][0], o[0][c][0], 1e-15 * fabs(o[0][c][0]));
+			}
+		}
+	}
+}
+
 int main(void)
 {
 	test_circles();
@@ -490,5 +532,6 @@ int main(void)
 	test_errors();
 	test_ellipse_forms();
 	test_spaced();
+	test_zero_direction();
 	return mk_summary("test_sum");
 }
