@@ -607,15 +607,21 @@ typedef struct mkNormalState {
 	double g[2];     /* tangential components of d - x */
 } mkNormalState;
 
-static void mkNormal_Eval(const mkPairCtx *c, mkVec3 n, mkNormalState *st)
+/* The rest of the state at st->n once st->e and st->f are known: the
+ * tangent basis and the tangential gradient. */
+static void mkNormal_Complete(const mkPairCtx *c, mkNormalState *st)
 {
-	st->n = n;
-	double H = mkPair_Eval(c, n, &st->e);
-	st->f = mkVec3_Dot(n, c->d) - H;
-	mkTangents(n, &st->t1, &st->t2);
+	mkTangents(st->n, &st->t1, &st->t2);
 	mkVec3 r = mkVec3_Sub(c->d, st->e.x);
 	st->g[0] = mkVec3_Dot(st->t1, r);
 	st->g[1] = mkVec3_Dot(st->t2, r);
+}
+
+static void mkNormal_Eval(const mkPairCtx *c, mkVec3 n, mkNormalState *st)
+{
+	st->n = n;
+	st->f = mkVec3_Dot(n, c->d) - mkPair_Eval(c, n, &st->e);
+	mkNormal_Complete(c, st);
 }
 
 /* Value only, for the trial points of the line searches and the scan. */
@@ -681,10 +687,7 @@ static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, 
 		st->n = L.mbest;
 		st->e = L.at;
 		st->f = L.best;
-		mkTangents(st->n, &st->t1, &st->t2);
-		mkVec3 r = mkVec3_Sub(c->d, st->e.x);
-		st->g[0] = mkVec3_Dot(st->t1, r);
-		st->g[1] = mkVec3_Dot(st->t2, r);
+		mkNormal_Complete(c, st);
 	}
 	return done;
 }
@@ -1152,7 +1155,7 @@ static double mkNormal_Hull(const mkPairCtx *c, mkNormalState *st, int budget, d
 	b[0] = mkVec3_Add(c2, st->e.a2.s);
 	w[0] = mkVec3_Sub(b[0], a[0]);
 	mkVec3 z = w[0];
-	double upper = mkVec3_LengthInline(z);
+	double upper = INFINITY;
 	*evals = 0;
 	for (int it = 0; it < budget; ++it) {
 		double zl = mkVec3_LengthInline(z);
@@ -1160,17 +1163,17 @@ static double mkNormal_Hull(const mkPairCtx *c, mkNormalState *st, int budget, d
 			break;
 		upper = fmin(upper, zl);
 		mkVec3 m = mkVec3_Scale(z, 1.0 / zl);
-		mkNormalState ev;
-		if (improve) {
-			mkNormal_Eval(c, m, &ev);
-			if (ev.f > st->f)
-				*st = ev;
-		} else
-			mkPair_Eval(c, m, &ev.e);
+		mkPairAt e;
+		double f = mkVec3_Dot(m, c->d) - mkPair_Eval(c, m, &e); /* <m, wn> up to rounding */
 		*evals += 1;
-		const mkPairAt *e = &ev.e;
-		mkVec3 an = mkVec3_Add(c1, e->a1.s), bn = mkVec3_Add(c2, e->a2.s), wn = mkVec3_Sub(bn, an);
-		if (!(zl - (improve ? st->f : mkVec3_Dot(m, wn)) > tol))
+		if (improve && f > st->f) {
+			st->n = m;
+			st->e = e;
+			st->f = f;
+			mkNormal_Complete(c, st);
+		}
+		mkVec3 an = mkVec3_Add(c1, e.a1.s), bn = mkVec3_Add(c2, e.a2.s), wn = mkVec3_Sub(bn, an);
+		if (!(zl - (improve ? st->f : f) > tol))
 			break;
 		a[k] = an;
 		b[k] = bn;
@@ -1603,6 +1606,12 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 	out->bound = best.f;
 	out->p1 = mkVec3_Add(b1.t, best.e.a1.s);
 	out->p2 = mkVec3_Add(b2.t, best.e.a2.s);
+	if (gilbert && mkIsFinite3(gp1) && mkIsFinite3(gp2)
+		&& mkVec3_LengthInline(mkVec3_Sub(gp2, gp1)) < mkVec3_LengthInline(mkVec3_Sub(out->p2, out->p1))) {
+		/* the fallback's hull already placed them on the faces */
+		out->p1 = gp1;
+		out->p2 = gp2;
+	}
 	out->residual = res / c.scale;
 	if (!ok || !isfinite(best.f) || !mkIsFinite3(out->p1) || !mkIsFinite3(out->p2))
 		return MK_ERR_CONVERGENCE;
@@ -1628,14 +1637,6 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 			int evals;
 			mkNormal_Hull(&c, &best, MK_HULL_EVALS, 1e-13 * c.scale, 0, &out->p1, &out->p2, &evals);
 			span = mkVec3_LengthInline(mkVec3_Sub(out->p2, out->p1));
-		}
-	}
-	if (gilbert) {
-		double gs = mkVec3_LengthInline(mkVec3_Sub(gp2, gp1));
-		if (mkIsFinite3(gp1) && mkIsFinite3(gp2) && gs < span) {
-			out->p1 = gp1;
-			out->p2 = gp2;
-			span = gs;
 		}
 	}
 	if (best.f > 0.0) {
