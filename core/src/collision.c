@@ -43,8 +43,13 @@
 #define MK_LINE_AFTER 6
 /* Plain Newton steps tried before the trust region takes over. */
 #define MK_NEWTON_MAX 12
-/* Halvings of a plain Newton step before the trust region takes over. */
+/* Cuts of a plain Newton step before the trust region takes over. */
 #define MK_BACKTRACK 4
+/* The shortest cut of a rejected step, as a fraction of it (mkCross); a
+ * rejected trust-region step shrinks the radius to between MK_TR_CUT_MIN
+ * and 1/2 of its length. */
+#define MK_CUT_MIN 0.05
+#define MK_TR_CUT_MIN 0.1
 /* The golden ratio (the icosahedron of the overlap certificate). */
 #define MK_GOLDEN 1.6180339887498949
 
@@ -700,6 +705,31 @@ static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][
 	A[1][1] += st->f;
 }
 
+/* The slope of f along the great circle normalize(n + u v) at the
+ * evaluated point st (st->n = normalize(n + u v), len = |n + u v|): the
+ * tangential part of d - x along v, per unit of u. */
+static double mkNormal_SlopeAlong(const mkPairCtx *c, const mkNormalState *st, mkVec3 v, double len)
+{
+	mkVec3 r = mkVec3_Sub(c->d, st->e.x);
+	return (mkVec3_Dot(v, r) - mkVec3_Dot(v, st->n) * st->f) / len;
+}
+
+/* Where to try next along a step that was rejected at u = t: the point,
+ * as a fraction of t, where the tangent lines of f at u = 0 (slope d0 > 0)
+ * and at u = t (gain over u = 0, slope dt) cross, kept within
+ * [lo, 1/2]; 1/2 when the slope at t is not negative (no crossing ahead of
+ * it). Where f is far from quadratic (the support function of a body with
+ * a nearly flat face is nearly kinked, and Newton's step overshoots its
+ * maximum many times over) the crossing lands near the kink, where
+ * halving would need several more trials. */
+static double mkCross(double gain, double d0, double dt, double t, double lo)
+{
+	if (!(dt < 0.0 && d0 > 0.0))
+		return 0.5;
+	double u = (gain - dt * t) / ((d0 - dt) * t);
+	return u < lo ? lo : u > 0.5 ? 0.5 : u;
+}
+
 /* Convergence test (d) of a Newton step with predicted gain pred at a
  * point with value f and residual res (|g|): the step cannot be verified,
  * since its gain is below the noise of f (the level under which the
@@ -847,10 +877,16 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 	 * its prediction, no trust region is needed (the common case: every
 	 * separated pair of ellipsoids, where the Hessian is at least f I). The
 	 * first step that fails hands over to the trust region, with a radius
-	 * that excludes it. */
+	 * that excludes it. A rejected trial is followed by one at the crossing
+	 * of the tangent lines at its two ends (mkCross), and once a step has
+	 * been cut, the next one is first tried at the fraction that was
+	 * accepted (Newton's step keeps overshooting by about the same factor
+	 * on a nearly kinked support function), the fraction doubling back
+	 * towards 1 after each step taken as tried. */
 	{
 		mkNormalState buf, *cur = st, *nxt = &buf;
 		int done = 0;
+		double damp = 1.0;
 		for (int it = 0; it < MK_NEWTON_MAX; ++it) {
 			*res = mkLen2(cur->g[0], cur->g[1]);
 			if (*res <= tol) {
@@ -875,23 +911,29 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 				break;
 			}
 			/* Backtracking (Armijo) along the Newton direction, the step
-			 * first cut to MK_TR_MAX. */
+			 * first cut to MK_TR_MAX and to the last accepted fraction. */
 			double t = zlen > MK_TR_MAX ? MK_TR_MAX / zlen : 1.0;
+			t = t < damp ? t : damp;
+			double tried = t;
 			double noise = 64.0 * DBL_EPSILON * (fabs(cur->f) + c->scale);
+			mkVec3 zv = mkVec3_Add(mkVec3_Scale(cur->t1, z0), mkVec3_Scale(cur->t2, z1));
 			int taken = 0;
-			for (int k = 0; k < MK_BACKTRACK; ++k, t *= 0.5) {
-				mkVec3 m = mkVec3_Add(cur->n, mkVec3_Add(mkVec3_Scale(cur->t1, t * z0), mkVec3_Scale(cur->t2, t * z1)));
-				mkNormal_Eval(c, mkVec3_NormalizeInline(m), nxt);
+			for (int k = 0; k < MK_BACKTRACK; ++k) {
+				mkVec3 m = mkVec3_Add(cur->n, mkVec3_Scale(zv, t));
+				double len = mkVec3_LengthInline(m);
+				mkNormal_Eval(c, mkVec3_Scale(m, 1.0 / len), nxt);
 				double gain = nxt->f - cur->f;
 				if (t * slope > noise ? gain >= 1e-4 * t * slope : gain >= -noise) {
 					taken = 1;
 					break;
 				}
+				t *= mkCross(gain, slope, mkNormal_SlopeAlong(c, nxt, zv, len), t, MK_CUT_MIN);
 			}
 			if (!taken) {
 				radius = t * zlen;
 				break;
 			}
+			damp = t < tried ? t : fmin(1.0, 2.0 * t);
 			mkNormalState *tmp = cur;
 			cur = nxt;
 			nxt = tmp;
@@ -930,9 +972,13 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 		 * predicted gain is below it is taken when it does not lose. */
 		double noise = 64.0 * DBL_EPSILON * (fabs(st->f) + c->scale);
 		double rho = pred > noise ? gain / pred : (gain >= -noise ? 1.0 : -1.0);
-		if (rho < 0.25)
-			radius = 0.25 * slen;
-		else if (rho > 0.75 && slen > 0.99 * radius)
+		if (rho < 0.25) {
+			/* to the tangent lines' crossing along the step (mkCross) */
+			mkVec3 sv = mkVec3_Add(mkVec3_Scale(st->t1, s[0]), mkVec3_Scale(st->t2, s[1]));
+			double d0 = st->g[0] * s[0] + st->g[1] * s[1];
+			double d1 = mkNormal_SlopeAlong(c, &trial, sv, mkVec3_LengthInline(m));
+			radius = (d1 < 0.0 && d0 > 0.0 ? mkCross(gain, d0, d1, 1.0, MK_TR_CUT_MIN) : 0.25) * slen;
+		} else if (rho > 0.75 && slen > 0.99 * radius)
 			radius = fmin(2.0 * radius, MK_TR_MAX);
 		if (rho > 1e-4) {
 			*st = trial;
