@@ -129,9 +129,13 @@ static void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
 	}
 }
 
-/* The nested norms |(|(u, v)|_q2, w)|_q1 of nl = 1 or 2 bodies, each pair
- * norm as described above (mkPairNorm), two bodies in lock-step (the libm calls of one body form
- * dependency chains; interleaving the two bodies' lets the processor
+/* Bodies evaluated in lock-step at most (mkNested): the two of a pair, or
+ * the pairs at four directions of the overlap certificate. */
+#define MK_LANES 8
+
+/* The nested norms |(|(u, v)|_q2, w)|_q1 of nl <= MK_LANES bodies, each pair
+ * norm as described above (mkPairNorm), the bodies in lock-step (the libm calls of one body form
+ * dependency chains; interleaving two bodies' lets the processor
  * overlap them, which halved a pair evaluation) and, within a body, the inner and outer chains
  * overlapped: the outer pair's log ratio is
  *   log(N_in / w) = log(m_in / w) + log(1 + t_in) / q2
@@ -143,11 +147,12 @@ static void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
  * t_out is as accurate as there. The outputs are those of mkPair for
  * (u, v) and for (N_in, w) (in the order of the arguments), the larger of
  * the outer pair chosen by the sign of log(N_in / w). */
-static inline void mkNested(int nl, const double u[2], const double v[2], const double w[2], const mkSupBody *const b[2],
-	mkPairNorm in[2], mkPairNorm out[2])
+static inline void mkNested(int nl, const double u[MK_LANES], const double v[MK_LANES], const double w[MK_LANES],
+	const mkSupBody *const b[MK_LANES], mkPairNorm in[MK_LANES], mkPairNorm out[MK_LANES])
 {
-	double m[2], ratio[2], L[2], Lc[2], t[2], opt[2], irm[2], lr[2], to[2], opto[2], irmo[2];
-	int big[2];
+	double m[MK_LANES], ratio[MK_LANES], L[MK_LANES], Lc[MK_LANES], t[MK_LANES], opt[MK_LANES], irm[MK_LANES],
+		lr[MK_LANES], to[MK_LANES], opto[MK_LANES], irmo[MK_LANES];
+	int big[MK_LANES];
 	for (int l = 0; l < nl; ++l) {
 		big[l] = u[l] >= v[l] ? 0 : 1;
 		m[l] = big[l] == 0 ? u[l] : v[l];
@@ -239,9 +244,9 @@ static void mkSupBody_Eval(const mkSupBody *b, mkVec3 y, mkSupAt *a)
 	a->sg[0] = p0 < 0.0 ? -1.0 : 1.0;
 	a->sg[1] = p1 < 0.0 ? -1.0 : 1.0;
 	a->sg[2] = p2 < 0.0 ? -1.0 : 1.0;
-	const mkSupBody *bb[2] = { b, b };
-	double u[2] = { fabs(p0), 0.0 }, v[2] = { fabs(p1), 0.0 }, w[2] = { fabs(p2), 0.0 };
-	mkPairNorm in[2], out[2];
+	const mkSupBody *bb[MK_LANES] = { b };
+	double u[MK_LANES] = { fabs(p0) }, v[MK_LANES] = { fabs(p1) }, w[MK_LANES] = { fabs(p2) };
+	mkPairNorm in[MK_LANES], out[MK_LANES];
 	mkNested(1, u, v, w, bb, in, out);
 	a->in = in[0];
 	a->out = out[0];
@@ -383,15 +388,13 @@ typedef struct mkPairAt {
 	double H;
 } mkPairAt;
 
-/* Both superquadrics' support at y1 and y2 (mkNested). */
-static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const mkSupBody *b2, mkVec3 y2, mkSupAt *a2)
+/* nl <= MK_LANES superquadrics' support at y[l] (mkNested). */
+static inline void mkSupBody_EvalLanes(int nl, const mkSupBody *const b[MK_LANES], const mkVec3 y[MK_LANES],
+	mkSupAt *const a[MK_LANES])
 {
-	const mkSupBody *b[2] = { b1, b2 };
-	mkSupAt *a[2] = { a1, a2 };
-	mkVec3 y[2] = { y1, y2 };
-	double p[2][3], u[2], v[2], w[2];
-	mkPairNorm in[2], out[2];
-	for (int l = 0; l < 2; ++l) {
+	double p[MK_LANES][3], u[MK_LANES], v[MK_LANES], w[MK_LANES];
+	mkPairNorm in[MK_LANES], out[MK_LANES];
+	for (int l = 0; l < nl; ++l) {
 		const double (*P)[3] = b[l]->P;
 		for (int j = 0; j < 3; ++j) {
 			p[l][j] = P[0][j] * y[l].x + P[1][j] * y[l].y + P[2][j] * y[l].z;
@@ -401,8 +404,8 @@ static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const m
 		v[l] = fabs(p[l][1]);
 		w[l] = fabs(p[l][2]);
 	}
-	mkNested(2, u, v, w, b, in, out);
-	for (int l = 0; l < 2; ++l) {
+	mkNested(nl, u, v, w, b, in, out);
+	for (int l = 0; l < nl; ++l) {
 		const double (*P)[3] = b[l]->P;
 		mkSupAt *A = a[l];
 		A->in = in[l];
@@ -417,6 +420,15 @@ static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const m
 	}
 }
 
+/* Both superquadrics' support at y1 and y2. */
+static void mkSupBody_Eval2(const mkSupBody *b1, mkVec3 y1, mkSupAt *a1, const mkSupBody *b2, mkVec3 y2, mkSupAt *a2)
+{
+	const mkSupBody *b[MK_LANES] = { b1, b2 };
+	mkSupAt *a[MK_LANES] = { a1, a2 };
+	mkVec3 y[MK_LANES] = { y1, y2 };
+	mkSupBody_EvalLanes(2, b, y, a);
+}
+
 static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkPairAt *e)
 {
 	if (!c->k1.ellipsoid && !c->k2.ellipsoid) {
@@ -428,6 +440,35 @@ static double mkPair_Eval(const mkPairCtx *c, mkVec3 m, mkPairAt *e)
 	e->x = mkVec3_Sub(e->a1.s, e->a2.s);
 	e->H = mkVec3_Dot(m, e->x);
 	return e->H;
+}
+
+/* mkPair_Eval at n <= MK_LANES / 2 directions; a pair of superquadrics in
+ * lock-step (the same arithmetic per direction, so the same results):
+ * independent directions fill the processor where one waits on its chains
+ * of libm calls. */
+static void mkPair_EvalN(const mkPairCtx *c, int n, const mkVec3 m[], mkPairAt e[])
+{
+	if (c->k1.ellipsoid || c->k2.ellipsoid || n < 2) {
+		for (int k = 0; k < n; ++k)
+			mkPair_Eval(c, m[k], &e[k]);
+		return;
+	}
+	const mkSupBody *b[MK_LANES];
+	mkVec3 y[MK_LANES];
+	mkSupAt *a[MK_LANES];
+	for (int k = 0; k < n; ++k) {
+		b[2 * k] = &c->k1;
+		b[2 * k + 1] = &c->k2;
+		y[2 * k] = m[k];
+		y[2 * k + 1] = mkVec3_Neg(m[k]);
+		a[2 * k] = &e[k].a1;
+		a[2 * k + 1] = &e[k].a2;
+	}
+	mkSupBody_EvalLanes(2 * n, b, y, a);
+	for (int k = 0; k < n; ++k) {
+		e[k].x = mkVec3_Sub(e[k].a1.s, e[k].a2.s);
+		e[k].H = mkVec3_Dot(m[k], e[k].x);
+	}
 }
 
 /* The Jacobian of x in the plane of (t1, t2): A[i][j] = ti^T J tj. */
@@ -1390,18 +1431,23 @@ static int mkCert_Centres(mkCertRun *r, mkPatch *p, int n, mkVec3 xp)
 	int top = -1;
 	double ftop = -INFINITY;
 	mkVec3 ctop = mkVec3_Make(0.0, 0.0, 0.0);
-	for (int k = 0; k < n; ++k) {
-		mkVec3 cn = mkVec3_NormalizeInline(mkVec3_Add(p[k].v[0], mkVec3_Add(p[k].v[1], p[k].v[2])));
-		mkPairAt e;
-		mkPair_Eval(r->c, cn, &e);
-		p[k].x = mkVec3_Sub(e.x, r->c->d);
-		double f = -mkVec3_Dot(cn, p[k].x);
-		if (!(isfinite(f) && mkIsFinite3(p[k].x)))
-			return 0;
-		if (f > ftop) {
-			ftop = f;
-			top = k;
-			ctop = cn;
+	for (int k0 = 0; k0 < n; k0 += MK_LANES / 2) {
+		int g = n - k0 < MK_LANES / 2 ? n - k0 : MK_LANES / 2;
+		mkVec3 cn[MK_LANES / 2];
+		mkPairAt e[MK_LANES / 2];
+		for (int k = 0; k < g; ++k)
+			cn[k] = mkVec3_NormalizeInline(mkVec3_Add(p[k0 + k].v[0], mkVec3_Add(p[k0 + k].v[1], p[k0 + k].v[2])));
+		mkPair_EvalN(r->c, g, cn, e);
+		for (int k = 0; k < g; ++k) {
+			p[k0 + k].x = mkVec3_Sub(e[k].x, r->c->d);
+			double f = -mkVec3_Dot(cn[k], p[k0 + k].x);
+			if (!(isfinite(f) && mkIsFinite3(p[k0 + k].x)))
+				return 0;
+			if (f > ftop) {
+				ftop = f;
+				top = k0 + k;
+				ctop = cn[k];
+			}
 		}
 	}
 	r->used += n;
