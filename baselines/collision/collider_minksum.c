@@ -24,9 +24,11 @@ static mkResult mkRunRay(mkBody3 b1, mkBody3 b2, mkColliderScratch *scratch, mkC
 const mkCollider mkCollider_MinkNormal = {
 	"minksum-normal",
 	"MinkSum (Normal): signed distance by Newton on the unit normal (core, closed form)",
-	MK_NEWTON_PARAMS "; overlap: restarts from the centre line, the body axes and a lattice, then the depth "
+	MK_NEWTON_PARAMS "; a rejected step cut to the crossing of the tangent lines at its ends; overlap: one "
+	"restart from the best of the reversed centre line, the body axes and diagonals and a lattice, then the depth "
 	"certified global within " MK_STR(MK_COLLIDE3_GLOBAL_TOL) " of scale by a branch and bound over the sphere "
-	"of normals (at most " MK_STR(MK_COLLIDE3_CERT_EVALS) " pair evaluations; past it: certified 0)",
+	"of normals (bounds from single planes and mixtures of two; Newton restarted from a centre 1e-10 of scale "
+	"above the best; at most " MK_STR(MK_COLLIDE3_CERT_EVALS) " pair evaluations; past it: certified 0)",
 	MK_GIVES_STATUS | MK_GIVES_DISTANCE | MK_GIVES_PENETRATION | MK_GIVES_WITNESS,
 	MK_PAIRS_ELLIPSOIDS | MK_PAIRS_SUPERQUADRICS, 0, NULL, mkRunNormal, NULL
 };
