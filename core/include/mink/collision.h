@@ -20,13 +20,15 @@
  *                     |p2 - p1| for the witness points p1 in B1, p2 in B2.
  *                     Overlapping bodies: the depth is the distance from d to
  *                     the boundary of K, which can have several local optima;
- *                     the solver restarts from a few directions (the centre
- *                     line, the bodies' axes, a lattice) and keeps the best,
- *                     then a branch and bound over the sphere of normals
- *                     certifies it global: sd <= f(n) + gap with gap <=
+ *                     the solver restarts once from the best of a few
+ *                     directions (the reversed centre line, the bodies' axes,
+ *                     a lattice) and keeps the better answer, then a branch
+ *                     and bound over the sphere of normals certifies it
+ *                     global: sd <= f(n) + gap with gap <=
  *                     MK_COLLIDE3_GLOBAL_TOL * scale (restarting Newton from
- *                     any better direction it meets), or says it could not
- *                     within its budget (certified 0, gap wider).
+ *                     any direction it meets 1e-10 * scale above the best),
+ *                     or says it could not within its budget (certified 0,
+ *                     gap wider).
  *                     Where the support function is nearly kinked (exponents
  *                     near 0 or 2) Newton can stall on a ridge; a separated
  *                     pair is then answered by Gilbert's distance iteration
