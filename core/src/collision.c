@@ -1000,11 +1000,8 @@ enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 1, MK_SCAN_EXACT = 16 }
 /* The query from the centre line (start NULL) or from a given start. */
 static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
 {
-	mkCollision3_Clear(out);
 	mkPairCtx c;
-	mkPairCtx_Init(&c, &b1, &b2);
-	out->scale = c.scale;
-	if (!isfinite(c.scale))
+	if (mkPairCtx_Begin(&c, &b1, &b2, out) != MK_OK)
 		return MK_ERR_UNSUPPORTED;
 	double dl = mkVec3_LengthInline(c.d);
 	mkVec3 n0 = dl > 0.0 ? mkVec3_Scale(c.d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);

@@ -147,11 +147,8 @@ static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, c
 
 mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {
-	mkCollision3_Clear(out);
 	mkPairCtx c;
-	mkPairCtx_Init(&c, &b1, &b2);
-	out->scale = c.scale;
-	if (!isfinite(c.scale))
+	if (mkPairCtx_Begin(&c, &b1, &b2, out) != MK_OK)
 		return MK_ERR_UNSUPPORTED;
 	double dl = mkVec3_LengthInline(c.d);
 	out->restarts = 0;
