@@ -525,11 +525,16 @@ static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 /* Pair evaluations the witness iteration (mkNormal_Hull) may spend. */
 #define MK_HULL_EVALS 64
 /* The same iteration as the fallback of a separated pair on which Newton
- * did not converge: its budget of pair evaluations, the bracket it aims
- * for and the widest it accepts (times the scale). */
+ * did not converge: its budget of pair evaluations and the bracket it aims
+ * for (times the scale). */
 #define MK_GILBERT_EVALS 2000
 #define MK_GILBERT_TOL 1e-12
-#define MK_GILBERT_ACCEPT 1e-10
+/* The accuracy an answer is held to where no tighter test applies (times
+ * the scale; the issue's 1e-10): the widest bracket the Gilbert fallback
+ * accepts, the branch and bound's tolerance on an overlap no start
+ * converged on, and how far above the best a centre of the branch and bound
+ * restarts Newton. */
+#define MK_ANSWER_TOL 1e-10
 
 /* The least-norm point of the convex hull of w[0..k), k <= 4: every subset
  * of one, two or three points is tried (the nearest point of its affine hull
@@ -798,7 +803,7 @@ static double mkPatch_Lower(const mkPatch *p, double b)
 
 /* Evaluates the centre of each of the n patches (their x) and their lower
  * bounds from those points and xp, then restarts Newton from the best
- * centre when it is more than min(tol, MK_GILBERT_ACCEPT * scale) above
+ * centre when it is more than min(tol, MK_ANSWER_TOL * scale) above
  * the best. Returns 0 on a
  * non-finite evaluation. */
 static int mkCert_Centres(mkCertRun *r, mkPatch *p, int n, mkVec3 xp)
@@ -846,10 +851,10 @@ static int mkCert_Centres(mkCertRun *r, mkPatch *p, int n, mkVec3 xp)
 		}
 		q->lower = b;
 	}
-	/* (restarting already at MK_GILBERT_ACCEPT of the scale, below the
+	/* (restarting already at MK_ANSWER_TOL of the scale, below the
 	 * certificate's tol: a maximum higher by more than that is climbed,
 	 * so that the answer is the highest maximum to that accuracy) */
-	if (top >= 0 && ftop > r->best->f + fmin(r->tol, MK_GILBERT_ACCEPT * r->c->scale)) {
+	if (top >= 0 && ftop > r->best->f + fmin(r->tol, MK_ANSWER_TOL * r->c->scale)) {
 		mkNormalState st;
 		double r2 = NAN;
 		int before = *r->iters;
@@ -1029,7 +1034,7 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 	 * converge, or stopped on a stalled value, on a ridge of a nearly kinked
 	 * support function: Gilbert's iteration brackets sd between the largest
 	 * f it meets and the least |z| (mkNormal_Hull), and the answer stands
-	 * when the bracket is within MK_GILBERT_ACCEPT of the scale; the
+	 * when the bracket is within MK_ANSWER_TOL of the scale; the
 	 * residual reported is then the bracket's width. */
 	int gilbert = 0;
 	mkVec3 gp1 = mkVec3_Make(NAN, NAN, NAN), gp2 = gp1;
@@ -1039,7 +1044,7 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 		int evals;
 		double up = mkNormal_Hull(&c, &best, MK_GILBERT_EVALS, MK_GILBERT_TOL * c.scale, 1, &gp1, &gp2, &evals);
 		iters += evals;
-		if (up - best.f <= MK_GILBERT_ACCEPT * c.scale) {
+		if (up - best.f <= MK_ANSWER_TOL * c.scale) {
 			ok = 1;
 			gilbert = 1;
 			res = up - best.f;
@@ -1147,12 +1152,12 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 		/* Overlap (or touching): the depth certified global, or said not to
 		 * be. When no start converged (a ridge of a nearly kinked support
 		 * function), the branch and bound runs from the best state met at
-		 * the tighter MK_GILBERT_ACCEPT (its restarts climb the ridge), and
+		 * the tighter MK_ANSWER_TOL (its restarts climb the ridge), and
 		 * the answer stands only when it completes; the residual reported
 		 * is then the width of its bracket. */
 		int evals = 0;
 		int done = mkNormal_Certify(&c, &best, &res, &iters,
-			(ok ? MK_COLLIDE3_GLOBAL_TOL : MK_GILBERT_ACCEPT) * c.scale, &upper, &evals) == 1;
+			(ok ? MK_COLLIDE3_GLOBAL_TOL : MK_ANSWER_TOL) * c.scale, &upper, &evals) == 1;
 		out->cert_evals = evals;
 		if (ok)
 			certified = done;

@@ -2,8 +2,9 @@
  * (collision.c: MinkSum (Normal), its certificate and the public helpers;
  * collision_ray.c: MinkSum (Ray)): the support map of a placed body with its
  * Jacobian, a pair of bodies evaluated at a normal, the trust-region step and
- * the exact line search. Everything here is static inline, so that each
- * query's loops inline what they call (internal to the library).
+ * the exact line search. Everything here is static to each unit that
+ * includes it (internal to the library): the small loops static inline,
+ * the rest as they were when both queries shared one file (MK_PAIR_FN).
  *
  * The support function of the canonical superquadric is the nested dual norm
  *   h(y) = N(p),  p = (a y1, b y2, c y3),
@@ -34,8 +35,9 @@
 
 #include "geom_inline.h"
 
-/* The functions below that are not small enough to be inline: static in each
- * unit that includes this header, unused ones left out without a warning. */
+/* The functions below that are not marked inline: static in each unit that
+ * includes this header, the ones a unit does not use left out without a
+ * warning. */
 #if defined(__GNUC__)
 #define MK_PAIR_FN static __attribute__((unused))
 #else
