@@ -1005,6 +1005,7 @@ enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 1, MK_SCAN_EXACT = 16 }
 /* The query from the centre line (start NULL) or from a given start. */
 static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
 {
+	mkCollision3_Clear(out);
 	mkPairCtx c;
 	if (mkPairCtx_Begin(&c, &b1, &b2, out) != MK_OK)
 		return MK_ERR_UNSUPPORTED;

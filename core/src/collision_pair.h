@@ -649,11 +649,10 @@ MK_PAIR_FN void mkPairCtx_Init(mkPairCtx *c, const mkBody3 *b1, const mkBody3 *b
 	c->scale = mkScale(b1, b2);
 }
 
-/* The start of both queries: out cleared, the pair's context set up, out's
- * scale; MK_ERR_UNSUPPORTED when the scale is not finite. */
+/* The start of both queries (after clearing out): the pair's context set
+ * up, out's scale; MK_ERR_UNSUPPORTED when the scale is not finite. */
 static inline mkResult mkPairCtx_Begin(mkPairCtx *c, const mkBody3 *b1, const mkBody3 *b2, mkCollision3 *out)
 {
-	mkCollision3_Clear(out);
 	mkPairCtx_Init(c, b1, b2);
 	out->scale = c->scale;
 	return isfinite(c->scale) ? MK_OK : MK_ERR_UNSUPPORTED;

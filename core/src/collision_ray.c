@@ -147,6 +147,7 @@ static int mkRay_LineSearch(const mkPairCtx *c, mkRayFrame *f, mkRayState *st, c
 
 mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {
+	mkCollision3_Clear(out);
 	mkPairCtx c;
 	if (mkPairCtx_Begin(&c, &b1, &b2, out) != MK_OK)
 		return MK_ERR_UNSUPPORTED;
