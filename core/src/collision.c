@@ -58,6 +58,8 @@ typedef struct mkNormalState {
 	mkPairAt e;      /* supports at n (s1 = e.a1.s) and -n (s2 = e.a2.s) */
 	double f;        /* <n, d - x> */
 	double g[2];     /* tangential components of d - x */
+	double A[3];     /* with hasA: the tangent Jacobian (t1 J t1, t1 J t2, t2 J t2) */
+	int hasA;
 } mkNormalState;
 
 /* The rest of the state at st->n once st->e and st->f are known: the
@@ -68,13 +70,35 @@ static void mkNormal_Complete(const mkPairCtx *c, mkNormalState *st)
 	mkVec3 r = mkVec3_Sub(c->d, st->e.x);
 	st->g[0] = mkVec3_Dot(st->t1, r);
 	st->g[1] = mkVec3_Dot(st->t2, r);
+	st->hasA = 0;
+}
+
+/* The state at the unit normal n; for two superquadrics with the tangent
+ * Jacobian, formed in the same pass (mkSupBody_EvalHess2: Newton's loop
+ * needs it at nearly every point it evaluates). */
+static void mkNormal_EvalAt(const mkPairCtx *c, mkVec3 m, double len, mkNormalState *st)
+{
+	mkVec3 n = len == 1.0 ? m : mkVec3_Scale(m, 1.0 / len);
+	st->n = n;
+	if (c->k1.ellipsoid || c->k2.ellipsoid) {
+		st->f = mkVec3_Dot(n, c->d) - mkPair_Eval(c, n, &st->e);
+		mkNormal_Complete(c, st);
+		return;
+	}
+	mkTangents(n, &st->t1, &st->t2);
+	mkSupBody_EvalHess2(&c->k1, &c->k2, m, len, n, st->t1, st->t2, &st->e.a1, &st->e.a2, st->A);
+	st->hasA = 1;
+	st->e.x = mkVec3_Sub(st->e.a1.s, st->e.a2.s);
+	st->e.H = mkVec3_Dot(n, st->e.x);
+	st->f = mkVec3_Dot(n, c->d) - st->e.H;
+	mkVec3 r = mkVec3_Sub(c->d, st->e.x);
+	st->g[0] = mkVec3_Dot(st->t1, r);
+	st->g[1] = mkVec3_Dot(st->t2, r);
 }
 
 static void mkNormal_Eval(const mkPairCtx *c, mkVec3 n, mkNormalState *st)
 {
-	st->n = n;
-	st->f = mkVec3_Dot(n, c->d) - mkPair_Eval(c, n, &st->e);
-	mkNormal_Complete(c, st);
+	mkNormal_EvalAt(c, n, 1.0, st);
 }
 
 /* Value only, for the trial points of the line searches and the scan. */
@@ -148,7 +172,12 @@ static int mkNormal_LineSearch(const mkPairCtx *c, mkNormalState *st, mkVec3 e, 
 static void mkNormal_Hessian(const mkPairCtx *c, mkNormalState *st, double A[2][2])
 {
 	/* Hessian of -f in the tangent plane: t^T J t + f I. */
-	mkPair_Tangent(c, &st->e, st->t1, st->t2, A);
+	if (st->hasA) {
+		A[0][0] = st->A[0];
+		A[0][1] = A[1][0] = st->A[1];
+		A[1][1] = st->A[2];
+	} else
+		mkPair_Tangent(c, &st->e, st->t1, st->t2, A);
 	A[0][0] += st->f;
 	A[1][1] += st->f;
 }
@@ -304,6 +333,7 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
 	mkVec3 r = mkVec3_Sub(d, st->e.x);
 	st->g[0] = mkVec3_Dot(st->t1, r);
 	st->g[1] = mkVec3_Dot(st->t2, r);
+	st->hasA = 0;
 	return done;
 }
 
@@ -369,7 +399,7 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 			for (int k = 0; k < MK_BACKTRACK; ++k) {
 				mkVec3 m = mkVec3_Add(cur->n, mkVec3_Scale(zv, t));
 				double len = mkVec3_LengthInline(m);
-				mkNormal_Eval(c, mkVec3_Scale(m, 1.0 / len), nxt);
+				mkNormal_EvalAt(c, m, len, nxt);
 				double gain = nxt->f - cur->f;
 				if (t * slope > noise ? gain >= 1e-4 * t * slope : gain >= -noise) {
 					taken = 1;

@@ -137,7 +137,9 @@ MK_PAIR_FN void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
  * quantities carrying a few ulps, as the ratio k/m of mkPair does, so
  * t_out is as accurate as there. The outputs are those of mkPair for
  * (u, v) and for (N_in, w) (in the order of the arguments), the larger of
- * the outer pair chosen by the sign of log(N_in / w). */
+ * the outer pair chosen by the sign of log(N_in / w). The logarithms and
+ * exponentials are glibc's log2 and exp2 (cheaper than log and exp, and
+ * the formulas hold in any base used for both). */
 static inline void mkNested(int nl, const double u[MK_LANES], const double v[MK_LANES], const double w[MK_LANES],
 	const mkSupBody *const b[MK_LANES], mkPairNorm in[MK_LANES], mkPairNorm out[MK_LANES])
 {
@@ -151,25 +153,25 @@ static inline void mkNested(int nl, const double u[MK_LANES], const double v[MK_
 		ratio[l] = m[l] > 0.0 ? k / m[l] : 0.0;
 	}
 	for (int l = 0; l < nl; ++l) {
-		L[l] = ratio[l] > 0.0 ? log(ratio[l]) : 0.0;
-		/* log(m_in / w); +-inf when one of them is 0 (or the quotient
+		L[l] = ratio[l] > 0.0 ? log2(ratio[l]) : 0.0;
+		/* log2(m_in / w); +-inf when one of them is 0 (or the quotient
 		 * leaves the double range: t_out is then 0 either way) */
-		Lc[l] = m[l] > 0.0 && w[l] > 0.0 ? log(m[l] / w[l]) : m[l] > 0.0 ? INFINITY : -INFINITY;
+		Lc[l] = m[l] > 0.0 && w[l] > 0.0 ? log2(m[l] / w[l]) : m[l] > 0.0 ? INFINITY : -INFINITY;
 	}
 	for (int l = 0; l < nl; ++l)
-		t[l] = ratio[l] > 0.0 ? exp(b[l]->q2 * L[l]) : 0.0;
+		t[l] = ratio[l] > 0.0 ? exp2(b[l]->q2 * L[l]) : 0.0;
 	for (int l = 0; l < nl; ++l) {
 		opt[l] = 1.0 + t[l];
-		L[l] = log(opt[l]);
+		L[l] = log2(opt[l]);
 	}
 	for (int l = 0; l < nl; ++l) {
-		irm[l] = exp(b[l]->iq2 * L[l]);
-		lr[l] = Lc[l] + b[l]->iq2 * L[l]; /* log(N_in / w) */
-		to[l] = isfinite(lr[l]) ? exp(-b[l]->q1 * fabs(lr[l])) : 0.0;
+		irm[l] = exp2(b[l]->iq2 * L[l]);
+		lr[l] = Lc[l] + b[l]->iq2 * L[l]; /* log2(N_in / w) */
+		to[l] = isfinite(lr[l]) ? exp2(-b[l]->q1 * fabs(lr[l])) : 0.0;
 	}
 	for (int l = 0; l < nl; ++l) {
 		opto[l] = 1.0 + to[l];
-		irmo[l] = exp(b[l]->iq1 * log(opto[l]));
+		irmo[l] = exp2(b[l]->iq1 * log2(opto[l]));
 	}
 	for (int l = 0; l < nl; ++l) {
 		mkPairNorm *p = &in[l];
@@ -391,6 +393,173 @@ static inline void mkSupBody_EvalLanes(int nl, const mkSupBody *const b[MK_LANES
 			P[2][0] * g0 + P[2][1] * g1 + P[2][2] * g2);
 		A->h = mkVec3_Dot(y[l], A->s);
 	}
+}
+
+/* Both superquadrics of a pair at y1 = n and y2 = -n with the pair's tangent
+ * Jacobian A = (t1^T J t1, t1^T J t2, t2^T J t2), J = J1(n) + J2(-n), in one
+ * pass for Newton's loop: the quantities of mkNested and mkSupAt_Tangent.
+ * Measured, a pair evaluation is bound by its count of instructions more
+ * than by its chains of libm calls, so this pass does what the two did
+ * with less:
+ *  - the tangent Jacobian is formed as soon as the weights are known, from
+ *    projections P^T t of the tangents that do not wait for the evaluation;
+ *  - the reciprocals 1/m, 1/k, 1/w of the components, 1/(1 + t) and
+ *    1/R (R = (1 + t)^(1/q2)) are formed once, so that every ratio, weight
+ *    and curvature term after them is a product: with r = m / k,
+ *      N_in = m R,  1/N_in = (1/m) / R,  w_m = R / (1 + t),  w_k = t r w_m,
+ *      r_m^(q-2) = R w_m,  r_k^(q-2) = t r^2 r_m^(q-2),
+ *    and the same for the outer pair (N_in, |p3|), 1/N = (1/m_out) / R_out;
+ *  - the maps start from y = len n, the unnormalised trial point of a step
+ *    (n = y / len the unit normal): s is homogeneous of degree 0 in the
+ *    direction, the norms of degree 1 and J of degree -1, so only the norms
+ *    and 1 / N are rescaled, and the normalisation runs beside the chain.
+ * Logarithms and exponentials are to base 2 here and in mkNested (the same
+ * formulas: only the pairs log/exp must share a base), as glibc's exp2 is
+ * cheaper than its exp. The values agree with mkNested's and
+ * mkSupAt_Tangent's to a few ulps; the mkSupAt records are filled as there. */
+static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2, mkVec3 y, double len, mkVec3 n,
+	mkVec3 t1, mkVec3 t2, mkSupAt *a1, mkSupAt *a2, double A[3])
+{
+	const mkSupBody *B[2] = { b1, b2 };
+	mkSupAt *S[2] = { a1, a2 };
+	double pu[2][3], pw[2][3];
+	double u[2], v[2], w[2], m[2], kk[2], im[2], ik[2], iw[2], ratio[2], L[2], Lc[2];
+	int big[2];
+	for (int k = 0; k < 2; ++k) {
+		const double (*P)[3] = B[k]->P;
+		double sy = k == 0 ? 1.0 : -1.0, pr[3];
+		for (int j = 0; j < 3; ++j) {
+			pr[j] = sy * (P[0][j] * y.x + P[1][j] * y.y + P[2][j] * y.z);
+			pu[k][j] = P[0][j] * t1.x + P[1][j] * t1.y + P[2][j] * t1.z;
+			pw[k][j] = P[0][j] * t2.x + P[1][j] * t2.y + P[2][j] * t2.z;
+			S[k]->sg[j] = pr[j] < 0.0 ? -1.0 : 1.0;
+		}
+		u[k] = fabs(pr[0]);
+		v[k] = fabs(pr[1]);
+		w[k] = fabs(pr[2]);
+		big[k] = u[k] >= v[k] ? 0 : 1;
+		m[k] = u[k] >= v[k] ? u[k] : v[k];
+		kk[k] = u[k] >= v[k] ? v[k] : u[k];
+	}
+	for (int k = 0; k < 2; ++k) {
+		ratio[k] = m[k] > 0.0 ? kk[k] / m[k] : 0.0;
+		im[k] = 1.0 / m[k];
+		ik[k] = 1.0 / kk[k];
+		iw[k] = 1.0 / w[k];
+	}
+	for (int k = 0; k < 2; ++k) {
+		L[k] = ratio[k] > 0.0 ? log2(ratio[k]) : 0.0;
+		Lc[k] = m[k] > 0.0 && w[k] > 0.0 ? log2(m[k] / w[k]) : m[k] > 0.0 ? INFINITY : -INFINITY;
+	}
+	double t[2], opt[2], iopt[2], Lp[2], R[2], iR[2], lr[2], to[2], opto[2], iopto[2], Lo[2], Ro[2], iRo[2];
+	for (int k = 0; k < 2; ++k)
+		t[k] = ratio[k] > 0.0 ? exp2(B[k]->q2 * L[k]) : 0.0;
+	for (int k = 0; k < 2; ++k) {
+		opt[k] = 1.0 + t[k];
+		iopt[k] = 1.0 / opt[k];
+		Lp[k] = log2(opt[k]);
+	}
+	for (int k = 0; k < 2; ++k) {
+		R[k] = exp2(B[k]->iq2 * Lp[k]);
+		iR[k] = 1.0 / R[k];
+		lr[k] = Lc[k] + B[k]->iq2 * Lp[k]; /* log2(N_in / w) */
+		to[k] = isfinite(lr[k]) ? exp2(-B[k]->q1 * fabs(lr[k])) : 0.0;
+	}
+	for (int k = 0; k < 2; ++k) {
+		opto[k] = 1.0 + to[k];
+		iopto[k] = 1.0 / opto[k];
+		Lo[k] = log2(opto[k]);
+	}
+	for (int k = 0; k < 2; ++k) {
+		Ro[k] = exp2(B[k]->iq1 * Lo[k]);
+		iRo[k] = 1.0 / Ro[k];
+	}
+	double Aq[3] = { 0.0, 0.0, 0.0 };
+	for (int k = 0; k < 2; ++k) {
+		const mkSupBody *b = B[k];
+		mkSupAt *a = S[k];
+		mkPairNorm *in = &a->in, *out = &a->out;
+		double ci[2], co[2];
+		double crule_in = b->q2 > 2.0 ? 0.0 : b->q2 == 2.0 ? 1.0 : MK_CURV_MAX;
+		double crule_out = b->q1 > 2.0 ? 0.0 : b->q1 == 2.0 ? 1.0 : MK_CURV_MAX;
+		double Nin, iNin;
+		if (m[k] == 0.0) {
+			Nin = 0.0;
+			iNin = INFINITY;
+			in->r[0] = 1.0; in->r[1] = 0.0;
+			in->w[0] = 1.0; in->w[1] = 0.0;
+			ci[0] = 1.0;
+			ci[1] = crule_in;
+		} else {
+			int bg = big[k];
+			double wm = R[k] * iopt[k], r = m[k] * ik[k];
+			Nin = m[k] * R[k];
+			iNin = im[k] * iR[k];
+			in->r[bg] = iR[k];
+			in->r[1 - bg] = ratio[k] * iR[k];
+			in->w[bg] = wm;
+			in->w[1 - bg] = ratio[k] > 0.0 ? t[k] * r * wm : 0.0;
+			double cm = R[k] * wm;
+			ci[bg] = cm < MK_CURV_MAX ? cm : MK_CURV_MAX;
+			double ck = ratio[k] > 0.0 ? t[k] * r * r * cm : crule_in;
+			ci[1 - bg] = ck < MK_CURV_MAX ? ck : MK_CURV_MAX;
+		}
+		in->norm = Nin / len;
+		int bo = lr[k] >= 0.0 ? 0 : 1; /* N_in >= w: the inner norm is the larger */
+		double mo = bo == 0 ? Nin : w[k];
+		double iN;
+		if (mo == 0.0) {
+			out->norm = 0.0;
+			out->r[0] = 1.0; out->r[1] = 0.0;
+			out->w[0] = 1.0; out->w[1] = 0.0;
+			co[0] = 1.0;
+			co[1] = crule_out;
+			iN = INFINITY;
+		} else {
+			/* ro = k_out / m_out and its reciprocal, by the reciprocals */
+			double ro = bo == 0 ? w[k] * iNin : Nin * iw[k];
+			double iro = bo == 0 ? Nin * iw[k] : w[k] * iNin;
+			double imo = bo == 0 ? iNin : iw[k];
+			double wm = Ro[k] * iopto[k];
+			out->norm = mo * Ro[k] / len;
+			out->r[bo] = iRo[k];
+			out->r[1 - bo] = ro * iRo[k];
+			out->w[bo] = wm;
+			double tro = ro > 0.0 ? to[k] * iro : 0.0;
+			out->w[1 - bo] = tro * wm;
+			double cm = Ro[k] * wm;
+			co[bo] = cm < MK_CURV_MAX ? cm : MK_CURV_MAX;
+			double ck = ro > 0.0 ? tro * iro * cm : crule_out;
+			co[1 - bo] = ck < MK_CURV_MAX ? ck : MK_CURV_MAX;
+			iN = imo * iRo[k] * len;
+		}
+		/* the support point */
+		const double (*P)[3] = b->P;
+		double g0 = out->w[0] * a->sg[0] * in->w[0];
+		double g1 = out->w[0] * a->sg[1] * in->w[1];
+		double g2 = a->sg[2] * out->w[1];
+		mkVec3 sp = mkVec3_Make(P[0][0] * g0 + P[0][1] * g1 + P[0][2] * g2,
+			P[1][0] * g0 + P[1][1] * g1 + P[1][2] * g2,
+			P[2][0] * g0 + P[2][1] * g1 + P[2][2] * g2);
+		a->s = sp;
+		a->h = k == 0 ? mkVec3_Dot(n, sp) : -mkVec3_Dot(n, sp);
+		/* the tangent forms, as mkSupAt_Tangent */
+		double G0 = a->sg[0] * in->w[0], G1 = a->sg[1] * in->w[1];
+		double k1 = (b->q1 - 1.0) * iN;
+		double o00 = k1 * (co[0] - out->w[0] * out->w[0]);
+		double o01 = -k1 * out->w[0] * a->sg[2] * out->w[1];
+		double o11 = k1 * (co[1] - out->w[1] * out->w[1]);
+		double k2 = (b->q2 - 1.0) * iN * co[0];
+		const double *x = pu[k], *z = pw[k];
+		double gu = G0 * x[0] + G1 * x[1], gw = G0 * z[0] + G1 * z[1];
+		double og = o00 - k2;
+		Aq[0] += og * gu * gu + k2 * (ci[0] * x[0] * x[0] + ci[1] * x[1] * x[1]) + 2.0 * o01 * gu * x[2] + o11 * x[2] * x[2];
+		Aq[1] += og * gu * gw + k2 * (ci[0] * x[0] * z[0] + ci[1] * x[1] * z[1]) + o01 * (gu * z[2] + gw * x[2]) + o11 * x[2] * z[2];
+		Aq[2] += og * gw * gw + k2 * (ci[0] * z[0] * z[0] + ci[1] * z[1] * z[1]) + 2.0 * o01 * gw * z[2] + o11 * z[2] * z[2];
+	}
+	A[0] = Aq[0];
+	A[1] = Aq[1];
+	A[2] = Aq[2];
 }
 
 /* Both superquadrics' support at y1 and y2. */
