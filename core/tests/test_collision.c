@@ -26,6 +26,10 @@
 #include "draw3.h"
 #include "ensure.h"
 
+/* The solver's internal pair evaluation (static functions of the header),
+ * for test_pair_pass. */
+#include "collision_pair.h"
+
 /* The gauge of a placed body at x: Psi^(eps1/2), 1 on the boundary. */
 static double mk_gauge(mkBody3 b, mkVec3 x)
 {
@@ -122,6 +126,107 @@ static void test_support_edges(void)
 				++checked;
 			}
 	ENSURE(checked == 6 * 6 * 24);
+}
+
+/* x(n) = s1(n) - s2(-n) about the centres, by body.c's dual-norm support
+ * (no code of the solver). */
+static mkVec3 mk_pair_x(mkBody3 b1, mkBody3 b2, mkVec3 n)
+{
+	return mkVec3_Sub(mkVec3_Sub(mkBody3_Support(b1, n), b1.t), mkVec3_Sub(mkBody3_Support(b2, mkVec3_Neg(n)), b2.t));
+}
+
+static double mk_rel(double a, double b)
+{
+	return fabs(a - b) / fmax(1.0, fmax(fabs(a), fabs(b)));
+}
+
+/* The one-pass evaluation Newton's loop uses for two superquadrics
+ * (mkSupBody_EvalHess2), called directly: its support points against
+ * mkBody3_Support, its tangent Jacobian (t_i^T (J1(n) + J2(-n)) t_j) against
+ * central differences of mkBody3_Support along the tangents, from unit and
+ * unnormalised directions; and its records of the pair norms against the
+ * separate evaluation the rest of the solver uses (mkSupBody_Eval2 and
+ * mkPair_Tangent), including directions along the bodies' axes, where pair
+ * norms have zero components. */
+static void test_pair_pass(void)
+{
+	unsigned long long seed = 41;
+	int fd_checked = 0, axis_checked = 0;
+	for (int trial = 0; trial < 400; ++trial) {
+		mkBody3 b1, b2;
+		mk_test_pair3(&seed, 0.1, 1.9, &b1, &b2);
+		int axis = trial % 8 == 7;
+		mkVec3 n;
+		if (axis) {
+			/* along an axis of unrotated bodies: the canonical directions
+			 * have exact zeros (a rotation's rounding would not) */
+			b1.M = b2.M = mkMat3_Identity();
+			int k = trial / 8 % 3;
+			n = mkVec3_Make(k == 0, k == 1, k == 2);
+			if (trial / 24 % 2)
+				n = mkVec3_Neg(n);
+		} else
+			n = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
+				mk_test_uniform(&seed, -1, 1)));
+		double len = trial % 3 == 0 ? 1.0 : mk_test_uniform(&seed, 0.5, 2.0);
+		mkPairCtx c;
+		mkPairCtx_Init(&c, &b1, &b2);
+		mkVec3 t1, t2;
+		mkTangents(n, &t1, &t2);
+		mkSupAt a1, a2;
+		double A[3];
+		mkSupBody_EvalHess2(&c.k1, &c.k2, mkVec3_Scale(n, len), len, n, t1, t2, &a1, &a2, A);
+		/* support points and values: a few ulps of the size (11) */
+		mkVec3 r1 = mkVec3_Sub(mkBody3_Support(b1, n), b1.t), r2 = mkVec3_Sub(mkBody3_Support(b2, mkVec3_Neg(n)), b2.t);
+		ENSURE_NEAR(mkVec3_Length(mkVec3_Sub(a1.s, r1)), 0.0, 1e-12 * 11.0);
+		ENSURE_NEAR(mkVec3_Length(mkVec3_Sub(a2.s, r2)), 0.0, 1e-12 * 11.0);
+		ENSURE_NEAR(a1.h, mkVec3_Dot(n, r1), 1e-12 * 11.0);
+		ENSURE_NEAR(a2.h, -mkVec3_Dot(n, r2), 1e-12 * 11.0);
+		/* the records, against the solver's other evaluation at the unit n */
+		mkSupAt g1, g2;
+		mkSupBody_Eval2(&c.k1, n, &g1, &c.k2, mkVec3_Neg(n), &g2);
+		const mkSupAt *f[2] = { &a1, &a2 }, *g[2] = { &g1, &g2 };
+		for (int k = 0; k < 2; ++k) {
+			ENSURE_LE(mk_rel(f[k]->in.norm, g[k]->in.norm), 1e-13);
+			ENSURE_LE(mk_rel(f[k]->out.norm, g[k]->out.norm), 1e-13);
+			for (int j = 0; j < 2; ++j) {
+				ENSURE_LE(mk_rel(f[k]->in.r[j], g[k]->in.r[j]), 1e-13);
+				ENSURE_LE(mk_rel(f[k]->in.w[j], g[k]->in.w[j]), 1e-13);
+				ENSURE_LE(mk_rel(f[k]->out.r[j], g[k]->out.r[j]), 1e-13);
+				ENSURE_LE(mk_rel(f[k]->out.w[j], g[k]->out.w[j]), 1e-13);
+			}
+			for (int j = 0; j < 3; ++j)
+				ENSURE(f[k]->sg[j] == g[k]->sg[j]);
+		}
+		mkPairAt e;
+		e.a1 = g1;
+		e.a2 = g2;
+		double G[2][2];
+		mkPair_Tangent(&c, &e, t1, t2, G);
+		double amax = fmax(fabs(A[0]), fmax(fabs(A[1]), fabs(A[2])));
+		ENSURE_LE(fabs(A[0] - G[0][0]), 1e-11 * amax);
+		ENSURE_LE(fabs(A[1] - G[0][1]), 1e-11 * amax);
+		ENSURE_LE(fabs(A[2] - G[1][1]), 1e-11 * amax);
+		if (axis) {
+			++axis_checked;
+			continue; /* the support functions are not smooth across the axes */
+		}
+		/* central differences of x along the tangents (truncation and
+		 * rounding both below 1e-6 relative at h = 1e-5, as in
+		 * test_jacobian) */
+		double h = 1e-5;
+		mkVec3 col[2];
+		mkVec3 t[2] = { t1, t2 };
+		for (int j = 0; j < 2; ++j)
+			col[j] = mkVec3_Scale(mkVec3_Sub(mk_pair_x(b1, b2, mkVec3_Add(n, mkVec3_Scale(t[j], h))),
+				mk_pair_x(b1, b2, mkVec3_Sub(n, mkVec3_Scale(t[j], h)))), 0.5 / h);
+		double fd[3] = { mkVec3_Dot(t1, col[0]), 0.5 * (mkVec3_Dot(t1, col[1]) + mkVec3_Dot(t2, col[0])),
+			mkVec3_Dot(t2, col[1]) };
+		for (int i = 0; i < 3; ++i)
+			ENSURE_LE(fabs(A[i] - fd[i]), 1e-4 * amax + 1e-9);
+		++fd_checked;
+	}
+	ENSURE(fd_checked == 350 && axis_checked == 50);
 }
 
 /* FCL's ellipsoid cases. */
@@ -734,6 +839,7 @@ int main(void)
 {
 	test_jacobian();
 	test_support_edges();
+	test_pair_pass();
 	test_fcl_cases();
 	test_spheres();
 	test_random_pairs();
