@@ -73,9 +73,11 @@ static void mkNormal_Complete(const mkPairCtx *c, mkNormalState *st)
 	st->hasA = 0;
 }
 
-/* The state at the unit normal n; for two superquadrics with the tangent
- * Jacobian, formed in the same pass (mkSupBody_EvalHess2: Newton's loop
- * needs it at nearly every point it evaluates). */
+/* The state at the unit normal n = m / len (m the unnormalised trial point
+ * of a step, len = |m|; len = 1 for a unit m); for two superquadrics with
+ * the tangent Jacobian, formed in the same pass from m itself
+ * (mkSupBody_EvalHess2: Newton's loop needs it at nearly every point it
+ * evaluates). */
 static void mkNormal_EvalAt(const mkPairCtx *c, mkVec3 m, double len, mkNormalState *st)
 {
 	mkVec3 n = len == 1.0 ? m : mkVec3_Scale(m, 1.0 / len);
