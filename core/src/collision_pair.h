@@ -70,14 +70,23 @@ MK_PAIR_FN double mkLen2(double a, double b)
  * when the Hessian is wanted, mkCurv). */
 typedef struct mkPairNorm { double norm, r[2], w[2]; } mkPairNorm;
 
-MK_PAIR_FN double mkCurv(double w, double r, double q)
+/* A curvature term r^(q-2) clamped to MK_CURV_MAX (NaN to it too). */
+static inline double mkCurvClamp(double c)
 {
-	/* r^(q-2) = w / r; on r = 0: 0 for q > 2, 1 for q = 2, clamped for q < 2. */
-	if (r > 0.0) {
-		double c = w / r;
-		return c < MK_CURV_MAX ? c : MK_CURV_MAX;
-	}
+	return c < MK_CURV_MAX ? c : MK_CURV_MAX;
+}
+
+/* r^(q-2) at r = 0: 0 for q > 2, 1 for q = 2, clamped for q < 2 (one value
+ * per exponent, kept in mkSupBody). */
+static inline double mkCurvAtZero(double q)
+{
 	return q > 2.0 ? 0.0 : q == 2.0 ? 1.0 : MK_CURV_MAX;
+}
+
+/* r^(q-2) = w / r, or at0 = mkCurvAtZero(q) on r = 0. */
+MK_PAIR_FN double mkCurv(double w, double r, double at0)
+{
+	return r > 0.0 ? mkCurvClamp(w / r) : at0;
 }
 
 /* Each pair norm (iq = 1 / q): with the ratio k/m of the smaller to the
@@ -96,6 +105,7 @@ MK_PAIR_FN double mkCurv(double w, double r, double q)
 typedef struct mkSupBody {
 	double P[3][3], Q[3][3];
 	double q1, q2, iq1, iq2;
+	double c1, c2; /* mkCurvAtZero(q1), mkCurvAtZero(q2) */
 	int ellipsoid;
 } mkSupBody;
 
@@ -118,6 +128,8 @@ MK_PAIR_FN void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
 		k->iq1 = 1.0 - 0.5 * b->shape.eps1;
 		k->iq2 = 1.0 - 0.5 * b->shape.eps2;
 	}
+	k->c1 = mkCurvAtZero(k->q1);
+	k->c2 = mkCurvAtZero(k->q2);
 }
 
 /* Bodies evaluated in lock-step at most (mkNested): the two of a pair, or
@@ -261,8 +273,8 @@ MK_PAIR_FN void mkSupAt_CanonHess(const mkSupBody *b, const mkSupAt *a, double H
 	double G[2] = { a->sg[0] * a->in.w[0], a->sg[1] * a->in.w[1] };
 	double N = a->out.norm;
 	double k1 = (b->q1 - 1.0) / N;
-	double co0 = mkCurv(a->out.w[0], a->out.r[0], b->q1), co1 = mkCurv(a->out.w[1], a->out.r[1], b->q1);
-	double ci[2] = { mkCurv(a->in.w[0], a->in.r[0], b->q2), mkCurv(a->in.w[1], a->in.r[1], b->q2) };
+	double co0 = mkCurv(a->out.w[0], a->out.r[0], b->c1), co1 = mkCurv(a->out.w[1], a->out.r[1], b->c1);
+	double ci[2] = { mkCurv(a->in.w[0], a->in.r[0], b->c2), mkCurv(a->in.w[1], a->in.r[1], b->c2) };
 	/* Outer Hessian over (inner norm, p3). */
 	double o00 = k1 * (co0 - a->out.w[0] * a->out.w[0]);
 	double o01 = -k1 * a->out.w[0] * a->sg[2] * a->out.w[1];
@@ -331,8 +343,8 @@ MK_PAIR_FN void mkSupAt_Tangent(const mkSupBody *b, const mkSupAt *a, mkVec3 t1,
 	double G0 = a->sg[0] * a->in.w[0], G1 = a->sg[1] * a->in.w[1];
 	double N = a->out.norm;
 	double k1 = (b->q1 - 1.0) / N;
-	double co0 = mkCurv(a->out.w[0], a->out.r[0], b->q1), co1 = mkCurv(a->out.w[1], a->out.r[1], b->q1);
-	double ci0 = mkCurv(a->in.w[0], a->in.r[0], b->q2), ci1 = mkCurv(a->in.w[1], a->in.r[1], b->q2);
+	double co0 = mkCurv(a->out.w[0], a->out.r[0], b->c1), co1 = mkCurv(a->out.w[1], a->out.r[1], b->c1);
+	double ci0 = mkCurv(a->in.w[0], a->in.r[0], b->c2), ci1 = mkCurv(a->in.w[1], a->in.r[1], b->c2);
 	double o00 = k1 * (co0 - a->out.w[0] * a->out.w[0]);
 	double o01 = -k1 * a->out.w[0] * a->sg[2] * a->out.w[1];
 	double o11 = k1 * (co1 - a->out.w[1] * a->out.w[1]);
@@ -481,8 +493,6 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 		mkSupAt *a = S[k];
 		mkPairNorm *in = &a->in, *out = &a->out;
 		double ci[2], co[2];
-		double crule_in = b->q2 > 2.0 ? 0.0 : b->q2 == 2.0 ? 1.0 : MK_CURV_MAX;
-		double crule_out = b->q1 > 2.0 ? 0.0 : b->q1 == 2.0 ? 1.0 : MK_CURV_MAX;
 		double Nin, iNin;
 		if (m[k] == 0.0) {
 			Nin = 0.0;
@@ -490,7 +500,7 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 			in->r[0] = 1.0; in->r[1] = 0.0;
 			in->w[0] = 1.0; in->w[1] = 0.0;
 			ci[0] = 1.0;
-			ci[1] = crule_in;
+			ci[1] = b->c2;
 		} else {
 			int bg = big[k];
 			double wm = R[k] * iopt[k], r = m[k] * ik[k];
@@ -501,9 +511,8 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 			in->w[bg] = wm;
 			in->w[1 - bg] = ratio[k] > 0.0 ? t[k] * r * wm : 0.0;
 			double cm = R[k] * wm;
-			ci[bg] = cm < MK_CURV_MAX ? cm : MK_CURV_MAX;
-			double ck = ratio[k] > 0.0 ? t[k] * r * r * cm : crule_in;
-			ci[1 - bg] = ck < MK_CURV_MAX ? ck : MK_CURV_MAX;
+			ci[bg] = mkCurvClamp(cm);
+			ci[1 - bg] = ratio[k] > 0.0 ? mkCurvClamp(t[k] * r * r * cm) : b->c2;
 		}
 		in->norm = Nin / len;
 		int bo = lr[k] >= 0.0 ? 0 : 1; /* N_in >= w: the inner norm is the larger */
@@ -514,7 +523,7 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 			out->r[0] = 1.0; out->r[1] = 0.0;
 			out->w[0] = 1.0; out->w[1] = 0.0;
 			co[0] = 1.0;
-			co[1] = crule_out;
+			co[1] = b->c1;
 			iN = INFINITY;
 		} else {
 			/* ro = k_out / m_out and its reciprocal, by the reciprocals */
@@ -529,9 +538,8 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 			double tro = ro > 0.0 ? to[k] * iro : 0.0;
 			out->w[1 - bo] = tro * wm;
 			double cm = Ro[k] * wm;
-			co[bo] = cm < MK_CURV_MAX ? cm : MK_CURV_MAX;
-			double ck = ro > 0.0 ? tro * iro * cm : crule_out;
-			co[1 - bo] = ck < MK_CURV_MAX ? ck : MK_CURV_MAX;
+			co[bo] = mkCurvClamp(cm);
+			co[1 - bo] = ro > 0.0 ? mkCurvClamp(tro * iro * cm) : b->c1;
 			iN = imo * iRo[k] * len;
 		}
 		/* the support point */
