@@ -33,6 +33,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "base2.h"
 #include "geom_inline.h"
 
 /* The functions below that are not marked inline: static in each unit that
@@ -465,26 +466,27 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 		Lc[k] = m[k] > 0.0 && w[k] > 0.0 ? log2(m[k] / w[k]) : m[k] > 0.0 ? INFINITY : -INFINITY;
 	}
 	double t[2], opt[2], iopt[2], Lp[2], R[2], iR[2], lr[2], to[2], opto[2], iopto[2], Lo[2], Ro[2], iRo[2];
-	for (int k = 0; k < 2; ++k)
-		t[k] = ratio[k] > 0.0 ? exp2(B[k]->q2 * L[k]) : 0.0;
+	/* Lp = log2(1 + t) and Lo = log2(1 + t_out) straight from the exponents
+	 * (mkSoftplus2), t and t_out beside them */
+	for (int k = 0; k < 2; ++k) {
+		double x = B[k]->q2 * L[k];
+		t[k] = ratio[k] > 0.0 ? mkExp2(x) : 0.0;
+		Lp[k] = ratio[k] > 0.0 ? mkSoftplus2(x, t[k]) : 0.0;
+	}
 	for (int k = 0; k < 2; ++k) {
 		opt[k] = 1.0 + t[k];
 		iopt[k] = 1.0 / opt[k];
-		Lp[k] = log2(opt[k]);
-	}
-	for (int k = 0; k < 2; ++k) {
-		R[k] = exp2(B[k]->iq2 * Lp[k]);
+		R[k] = mkExp2(B[k]->iq2 * Lp[k]);
 		iR[k] = 1.0 / R[k];
 		lr[k] = Lc[k] + B[k]->iq2 * Lp[k]; /* log2(N_in / w) */
-		to[k] = isfinite(lr[k]) ? exp2(-B[k]->q1 * fabs(lr[k])) : 0.0;
+		double x = -B[k]->q1 * fabs(lr[k]);
+		to[k] = isfinite(lr[k]) ? mkExp2(x) : 0.0;
+		Lo[k] = isfinite(lr[k]) ? mkSoftplus2(x, to[k]) : 0.0;
 	}
 	for (int k = 0; k < 2; ++k) {
 		opto[k] = 1.0 + to[k];
 		iopto[k] = 1.0 / opto[k];
-		Lo[k] = log2(opto[k]);
-	}
-	for (int k = 0; k < 2; ++k) {
-		Ro[k] = exp2(B[k]->iq1 * Lo[k]);
+		Ro[k] = mkExp2(B[k]->iq1 * Lo[k]);
 		iRo[k] = 1.0 / Ro[k];
 	}
 	double Aq[3] = { 0.0, 0.0, 0.0 };
