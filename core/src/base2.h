@@ -24,7 +24,6 @@
 #ifndef MINK_BASE2_H
 #define MINK_BASE2_H
 
-#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
