@@ -434,9 +434,12 @@ static inline void mkSupBody_EvalLanes(int nl, const mkSupBody *const b[MK_LANES
  * are one call each (mkSoftplus2) and 2^x is inline (mkExp2), both of
  * base2.h; the logarithms of the ratios stay glibc's log2 (an inline one
  * measured no faster). The values agree with mkNested's and
- * mkSupAt_Tangent's to a few ulps; the mkSupAt records are filled as there. */
+ * mkSupAt_Tangent's to a few ulps; the mkSupAt records are filled as there.
+ * With hess = 0 (a constant at each call, so that the compiler drops the
+ * dead part) the tangent Jacobian is not formed and A is not written: the
+ * support points, values and weights are the same to the last bit. */
 static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2, mkVec3 y, double len, mkVec3 n,
-	mkVec3 t1, mkVec3 t2, mkSupAt *a1, mkSupAt *a2, double A[3])
+	mkVec3 t1, mkVec3 t2, mkSupAt *a1, mkSupAt *a2, double A[3], int hess)
 {
 	const mkSupBody *B[2] = { b1, b2 };
 	mkSupAt *S[2] = { a1, a2 };
@@ -448,8 +451,10 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 		double sy = k == 0 ? 1.0 : -1.0, pr[3];
 		for (int j = 0; j < 3; ++j) {
 			pr[j] = sy * (P[0][j] * y.x + P[1][j] * y.y + P[2][j] * y.z);
-			pu[k][j] = P[0][j] * t1.x + P[1][j] * t1.y + P[2][j] * t1.z;
-			pw[k][j] = P[0][j] * t2.x + P[1][j] * t2.y + P[2][j] * t2.z;
+			if (hess) {
+				pu[k][j] = P[0][j] * t1.x + P[1][j] * t1.y + P[2][j] * t1.z;
+				pw[k][j] = P[0][j] * t2.x + P[1][j] * t2.y + P[2][j] * t2.z;
+			}
 			S[k]->sg[j] = pr[j] < 0.0 ? -1.0 : 1.0;
 		}
 		u[k] = fabs(pr[0]);
@@ -558,6 +563,8 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 			P[2][0] * g0 + P[2][1] * g1 + P[2][2] * g2);
 		a->s = sp;
 		a->h = k == 0 ? mkVec3_Dot(n, sp) : -mkVec3_Dot(n, sp);
+		if (!hess)
+			continue;
 		/* the tangent forms, as mkSupAt_Tangent */
 		double G0 = a->sg[0] * in->w[0], G1 = a->sg[1] * in->w[1];
 		double k1 = (b->q1 - 1.0) * iN;
@@ -572,9 +579,11 @@ static inline void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2,
 		Aq[1] += og * gu * gw + k2 * (ci[0] * x[0] * z[0] + ci[1] * x[1] * z[1]) + o01 * (gu * z[2] + gw * x[2]) + o11 * x[2] * z[2];
 		Aq[2] += og * gw * gw + k2 * (ci[0] * z[0] * z[0] + ci[1] * z[1] * z[1]) + 2.0 * o01 * gw * z[2] + o11 * z[2] * z[2];
 	}
-	A[0] = Aq[0];
-	A[1] = Aq[1];
-	A[2] = Aq[2];
+	if (hess) {
+		A[0] = Aq[0];
+		A[1] = Aq[1];
+		A[2] = Aq[2];
+	}
 }
 
 /* Both superquadrics' support at y1 and y2. */

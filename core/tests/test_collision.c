@@ -175,7 +175,21 @@ static void test_pair_pass(void)
 		mkTangents(n, &t1, &t2);
 		mkSupAt a1, a2;
 		double A[3];
-		mkSupBody_EvalHess2(&c.k1, &c.k2, mkVec3_Scale(n, len), len, n, t1, t2, &a1, &a2, A);
+		mkSupBody_EvalHess2(&c.k1, &c.k2, mkVec3_Scale(n, len), len, n, t1, t2, &a1, &a2, A, 1);
+		/* without the Jacobian (the solver's light points): the same
+		 * records to the last bit, and A left alone */
+		{
+			mkSupAt l1, l2;
+			double L[3] = { 7.0, 7.0, 7.0 };
+			mkSupBody_EvalHess2(&c.k1, &c.k2, mkVec3_Scale(n, len), len, n, t1, t2, &l1, &l2, L, 0);
+			const mkSupAt *lf[2] = { &l1, &l2 }, *af[2] = { &a1, &a2 };
+			for (int k = 0; k < 2; ++k) /* (v is an ellipsoid's, not written here) */
+				ENSURE(memcmp(&lf[k]->s, &af[k]->s, sizeof af[k]->s) == 0 && lf[k]->h == af[k]->h
+					&& memcmp(lf[k]->sg, af[k]->sg, sizeof af[k]->sg) == 0
+					&& memcmp(&lf[k]->in, &af[k]->in, sizeof af[k]->in) == 0
+					&& memcmp(&lf[k]->out, &af[k]->out, sizeof af[k]->out) == 0);
+			ENSURE(L[0] == 7.0 && L[1] == 7.0 && L[2] == 7.0);
+		}
 		/* support points and values: a few ulps of the size (11) */
 		mkVec3 r1 = mkVec3_Sub(mkBody3_Support(b1, n), b1.t), r2 = mkVec3_Sub(mkBody3_Support(b2, mkVec3_Neg(n)), b2.t);
 		ENSURE_NEAR(mkVec3_Length(mkVec3_Sub(a1.s, r1)), 0.0, 1e-12 * 11.0);
