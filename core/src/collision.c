@@ -85,7 +85,7 @@ static void mkNormal_Complete(const mkPairCtx *c, mkNormalState *st)
  * of a step, len = |m|; len = 1 for a unit m); for two superquadrics with
  * the tangent Jacobian when hess (formed in the same pass from m itself,
  * mkSupBody_EvalHess2), without it otherwise (then hasA = 0). */
-static void mkNormal_EvalAt(const mkPairCtx *c, mkVec3 m, double len, mkNormalState *st, int hess)
+MK_PAIR_INLINE void mkNormal_EvalAt(const mkPairCtx *c, mkVec3 m, double len, mkNormalState *st, int hess)
 {
 	mkVec3 n = len == 1.0 ? m : mkVec3_Scale(m, 1.0 / len);
 	st->n = n;
