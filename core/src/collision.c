@@ -8,6 +8,21 @@
  * loop of their own in 3D with no transcendental function (see
  * mkNormal_Ellipsoids). docs/collide.md describes the method. */
 #include "collision_pair.h"
+#include "collision_impl.h"
+#include <stdatomic.h>
+
+/* This file is compiled twice where the processor family allows
+ * (core/CMakeLists.txt): as itself, the portable build, and by
+ * collision_fma.c with MK_COLLISION_FMA_UNIT defined, for processors with
+ * the FMA instruction (-mavx2 -mfma, contraction on). The solver below
+ * exists once in each, under its own name (MK_NORMAL_AT); the public
+ * helpers at the end and the choice between the two only in the portable
+ * one. */
+#ifdef MK_COLLISION_FMA_UNIT
+#define MK_NORMAL_AT mkCollide3_NormalAtFma
+#else
+#define MK_NORMAL_AT mkCollide3_NormalAtPortable
+#endif
 
 /* Plain Newton steps tried before the trust region takes over. */
 #define MK_NEWTON_MAX 12
@@ -28,35 +43,6 @@
 #define MK_TR_CUT_MIN 0.1
 /* The golden ratio (the icosahedron of the overlap certificate). */
 #define MK_GOLDEN 1.6180339887498949
-
-const char *mkContact_Name(mkContact c)
-{
-	switch (c) {
-	case MK_CONTACT_SEPARATED: return "separated";
-	case MK_CONTACT_TOUCHING: return "touching";
-	case MK_CONTACT_OVERLAPPING: return "overlapping";
-	case MK_CONTACT_UNKNOWN: break;
-	}
-	return "unknown";
-}
-
-mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J)
-{
-	if (!(mkVec3_Dot(n, n) > 0.0)) {
-		if (J)
-			for (int i = 0; i < 3; ++i)
-				for (int j = 0; j < 3; ++j)
-					J->m[i][j] = NAN;
-		return mkVec3_Make(NAN, NAN, NAN);
-	}
-	mkSupBody k;
-	mkSupBody_Init(&k, &b);
-	mkSupAt a;
-	mkSupBody_Eval(&k, n, &a);
-	if (J)
-		mkSupAt_Jacobian(&k, &a, J->m);
-	return a.s;
-}
 
 /* ---- MinkSum (Normal) --------------------------------------------------- */
 
@@ -525,46 +511,6 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 	return *res <= tol;
 }
 
-double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
-{
-	return mkScale(&b1, &b2);
-}
-
-double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n)
-{
-	mkVec3 u = mkVec3_NormalizeInline(n);
-	mkBody3 c1 = b1, c2 = b2;
-	c1.t = c2.t = mkVec3_Make(0.0, 0.0, 0.0);
-	return mkVec3_Dot(u, mkVec3_Sub(b2.t, b1.t)) - mkBody3_SupportValue(c1, u)
-		- mkBody3_SupportValue(c2, mkVec3_Neg(u));
-}
-
-void mkCollision3_Clear(mkCollision3 *out)
-{
-	mkVec3 nan3 = mkVec3_Make(NAN, NAN, NAN);
-	out->status = MK_CONTACT_UNKNOWN;
-	out->distance = out->directional = out->bound = out->gap = out->residual = NAN;
-	out->normal = out->p1 = out->p2 = nan3;
-	out->scale = NAN;
-	out->iterations = -1;
-	out->restarts = -1;
-	out->certified = -1;
-	out->cert_evals = -1;
-}
-mkContact mkContact_FromDistance(double sd, double scale)
-{
-	if (isnan(sd))
-		return MK_CONTACT_UNKNOWN;
-	if (sd > MK_COLLIDE3_TOUCH_TOL * scale)
-		return MK_CONTACT_SEPARATED;
-	if (sd < -MK_COLLIDE3_TOUCH_TOL * scale)
-		return MK_CONTACT_OVERLAPPING;
-	return MK_CONTACT_TOUCHING;
-}
-
-/* The point where the segment from b's centre to x crosses b's boundary:
- * t + (x - t) / gauge(x), the gauge Psi^(eps1/2) (homogeneous of degree 1
- * in the body frame). x itself when x is the centre. */
 static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 {
 	double psi = mkBody3_Implicit(b, x);
@@ -1057,7 +1003,7 @@ static int mkNormal_Certify(const mkPairCtx *c, mkNormalState *best, double *res
 enum { MK_FIB = 64, MK_CAND = 29 + MK_FIB, MK_RESTARTS = 1, MK_SCAN_EXACT = 16 };
 
 /* The query from the centre line (start NULL) or from a given start. */
-static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
+mkResult MK_NORMAL_AT(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
 {
 	mkCollision3_Clear(out);
 	mkPairCtx c;
@@ -1270,9 +1216,115 @@ static mkResult mkCollide3_NormalAt(mkBody3 b1, mkBody3 b2, const mkVec3 *start,
 	return MK_OK;
 }
 
+/* ---- the public helpers and the choice of build -------------------------- */
+
+#ifndef MK_COLLISION_FMA_UNIT
+
+const char *mkContact_Name(mkContact c)
+{
+	switch (c) {
+	case MK_CONTACT_SEPARATED: return "separated";
+	case MK_CONTACT_TOUCHING: return "touching";
+	case MK_CONTACT_OVERLAPPING: return "overlapping";
+	case MK_CONTACT_UNKNOWN: break;
+	}
+	return "unknown";
+}
+
+mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J)
+{
+	if (!(mkVec3_Dot(n, n) > 0.0)) {
+		if (J)
+			for (int i = 0; i < 3; ++i)
+				for (int j = 0; j < 3; ++j)
+					J->m[i][j] = NAN;
+		return mkVec3_Make(NAN, NAN, NAN);
+	}
+	mkSupBody k;
+	mkSupBody_Init(&k, &b);
+	mkSupAt a;
+	mkSupBody_Eval(&k, n, &a);
+	if (J)
+		mkSupAt_Jacobian(&k, &a, J->m);
+	return a.s;
+}
+
+double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
+{
+	return mkScale(&b1, &b2);
+}
+
+double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n)
+{
+	mkVec3 u = mkVec3_NormalizeInline(n);
+	mkBody3 c1 = b1, c2 = b2;
+	c1.t = c2.t = mkVec3_Make(0.0, 0.0, 0.0);
+	return mkVec3_Dot(u, mkVec3_Sub(b2.t, b1.t)) - mkBody3_SupportValue(c1, u)
+		- mkBody3_SupportValue(c2, mkVec3_Neg(u));
+}
+
+void mkCollision3_Clear(mkCollision3 *out)
+{
+	mkVec3 nan3 = mkVec3_Make(NAN, NAN, NAN);
+	out->status = MK_CONTACT_UNKNOWN;
+	out->distance = out->directional = out->bound = out->gap = out->residual = NAN;
+	out->normal = out->p1 = out->p2 = nan3;
+	out->scale = NAN;
+	out->iterations = -1;
+	out->restarts = -1;
+	out->certified = -1;
+	out->cert_evals = -1;
+}
+mkContact mkContact_FromDistance(double sd, double scale)
+{
+	if (isnan(sd))
+		return MK_CONTACT_UNKNOWN;
+	if (sd > MK_COLLIDE3_TOUCH_TOL * scale)
+		return MK_CONTACT_SEPARATED;
+	if (sd < -MK_COLLIDE3_TOUCH_TOL * scale)
+		return MK_CONTACT_OVERLAPPING;
+	return MK_CONTACT_TOUCHING;
+}
+
+/* The point where the segment from b's centre to x crosses b's boundary:
+ * t + (x - t) / gauge(x), the gauge Psi^(eps1/2) (homogeneous of degree 1
+ * in the body frame). x itself when x is the centre. */
+mkResult mkCollide3_NormalImpl(mkImpl impl, mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
+{
+#if defined(MINK_HAVE_FMA_SOLVER)
+	if (impl == MK_IMPL_AVX2 || impl == MK_IMPL_AVX512)
+		return mkCollide3_NormalAtFma(b1, b2, start, out);
+#endif
+	(void)impl;
+	return mkCollide3_NormalAtPortable(b1, b2, start, out);
+}
+
+/* The solver's build for this processor: the FMA build where it was
+ * compiled and the processor has AVX2 and FMA (the kernels' AVX2 tier),
+ * the portable one otherwise; resolved once. */
+static mkImpl mkCollide3_Impl(void)
+{
+	static _Atomic int cached = -1;
+	int v = atomic_load_explicit(&cached, memory_order_relaxed);
+	if (v < 0) {
+		v = MK_IMPL_SCALAR;
+#if defined(MINK_HAVE_FMA_SOLVER)
+		if (mkImpl_Available(MK_IMPL_AVX2))
+			v = MK_IMPL_AVX2;
+#endif
+		atomic_store_explicit(&cached, v, memory_order_relaxed);
+	}
+	return (mkImpl)v;
+}
+
+const char *mkCollide3_Build(void)
+{
+	return mkCollide3_Impl() == MK_IMPL_SCALAR ? "portable" : "fma";
+}
+
 mkResult mkCollide3_Normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {
-	return mkCollide3_NormalAt(b1, b2, NULL, out);
+	return mkCollide3_NormalImpl(mkCollide3_Impl(), b1, b2, NULL, out);
 }
 
 mkResult mkCollide3_NormalFrom(mkBody3 b1, mkBody3 b2, mkVec3 start, mkCollision3 *out)
@@ -1285,5 +1337,7 @@ mkResult mkCollide3_NormalFrom(mkBody3 b1, mkBody3 b2, mkVec3 start, mkCollision
 		return MK_ERR_ARGUMENT;
 	}
 	mkVec3 n = mkVec3_NormalizeInline(mkVec3_Make(start.x / m, start.y / m, start.z / m));
-	return mkCollide3_NormalAt(b1, b2, &n, out);
+	return mkCollide3_NormalImpl(mkCollide3_Impl(), b1, b2, &n, out);
 }
+
+#endif /* MK_COLLISION_FMA_UNIT */

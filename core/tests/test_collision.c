@@ -30,6 +30,16 @@
  * for test_pair_pass. */
 #include "collision_pair.h"
 
+/* The solver's two builds (collision_impl.h): every test of MinkSum
+ * (Normal) below runs once per build this processor can run (main), through
+ * mk_normal; mkCollide3_NormalFrom goes through the library's own choice. */
+#include "collision_impl.h"
+static mkImpl mk_build = MK_IMPL_SCALAR;
+static mkResult mk_normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
+{
+	return mkCollide3_NormalImpl(mk_build, b1, b2, NULL, out);
+}
+
 /* The gauge of a placed body at x: Psi^(eps1/2), 1 on the boundary. */
 static double mk_gauge(mkBody3 b, mkVec3 x)
 {
@@ -259,7 +269,7 @@ static void test_fcl_cases(void)
 			for (int order = 0; order < 2; ++order) {
 				mkBody3 b1 = order ? B : A, b2 = order ? A : B;
 				mkCollision3 c;
-				mkResult r = mkCollide3_Normal(b1, b2, &c);
+				mkResult r = mk_normal(b1, b2, &c);
 				ENSURE(r == MK_OK);
 				/* Rounding of the rotated poses: a few ulps of the scale (~100). */
 				ENSURE_NEAR(c.distance, want, 1e-12 * c.scale);
@@ -300,7 +310,7 @@ static void test_spheres(void)
 		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), c1), b2 = mkBody3_Make(s2, mk_test_rotation(&seed), c2);
 		double dist = mkVec3_Length(mkVec3_Sub(c2, c1));
 		mkCollision3 c;
-		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		ENSURE(mk_normal(b1, b2, &c) == MK_OK);
 		/* A sphere containing the other's centre: the depth is still
 		 * r1 + r2 - |d| (translate along the centre line). */
 		ENSURE_NEAR(c.distance, dist - r1 - r2, 1e-12 * c.scale);
@@ -374,7 +384,7 @@ static void test_random_pairs(void)
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15), mk_test_uniform(&seed, 5, 15));
 		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), c1), b2 = mkBody3_Make(s2, mk_test_rotation(&seed), c2);
 		mkCollision3 c;
-		mkResult r = mkCollide3_Normal(b1, b2, &c);
+		mkResult r = mk_normal(b1, b2, &c);
 		if (r != MK_OK) {
 			++fails;
 			fprintf(stderr, "trial %d: %s (residual %g, iterations %d)\n", trial, mkResult_Name(r), c.residual, c.iterations);
@@ -437,7 +447,7 @@ static void test_boxlike_pairs(void)
 		mkBody3 b1, b2;
 		mk_test_pair3(&seed, 0.05, 0.3, &b1, &b2);
 		mkCollision3 c, ray;
-		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		ENSURE(mk_normal(b1, b2, &c) == MK_OK);
 		ENSURE(mkCollide3_Ray(b1, b2, &ray) == MK_OK);
 		if (c.status != MK_CONTACT_SEPARATED)
 			continue;
@@ -464,7 +474,7 @@ static void test_boxlike_pairs(void)
 		mkBody3 b3 = b2;
 		b3.t = mkVec3_Sub(b2.t, mkVec3_Scale(mkVec3_Normalize(mkVec3_Sub(b2.t, b1.t)), ray.directional));
 		mkCollision3 touch;
-		ENSURE(mkCollide3_Normal(b1, b3, &touch) == MK_OK);
+		ENSURE(mk_normal(b1, b3, &touch) == MK_OK);
 		ENSURE_LE(fabs(touch.distance), 1e-10 * touch.scale);
 	}
 	printf("box-like pairs: %d separated of 40, largest witness span over the distance %.2g of the scale, "
@@ -489,7 +499,7 @@ static void test_overlaps(void)
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3), mk_test_uniform(&seed, -3, 3));
 		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), mkVec3_Make(0, 0, 0)), b2 = mkBody3_Make(s2, mk_test_rotation(&seed), c2);
 		mkCollision3 c;
-		mkResult r = mkCollide3_Normal(b1, b2, &c);
+		mkResult r = mk_normal(b1, b2, &c);
 		ENSURE(r == MK_OK);
 		if (r != MK_OK)
 			continue;
@@ -536,7 +546,7 @@ static void test_boxlike_overlaps(void)
 		b2.t = mkVec3_Add(b1.t, mkVec3_Make(mk_test_uniform(&seed, -2, 2), mk_test_uniform(&seed, -2, 2),
 			mk_test_uniform(&seed, -2, 2)));
 		mkCollision3 c;
-		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		ENSURE(mk_normal(b1, b2, &c) == MK_OK);
 		if (c.status != MK_CONTACT_OVERLAPPING) {
 			ENSURE(c.status == MK_CONTACT_OVERLAPPING);
 			continue;
@@ -604,7 +614,7 @@ static void test_overlap_certificate_hand(void)
 		ENSURE_NEAR(mkCollide3_Bound(b1, b2, u), -8.95, 1e-13);
 		for (int order = 0; order < 2; ++order) {
 			mkCollision3 c;
-			ENSURE(mkCollide3_Normal(order ? b2 : b1, order ? b1 : b2, &c) == MK_OK);
+			ENSURE(mk_normal(order ? b2 : b1, order ? b1 : b2, &c) == MK_OK);
 			ENSURE_NEAR(c.distance, -8.95, 1e-12 * c.scale);
 			ENSURE(c.status == MK_CONTACT_OVERLAPPING);
 			ENSURE(c.certified == 1);
@@ -617,7 +627,7 @@ static void test_overlap_certificate_hand(void)
 		mkShape3 rod = { 6, 1, 1, 1, 1 };
 		mkBody3 b3 = mkBody3_Make(rod, Q, mkVec3_Make(0, 0, 0));
 		mkCollision3 c;
-		ENSURE(mkCollide3_Normal(b1, b3, &c) == MK_OK);
+		ENSURE(mk_normal(b1, b3, &c) == MK_OK);
 		ENSURE_NEAR(c.distance, -9.0, 1e-12 * c.scale);
 		ENSURE(c.certified == 0);
 		ENSURE(c.cert_evals >= MK_COLLIDE3_CERT_EVALS - 4);
@@ -661,8 +671,8 @@ static void test_ellipsoid_path(void)
 		mkBody3 g1 = e1, g2 = e2;
 		g1.shape.eps1 = g1.shape.eps2 = g2.shape.eps1 = g2.shape.eps2 = near1;
 		mkCollision3 ce, cg;
-		ENSURE(mkCollide3_Normal(e1, e2, &ce) == MK_OK);
-		ENSURE(mkCollide3_Normal(g1, g2, &cg) == MK_OK);
+		ENSURE(mk_normal(e1, e2, &ce) == MK_OK);
+		ENSURE(mk_normal(g1, g2, &cg) == MK_OK);
 		double diff = fabs(ce.distance - cg.distance) / ce.scale;
 		ENSURE_LE(diff, 1e-11);
 		if (diff > worst)
@@ -694,7 +704,7 @@ static void test_general_maps(void)
 		mkVec3 c2 = mkVec3_Make(mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9), mk_test_uniform(&seed, -9, 9));
 		mkBody3 b2 = mkBody3_Make(s2, mkMat3_Mul(S, mk_test_rotation(&seed)), c2);
 		mkCollision3 c;
-		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		ENSURE(mk_normal(b1, b2, &c) == MK_OK);
 		ENSURE_NEAR(mkCollide3_Bound(b1, b2, c.normal), c.distance, 1e-12 * c.scale);
 		ENSURE_LE(mk_brute(b1, b2) - c.distance, 1e-12 * c.scale);
 		ENSURE_NEAR(mk_gauge(b1, c.p1), 1.0, 1e-9);
@@ -720,7 +730,7 @@ static void test_near_touching(void)
 		mkVec3 dir = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)));
 		mkBody3 b2 = mkBody3_Make(s2, mk_test_rotation(&seed), mkVec3_Scale(dir, 30.0));
 		mkCollision3 c;
-		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+		ENSURE(mk_normal(b1, b2, &c) == MK_OK);
 		for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k) {
 			/* Translating B2 by t n changes sd by exactly t when n stays
 			 * the optimal normal, which it does (f(n) shifts by t for
@@ -730,7 +740,7 @@ static void test_near_touching(void)
 			mkBody3 b3 = b2;
 			b3.t = mkVec3_Add(b2.t, mkVec3_Scale(c.normal, want - c.distance));
 			mkCollision3 e;
-			mkResult r = mkCollide3_Normal(b1, b3, &e);
+			mkResult r = mk_normal(b1, b3, &e);
 			ENSURE(r == MK_OK);
 			ENSURE_NEAR(e.distance, want, 1e-12 * e.scale);
 			ENSURE(e.status == (want > 0 ? MK_CONTACT_SEPARATED : MK_CONTACT_OVERLAPPING));
@@ -779,8 +789,8 @@ static void test_warm_start(void)
 		mkMat3 turn = mkMat3_FromQuat(1.0, 0.005, -0.004, 0.003);
 		mkBody3 b2n = mkBody3_Make(b, mkMat3_Mul(turn, R), mkVec3_Add(c2, step));
 		mkCollision3 cold, prev, warm;
-		ENSURE(mkCollide3_Normal(b1, b2, &cold) == MK_OK);
-		ENSURE(mkCollide3_Normal(b1, b2n, &prev) == MK_OK);
+		ENSURE(mk_normal(b1, b2, &cold) == MK_OK);
+		ENSURE(mk_normal(b1, b2n, &prev) == MK_OK);
 		double ref = mk_brute(b1, b2);
 		mkVec3 starts[3] = { prev.normal,
 			mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)),
@@ -834,7 +844,7 @@ static void test_failures_reported(void)
 	mkBody3 b1 = mkBody3_Make(s, M, mkVec3_Make(0, 0, 0));
 	mkBody3 b2 = mkBody3_Make(s, M, mkVec3_Make(NAN, 0, 0));
 	mkCollision3 c;
-	mkResult r = mkCollide3_Normal(b1, b2, &c);
+	mkResult r = mk_normal(b1, b2, &c);
 	ENSURE(r != MK_OK);
 	ENSURE(c.status == MK_CONTACT_UNKNOWN);
 	ENSURE(isnan(c.distance));
@@ -843,10 +853,29 @@ static void test_failures_reported(void)
 	ENSURE(c.status == MK_CONTACT_UNKNOWN);
 	/* Coincident centres: a deep overlap, answered. */
 	b2.t = mkVec3_Make(0, 0, 0);
-	ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
+	ENSURE(mk_normal(b1, b2, &c) == MK_OK);
 	ENSURE_NEAR(c.distance, -2.0, 1e-12);
 	ENSURE(mkCollide3_Ray(b1, b2, &c) == MK_OK && c.status == MK_CONTACT_OVERLAPPING);
 	ENSURE(strcmp(mkContact_Name(MK_CONTACT_TOUCHING), "touching") == 0);
+}
+
+/* The two builds on the same pairs: the same status and certificate, the
+ * distance within rounding (1e-12 of the scale; measured at most 2.2e-16 on
+ * 2000 paper pairs), on separated and overlapping draws. */
+static void test_builds_agree(void)
+{
+	unsigned long long seed = 97;
+	for (int trial = 0; trial < 600; ++trial) {
+		mkBody3 b1, b2;
+		mk_test_pair3(&seed, 0.1, 1.9, &b1, &b2);
+		if (trial % 3 == 0)
+			b2.t = mkVec3_Scale(mkVec3_Add(b1.t, b2.t), 0.5); /* overlapping */
+		mkCollision3 p, f;
+		ENSURE(mkCollide3_NormalImpl(MK_IMPL_SCALAR, b1, b2, NULL, &p) == MK_OK);
+		ENSURE(mkCollide3_NormalImpl(MK_IMPL_AVX2, b1, b2, NULL, &f) == MK_OK);
+		ENSURE(p.status == f.status && p.certified == f.certified);
+		ENSURE_LE(fabs(p.distance - f.distance), 1e-12 * p.scale);
+	}
 }
 
 int main(void)
@@ -854,17 +883,29 @@ int main(void)
 	test_jacobian();
 	test_support_edges();
 	test_pair_pass();
-	test_fcl_cases();
-	test_spheres();
-	test_random_pairs();
-	test_boxlike_pairs();
-	test_overlaps();
-	test_boxlike_overlaps();
-	test_overlap_certificate_hand();
-	test_general_maps();
-	test_ellipsoid_path();
-	test_near_touching();
-	test_failures_reported();
+	int fma = mkImpl_Available(MK_IMPL_AVX2) && strcmp(mkCollide3_Build(), "fma") == 0;
+	for (int pass = 0; pass < 2; ++pass) {
+		if (pass == 1 && !fma) {
+			printf("test_collision: NOTE the solver's FMA build is not tested here (%s)\n",
+				mkImpl_Available(MK_IMPL_AVX2) ? "the library was configured without it" : "this processor lacks AVX2 or FMA");
+			break;
+		}
+		mk_build = pass == 0 ? MK_IMPL_SCALAR : MK_IMPL_AVX2;
+		printf("test_collision: MinkSum (Normal), %s build\n", pass == 0 ? "portable" : "fma");
+		test_fcl_cases();
+		test_spheres();
+		test_random_pairs();
+		test_boxlike_pairs();
+		test_overlaps();
+		test_boxlike_overlaps();
+		test_overlap_certificate_hand();
+		test_general_maps();
+		test_ellipsoid_path();
+		test_near_touching();
+		test_failures_reported();
+	}
 	test_warm_start();
+	if (fma)
+		test_builds_agree();
 	return mk_summary("test_collision");
 }

@@ -98,6 +98,7 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 	mkMeta_Set(meta, "certified", "1/0 when the entry certifies its answer (minksum-normal: sd in [bound, bound + gap], "
 		"for overlaps by a branch and bound over the sphere of normals within MK_COLLIDE3_GLOBAL_TOL of the scale; 0: "
 		"its budget ran out, the depth is then a local optimum with a wider bracket); empty for entries that do not");
+	mkMeta_Set(meta, "minksum_build", mkCollide3_Build());
 	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread; a run "
 		"under 1 ms is repeated at once on the same pair and the faster of the two kept (the first call after "
 		"the other entries' calls finds its code and the pair out of cache)");
