@@ -511,6 +511,9 @@ static int mkNormal_Solve(const mkPairCtx *c, mkVec3 n0, mkNormalState *st, int 
 	return *res <= tol;
 }
 
+/* The point where the segment from b's centre to x crosses b's boundary:
+ * t + (x - t) / gauge(x), the gauge Psi^(eps1/2) (homogeneous of degree 1
+ * in the body frame). x itself when x is the centre. */
 static mkVec3 mkRadial(mkBody3 b, mkVec3 x)
 {
 	double psi = mkBody3_Implicit(b, x);
