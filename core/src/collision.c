@@ -9,7 +9,6 @@
  * mkNormal_Ellipsoids). docs/collide.md describes the method. */
 #include "collision_pair.h"
 #include "collision_impl.h"
-#include <stdatomic.h>
 
 /* This file is compiled twice where the processor family allows
  * (core/CMakeLists.txt): as itself, the portable build, and by
@@ -1289,9 +1288,7 @@ mkContact mkContact_FromDistance(double sd, double scale)
 	return MK_CONTACT_TOUCHING;
 }
 
-/* The point where the segment from b's centre to x crosses b's boundary:
- * t + (x - t) / gauge(x), the gauge Psi^(eps1/2) (homogeneous of degree 1
- * in the body frame). x itself when x is the centre. */
+/* The solver in the build impl names (collision_impl.h). */
 mkResult mkCollide3_NormalImpl(mkImpl impl, mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
 {
 #if defined(MINK_HAVE_FMA_SOLVER)
@@ -1303,21 +1300,16 @@ mkResult mkCollide3_NormalImpl(mkImpl impl, mkBody3 b1, mkBody3 b2, const mkVec3
 }
 
 /* The solver's build for this processor: the FMA build where it was
- * compiled and the processor has AVX2 and FMA (the kernels' AVX2 tier),
- * the portable one otherwise; resolved once. */
+ * compiled and the processor has AVX2 and FMA (the kernels' AVX2 tier;
+ * mkImpl_Available reads the CPU features libgcc resolved at start-up),
+ * the portable one otherwise. */
 static mkImpl mkCollide3_Impl(void)
 {
-	static _Atomic int cached = -1;
-	int v = atomic_load_explicit(&cached, memory_order_relaxed);
-	if (v < 0) {
-		v = MK_IMPL_SCALAR;
 #if defined(MINK_HAVE_FMA_SOLVER)
-		if (mkImpl_Available(MK_IMPL_AVX2))
-			v = MK_IMPL_AVX2;
+	if (mkImpl_Available(MK_IMPL_AVX2))
+		return MK_IMPL_AVX2;
 #endif
-		atomic_store_explicit(&cached, v, memory_order_relaxed);
-	}
-	return (mkImpl)v;
+	return MK_IMPL_SCALAR;
 }
 
 const char *mkCollide3_Build(void)
