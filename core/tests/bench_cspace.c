@@ -18,7 +18,7 @@
 #include <string.h>
 #include <time.h>
 
-#include <mink/mink.h>
+#include <mink/cspace.h>
 
 #include "ensure.h"
 

@@ -28,12 +28,12 @@
 
 /* The solver's internal pair evaluation (static functions of the header),
  * for test_pair_pass. */
-#include "collision_pair.h"
+#include "collide/collision_pair.h"
 
 /* The solver's two builds (collision_impl.h): every test of MinkSum
  * (Normal) below runs once per build this processor can run (main), through
  * mk_normal; mkCollide3_NormalFrom goes through the library's own choice. */
-#include "collision_impl.h"
+#include "collide/collision_impl.h"
 static mkImpl mk_build = MK_IMPL_SCALAR;
 static mkResult mk_normal(mkBody3 b1, mkBody3 b2, mkCollision3 *out)
 {

@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <mink/mink.h>
+#include <mink/cspace.h>
 
 #include "ensure.h"
 

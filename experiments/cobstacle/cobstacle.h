@@ -42,7 +42,7 @@
 #ifndef MINK_EXP_COBSTACLE_H
 #define MINK_EXP_COBSTACLE_H
 
-#include <mink/mink.h>
+#include <mink/cspace.h>
 #include <mink_exp/exp.h>
 
 #define MK_COBSTACLE_SCHEMA 1

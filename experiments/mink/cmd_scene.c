@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <mink/mink.h>
+#include <mink/cspace.h>
 #include <mink_exp/args.h>
 #include <mink_exp/outfile.h>
 #include <mink_exp/shard.h>

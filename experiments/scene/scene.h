@@ -43,7 +43,7 @@
 #ifndef MINK_EXP_SCENE_H
 #define MINK_EXP_SCENE_H
 
-#include <mink/mink.h>
+#include <mink/cspace.h>
 #include <mink_exp/exp.h>
 
 #include "cobstacle.h"

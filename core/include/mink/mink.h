@@ -1,4 +1,7 @@
-/* mink/mink.h - the whole public C interface of the core library. */
+/* mink/mink.h - the public C interface of the pure library, libmink: bodies,
+ * SPEC strings, the closed-form sums, metrics, the method interface and the
+ * collision queries. It never allocates and starts no threads. Scenes and
+ * certified C-obstacles are the C-space library's: mink/cspace.h. */
 #ifndef MINK_MINK_H
 #define MINK_MINK_H
 
@@ -9,8 +12,6 @@
 #include "metrics.h"
 #include "spec.h"
 #include "method.h"
-#include "scene.h"
-#include "cobstacle.h"
 #include "collision.h"
 
 #endif

@@ -1,4 +1,4 @@
-/* ref_base2.c - the inline base-2 functions of core/src/base2.h against
+/* ref_base2.c - the inline base-2 functions of core/src/base/base2.h against
  * 256-bit MPFR, and their tables against the generator.
  *
  *  - mkExp2(x): within 0.52 ulp of 2^x for normal results (x in [-1022, 1023)),
@@ -8,14 +8,14 @@
  *    [-60, 0], on a fine grid, at every segment boundary and its
  *    neighbours, across the switch to the series at -16, at -0 and 0;
  *  - the tables: base2_tables (core/reference/tools) run again writes a file
- *    identical to the committed core/src/base2_tables.h (argv[1] is the
+ *    identical to the committed core/src/base/base2_tables.h (argv[1] is the
  *    generator, argv[2] the committed file).
  * The bounds are what the functions' derivations promise (base2.h); the
  * test prints the largest errors it met and, for comparison, glibc's exp2
  * and log2(1 + exp2(x)) on the same points. */
 #define _POSIX_C_SOURCE 200809L
 #include "reftest.h"
-#include "base2.h"
+#include "base/base2.h"
 
 #include <mpfr.h>
 #include <stdlib.h>

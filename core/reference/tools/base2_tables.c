@@ -1,5 +1,5 @@
-/* base2_tables.c - writes core/src/base2_tables.h, the tables of the inline
- * base-2 functions of core/src/base2.h, from 256-bit MPFR:
+/* base2_tables.c - writes core/src/base/base2_tables.h, the tables of the inline
+ * base-2 functions of core/src/base/base2.h, from 256-bit MPFR:
  *
  *  - mkExp2_Tab: 2^(j/128), j = 0 .. 127, rounded, with the relative
  *    rounding error (2^(j/128) - T) / T beside it, and MK_EXP2_C1 .. C5,
@@ -125,7 +125,7 @@ int main(int argc, char **argv)
 {
 	if (argc > 2 || (argc == 2 && (argv[1][0] == '-'))) {
 		fprintf(stderr, "usage: base2_tables [OUT]\n"
-			"Writes the tables of core/src/base2.h (base2_tables.h) from 256-bit MPFR\n"
+			"Writes the tables of core/src/base/base2.h (base2_tables.h) from 256-bit MPFR\n"
 			"to OUT, or to standard output.\n");
 		return argc == 2 && (argv[1][1] == 'h' || argv[1][1] == '-') ? 0 : 2;
 	}

@@ -1,0 +1,512 @@
+/* scene.c - scene files, box and cylinder bodies and their superquadric
+ * models (derivation of the exponent and the scale: docs/scene.md). */
+#include "mink/scene.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/message.h"
+
+const char *mkSceneBody_KindName(const mkSceneBody *b)
+{
+	if (!b) return "?";
+	if (b->kind == MK_SCENE_BOX) return "box";
+	if (b->kind == MK_SCENE_CYLINDER) return "cylinder";
+	return mkKind_Name(b->spec.kind);
+}
+
+/* ---- bodies ------------------------------------------------------------------- */
+
+/* A comma-separated list of numbers; returns how many (at most max), -1 on a
+ * malformed list. */
+static int number_list(const char *s, size_t len, double *out, int max)
+{
+	char buf[512];
+	if (len == 0 || len >= sizeof buf) return -1;
+	memcpy(buf, s, len);
+	buf[len] = 0;
+	int n = 0;
+	char *p = buf;
+	for (;;) {
+		char *end;
+		double v = strtod(p, &end);
+		if (end == p || (*end != ',' && *end != 0)) return -1;
+		if (n < max) out[n] = v;
+		++n;
+		if (!*end) break;
+		p = end + 1;
+	}
+	return n;
+}
+
+
+mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneBody *out,
+	char *msg, size_t msglen)
+{
+	if (!what) what = "body";
+	if (!text || !out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: no SPEC given", what);
+	if (dim != 2 && dim != 3) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: dimension %d: must be 2 or 3", what, dim);
+	memset(out, 0, sizeof *out);
+	out->dim = dim;
+	const char *p = text;
+	while (isspace((unsigned char)*p)) ++p;
+	const char *ks = p;
+	while (*p && !isspace((unsigned char)*p)) ++p;
+	size_t kl = (size_t)(p - ks);
+	int box = kl == 3 && strncmp(ks, "box", 3) == 0;
+	int cyl = kl == 8 && strncmp(ks, "cylinder", 8) == 0;
+	if (!box && !cyl) {
+		mkResult r = mkSpec_Parse(text, dim, what, &out->spec, msg, msglen);
+		if (r != MK_OK && msg && strstr(msg, "unknown kind"))
+			mkFail(r, msg, msglen, "%s: unknown kind '%.*s': must be one of %s", what, (int)(kl > 64 ? 64 : kl), ks,
+				dim == 2 ? "circle, ellipse, superellipse, box" : "sphere, ellipsoid, superquadric, box, cylinder");
+		out->kind = MK_SCENE_SMOOTH;
+		return r;
+	}
+	if (cyl && dim != 3)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind 'cylinder' is 3D but the scene is 2D: use circle, "
+			"ellipse, superellipse or box", what);
+	out->kind = box ? MK_SCENE_BOX : MK_SCENE_CYLINDER;
+	/* Shape keys here; the pose keys go to mkSpec_Parse behind a unit body,
+	 * which validates them with the same messages as every SPEC. */
+	char pose[4096];
+	int pn = snprintf(pose, sizeof pose, "%s", dim == 2 ? "ellipse a=1 b=1" : "ellipsoid a=1 b=1 c=1");
+	const char *allowed = box ? (dim == 2 ? "size, rot, shear, M, at" : "size, quat, M, at") : "r, h, quat, M, at";
+	int have_size = 0, have_r = 0, have_h = 0;
+	while (*p) {
+		while (isspace((unsigned char)*p)) ++p;
+		if (!*p) break;
+		const char *ts = p;
+		while (*p && !isspace((unsigned char)*p)) ++p;
+		size_t tl = (size_t)(p - ts);
+		const char *eq = memchr(ts, '=', tl);
+		if (!eq)
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: '%.*s' is not of the form key=value", what,
+				(int)(tl > 64 ? 64 : tl), ts);
+		size_t nl = (size_t)(eq - ts), vl = tl - nl - 1;
+		const char *v = eq + 1;
+#define KEY_IS(s) (nl == strlen(s) && strncmp(ts, s, nl) == 0)
+		if ((box && KEY_IS("size")) || (cyl && (KEY_IS("r") || KEY_IS("h")))) {
+			const char *key = box ? "size" : (KEY_IS("r") ? "r" : "h");
+			int *seen = box ? &have_size : (KEY_IS("r") ? &have_r : &have_h);
+			if (*seen) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key);
+			*seen = 1;
+			if (vl == 0) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key);
+			double vals[3];
+			int want = box ? dim : 1;
+			int got = number_list(v, vl, vals, 3);
+			if (got < 0)
+				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key,
+					(int)(vl > 64 ? 64 : vl), v, want > 1 ? " list" : "");
+			if (got != want)
+				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
+					key, want, want > 1 ? "s" : "", got);
+			for (int i = 0; i < want; ++i) {
+				double lo = MK_SCENE_SIZE_MIN, hi = MK_SCENE_SIZE_MAX;
+				if (cyl && KEY_IS("r")) { lo = MK_AXIS_MIN; hi = MK_AXIS_MAX; }
+				if (!(isfinite(vals[i]) && vals[i] >= lo && vals[i] <= hi)) {
+					char field[32];
+					if (want > 1) snprintf(field, sizeof field, "%s[%d]", key, i + 1);
+					else snprintf(field, sizeof field, "%s", key);
+					return mkFail(MK_ERR_RANGE, msg, msglen, "%s.%s = %.17g is out of range: must be a finite "
+						"number in [%.10g, %.10g]", what, field, vals[i], lo, hi);
+				}
+			}
+			if (box) for (int i = 0; i < dim; ++i) out->size[i] = vals[i];
+			else if (KEY_IS("r")) out->size[0] = vals[0];
+			else out->size[1] = vals[0];
+			continue;
+		}
+		int pose_key = KEY_IS("M") || KEY_IS("at") || (dim == 2 && (KEY_IS("rot") || KEY_IS("shear")))
+			|| (dim == 3 && KEY_IS("quat"));
+		if (!pose_key)
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
+				what, (int)(nl > 32 ? 32 : nl), ts, box ? "box" : "cylinder", allowed);
+#undef KEY_IS
+		if (pn + 1 + (int)tl >= (int)sizeof pose)
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, (int)sizeof pose);
+		pn += snprintf(pose + pn, sizeof pose - (size_t)pn, " %.*s", (int)tl, ts);
+	}
+	if (box && !have_size)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: box needs size=%s (full side lengths)", what,
+			dim == 2 ? "l,w" : "l,w,h");
+	if (cyl && (!have_r || !have_h))
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: cylinder needs %s", what, !have_r ? "r (the radius)" : "h (the full height)");
+	mkResult r = mkSpec_Parse(pose, dim, what, &out->spec, msg, msglen);
+	if (r != MK_OK) return r;
+	return MK_OK;
+}
+
+/* ---- models -------------------------------------------------------------------- */
+
+/* Largest eigenvalue of a symmetric 2x2 [p r; r q]. */
+static double eig2_max(double p, double q, double r)
+{
+	return 0.5 * (p + q) + sqrt(0.25 * (p - q) * (p - q) + r * r);
+}
+
+/* The largest |M x| over the placed shape's points x (the support radius
+ * about its centre), exact for boxes, an upper bound (exact for rigid maps)
+ * for cylinders. */
+static double reach2(mkMat2 M, double a, double b)
+{
+	double best = 0.0;
+	for (int s = 0; s < 4; ++s) {
+		mkVec2 c = {(s & 1) ? -a : a, (s & 2) ? -b : b};
+		double l = mkVec2_Length(mkMat2_MulVec(M, c));
+		if (l > best) best = l;
+	}
+	return best;
+}
+
+static double reach3_box(mkMat3 M, double a, double b, double c)
+{
+	double best = 0.0;
+	for (int s = 0; s < 8; ++s) {
+		mkVec3 v = {(s & 1) ? -a : a, (s & 2) ? -b : b, (s & 4) ? -c : c};
+		double l = mkVec3_Length(mkMat3_MulVec(M, v));
+		if (l > best) best = l;
+	}
+	return best;
+}
+
+/* Rim points R M12 w +- c M e3 (|w| = 1): |.|^2 <= R^2 s^2 + 2 R c |M12^T M e3| + c^2 |M e3|^2
+ * with s the largest singular value of the first two columns M12. */
+static double reach3_cyl(mkMat3 M, double R, double c)
+{
+	mkVec3 c1 = {M.m[0][0], M.m[1][0], M.m[2][0]}, c2 = {M.m[0][1], M.m[1][1], M.m[2][1]};
+	mkVec3 c3 = {M.m[0][2], M.m[1][2], M.m[2][2]};
+	double s2 = eig2_max(mkVec3_Dot(c1, c1), mkVec3_Dot(c2, c2), mkVec3_Dot(c1, c2));
+	double cr = hypot(mkVec3_Dot(c1, c3), mkVec3_Dot(c2, c3));
+	return sqrt(R * R * s2 + 2.0 * R * c * cr + c * c * mkVec3_Dot(c3, c3));
+}
+
+/* Exponent eps = 2/p of the model for the relative error f = delta / D, with
+ * `terms` the number of p-power terms of the norm (2: box2D, cylinder; 3:
+ * box3D). Inner: the deviation is D (1 - terms^(-1/p)); outer (scaled by
+ * terms^(1/p)): at most D (terms^(1/p) - 1). Capped at 1 (the ellipse),
+ * which the closed forms treat exactly and cheaply. */
+static double model_eps(double f, int terms, mkBound side)
+{
+	double lt = log((double)terms);
+	double inv_p = side == MK_BOUND_INNER ? (f >= 1.0 ? INFINITY : -log1p(-f) / lt) : log1p(f) / lt;
+	/* a hair smaller, so that rounding cannot push the error above delta */
+	double eps = 2.0 * inv_p * (1.0 - 1e-9);
+	return eps > 1.0 ? 1.0 : eps;
+}
+
+static double model_error(double D, double eps, int terms, mkBound side)
+{
+	double e = pow((double)terms, 0.5 * eps); /* terms^(1/p) */
+	return side == MK_BOUND_INNER ? D * (1.0 - 1.0 / e) : D * (e - 1.0);
+}
+
+mkResult mkSceneBody2_Model(const mkSceneBody *b, double delta, mkBound side, mkBody2 *out,
+	double *error, char *msg, size_t msglen)
+{
+	if (!b || !out || !error || b->dim != 2) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: not a 2D body");
+	if (b->kind == MK_SCENE_SMOOTH) { *out = b->spec.body2; *error = 0.0; return MK_OK; }
+	if (!(delta > 0.0) || !isfinite(delta)) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: tolerance %g must be positive", delta);
+	double a = 0.5 * b->size[0], bb = 0.5 * b->size[1];
+	mkMat2 M = b->spec.body2.M;
+	double D = reach2(M, a, bb);
+	double eps = model_eps(delta / D, 2, side);
+	if (!(eps >= MK_EPS_MIN))
+		return mkFail(MK_ERR_RANGE, msg, msglen, "box model: tolerance %g is too small for a box of reach %g: "
+			"the model exponent would be %g, below %g", delta, D, eps, MK_EPS_MIN);
+	double s = side == MK_BOUND_INNER ? 1.0 : pow(2.0, 0.5 * eps);
+	mkShape2 sh = {s * a, s * bb, eps};
+	*out = mkBody2_Make(sh, M, b->spec.body2.t);
+	*error = model_error(D, eps, 2, side);
+	return MK_OK;
+}
+
+mkResult mkSceneBody3_Model(const mkSceneBody *b, double delta, mkBound side, mkBody3 *out,
+	double *error, char *msg, size_t msglen)
+{
+	if (!b || !out || !error || b->dim != 3) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: not a 3D body");
+	if (b->kind == MK_SCENE_SMOOTH) { *out = b->spec.body3; *error = 0.0; return MK_OK; }
+	if (!(delta > 0.0) || !isfinite(delta)) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: tolerance %g must be positive", delta);
+	mkMat3 M = b->spec.body3.M;
+	int terms;
+	double a, bb, c, D;
+	if (b->kind == MK_SCENE_BOX) {
+		a = 0.5 * b->size[0]; bb = 0.5 * b->size[1]; c = 0.5 * b->size[2];
+		D = reach3_box(M, a, bb, c);
+		terms = 3;
+	} else {
+		a = bb = b->size[0]; c = 0.5 * b->size[1];
+		D = reach3_cyl(M, a, c);
+		terms = 2;
+	}
+	double eps = model_eps(delta / D, terms, side);
+	if (!(eps >= MK_EPS_MIN))
+		return mkFail(MK_ERR_RANGE, msg, msglen, "%s model: tolerance %g is too small for a body of reach %g: "
+			"the model exponent would be %g, below %g", mkSceneBody_KindName(b), delta, D, eps, MK_EPS_MIN);
+	double s = side == MK_BOUND_INNER ? 1.0 : pow((double)terms, 0.5 * eps);
+	/* box: |x/a|^p + |y/b|^p + |z/c|^p (eps1 = eps2 = eps); cylinder: the
+	 * round cross-section eps2 = 1 with rho^p + |z/c|^p (eps1 = eps). */
+	mkShape3 sh = {s * a, s * bb, s * c, eps, b->kind == MK_SCENE_BOX ? eps : 1.0};
+	*out = mkBody3_Make(sh, M, b->spec.body3.t);
+	*error = model_error(D, eps, terms, side);
+	return MK_OK;
+}
+
+/* ---- scene files ---------------------------------------------------------------- */
+
+void mkScene_Free(mkScene *s)
+{
+	if (!s) return;
+	free(s->obstacles);
+	free(s->headings);
+	free(s->rotations);
+	memset(s, 0, sizeof *s);
+}
+
+mkMat2 mkScene2_Orientation(const mkScene *s, int o) { return mkMat2_Rotation(s->headings[o]); }
+mkMat3 mkScene3_Orientation(const mkScene *s, int o) { return s->rotations[o]; }
+
+/* The next line of text (without its newline and comment), trimmed;
+ * returns 0 at the end. */
+static int next_line(const char **cursor, char *buf, size_t len, int *too_long)
+{
+	const char *p = *cursor;
+	if (!*p) return 0;
+	const char *e = strchr(p, '\n');
+	size_t n = e ? (size_t)(e - p) : strlen(p);
+	*cursor = e ? e + 1 : p + n;
+	const char *hash = memchr(p, '#', n);
+	if (hash) n = (size_t)(hash - p);
+	*too_long = n >= len;
+	if (*too_long) n = len - 1;
+	memcpy(buf, p, n);
+	buf[n] = 0;
+	while (n && isspace((unsigned char)buf[n - 1])) buf[--n] = 0;
+	size_t s = 0;
+	while (buf[s] && isspace((unsigned char)buf[s])) ++s;
+	if (s) memmove(buf, buf + s, n - s + 1);
+	return 1;
+}
+
+static int grow(void **arr, int *cap, int need, size_t elem)
+{
+	if (need <= *cap) return 1;
+	int nc = *cap ? *cap * 2 : 16;
+	while (nc < need) nc *= 2;
+	void *p = realloc(*arr, (size_t)nc * elem);
+	if (!p) return 0;
+	*arr = p;
+	*cap = nc;
+	return 1;
+}
+
+static int is_rotation(mkMat3 R)
+{
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) {
+			double d = 0.0;
+			for (int k = 0; k < 3; ++k) d += R.m[k][i] * R.m[k][j];
+			if (!(fabs(d - (i == j)) <= 1e-6)) return 0;
+		}
+	return fabs(mkMat3_Det(R) - 1.0) <= 1e-6;
+}
+
+/* A quaternion "w,x,y,z" (4 numbers already parsed) into *R; 0 if zero or not finite. */
+static int quat_rotation(const double *q, mkMat3 *R)
+{
+	for (int i = 0; i < 4; ++i)
+		if (!isfinite(q[i]) || fabs(q[i]) > 1e150) return 0;
+	*R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+	return mkMat3_IsFinite(*R);
+}
+
+mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
+{
+	if (!out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene");
+	memset(out, 0, sizeof *out);
+	if (!text) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene text");
+	char *line = malloc(MK_SCENE_LINE_MAX);
+	if (!line) return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	mkScene s;
+	memset(&s, 0, sizeof s);
+	int ocap = 0, hcap = 0, rcap = 0, robot_line = 0, orient_line = 0;
+	int lineno = 0, too_long = 0;
+	const char *cur = text;
+	mkResult r = MK_OK;
+	char sub[900];
+#define BAD(code, ...) do { r = (code); char b_[1024]; snprintf(b_, sizeof b_, __VA_ARGS__); \
+	mkFail(r, msg, msglen, "line %d: %s", lineno, b_); goto done; } while (0)
+	while (next_line(&cur, line, MK_SCENE_LINE_MAX, &too_long)) {
+		++lineno;
+		if (too_long) BAD(MK_ERR_ARGUMENT, "line is longer than %d characters", MK_SCENE_LINE_MAX - 1);
+		if (!line[0]) continue;
+		char *arg = line;
+		while (*arg && !isspace((unsigned char)*arg)) ++arg;
+		size_t kl = (size_t)(arg - line);
+		while (isspace((unsigned char)*arg)) ++arg;
+#define KW(w) (kl == strlen(w) && strncmp(line, w, kl) == 0)
+		if (!s.dim) {
+			if (!KW("dim"))
+				BAD(MK_ERR_ARGUMENT, "the first line must be 'dim 2' or 'dim 3', got '%.40s'", line);
+			if (strcmp(arg, "2") == 0) s.dim = 2;
+			else if (strcmp(arg, "3") == 0) s.dim = 3;
+			else BAD(MK_ERR_RANGE, "dim = '%.40s' is out of range: must be 2 or 3", arg);
+			continue;
+		}
+		if (!*arg && !KW("dim"))
+			BAD(MK_ERR_ARGUMENT, "'%.*s' needs a value", (int)(kl > 40 ? 40 : kl), line);
+		if (KW("dim")) {
+			BAD(MK_ERR_ARGUMENT, "dim is given twice (first line only)");
+		} else if (KW("robot")) {
+			if (robot_line) BAD(MK_ERR_ARGUMENT, "robot is given twice (first on line %d): a scene has one robot", robot_line);
+			robot_line = lineno;
+			if (mkSceneBody_Parse(arg, s.dim, "robot", &s.robot, sub, sizeof sub) != MK_OK)
+				BAD(MK_ERR_RANGE, "%s", sub);
+		} else if (KW("obstacle")) {
+			char what[32];
+			snprintf(what, sizeof what, "obstacle%d", s.obstacle_count);
+			if (s.obstacle_count >= 100000000) BAD(MK_ERR_RANGE, "more than 100000000 obstacles");
+			if (!grow((void **)&s.obstacles, &ocap, s.obstacle_count + 1, sizeof *s.obstacles))
+				BAD(MK_ERR_MEMORY, "out of memory");
+			mkResult br = mkSceneBody_Parse(arg, s.dim, what, &s.obstacles[s.obstacle_count], sub, sizeof sub);
+			if (br != MK_OK) BAD(br, "%s", sub);
+			++s.obstacle_count;
+		} else if (KW("headings") || KW("quaternions") || KW("rotations")) {
+			const char *kw = KW("headings") ? "headings" : KW("quaternions") ? "quaternions" : "rotations";
+			if (s.dim == 2 && !KW("headings"))
+				BAD(MK_ERR_ARGUMENT, "'%s' is for 3D scenes: a 2D scene gives 'headings N' or 'headings a1,a2,...'", kw);
+			if (s.dim == 3 && KW("headings"))
+				BAD(MK_ERR_ARGUMENT, "'headings' is for 2D scenes: a 3D scene gives 'quaternions w,x,y,z;...' or 'rotations FILE'");
+			if (orient_line) BAD(MK_ERR_ARGUMENT, "orientations are given twice (first on line %d)", orient_line);
+			orient_line = lineno;
+			if (KW("headings")) {
+				if (!strchr(arg, ',') && !strchr(arg, '.') && !strchr(arg, 'e') && !strchr(arg, 'E')) {
+					char *end;
+					errno = 0;
+					long n = strtol(arg, &end, 10);
+					if (*end || end == arg || errno || n < 1 || n > MK_SCENE_HEADINGS_MAX)
+						BAD(MK_ERR_RANGE, "headings = '%.40s' is out of range: must be an integer N in [1, %d] "
+							"or a comma-separated list of angles in radians", arg, MK_SCENE_HEADINGS_MAX);
+					if (!grow((void **)&s.headings, &hcap, (int)n, sizeof *s.headings)) BAD(MK_ERR_MEMORY, "out of memory");
+					for (long k = 0; k < n; ++k) s.headings[k] = 2.0 * MK_PI * (double)k / (double)n;
+					s.orientation_count = (int)n;
+				} else {
+					char *p = arg;
+					for (;;) {
+						char *end;
+						double v = strtod(p, &end);
+						if (end == p || (*end != ',' && *end != 0))
+							BAD(MK_ERR_ARGUMENT, "headings: item %d '%.20s' is not a number: must be an angle in radians",
+								s.orientation_count + 1, p);
+						if (!isfinite(v) || fabs(v) > MK_SCENE_ANGLE_MAX)
+							BAD(MK_ERR_RANGE, "headings: item %d = %g is out of range: must be a finite angle in radians "
+								"in [-%g, %g]", s.orientation_count + 1, v, MK_SCENE_ANGLE_MAX, MK_SCENE_ANGLE_MAX);
+						if (!grow((void **)&s.headings, &hcap, s.orientation_count + 1, sizeof *s.headings))
+							BAD(MK_ERR_MEMORY, "out of memory");
+						s.headings[s.orientation_count++] = v;
+						if (!*end) break;
+						p = end + 1;
+					}
+				}
+			} else if (KW("quaternions")) {
+				char *p = arg;
+				for (;;) {
+					char *semi = strchr(p, ';');
+					size_t len = semi ? (size_t)(semi - p) : strlen(p);
+					while (len && isspace((unsigned char)*p)) { ++p; --len; }
+					while (len && isspace((unsigned char)p[len - 1])) --len;
+					double q[4];
+					int got = number_list(p, len, q, 4);
+					int item = s.orientation_count + 1;
+					if (got != 4)
+						BAD(MK_ERR_ARGUMENT, "quaternions: item %d '%.*s' must be 4 comma-separated numbers w,x,y,z",
+							item, (int)(len > 40 ? 40 : len), p);
+					mkMat3 R;
+					if (!quat_rotation(q, &R))
+						BAD(MK_ERR_RANGE, "quaternions: item %d = %g,%g,%g,%g is out of range: must be a nonzero "
+							"quaternion with finite components of magnitude at most 1e150", item, q[0], q[1], q[2], q[3]);
+					if (!grow((void **)&s.rotations, &rcap, s.orientation_count + 1, sizeof *s.rotations))
+						BAD(MK_ERR_MEMORY, "out of memory");
+					s.rotations[s.orientation_count++] = R;
+					if (!semi || !semi[1]) break;
+					p = semi + 1;
+				}
+			} else {
+				if (strlen(arg) >= sizeof s.rotations_file)
+					BAD(MK_ERR_ARGUMENT, "rotations: file name longer than %d characters", (int)sizeof s.rotations_file - 1);
+				snprintf(s.rotations_file, sizeof s.rotations_file, "%s", arg);
+				s.rotations_line = lineno;
+			}
+		} else {
+			BAD(MK_ERR_ARGUMENT, "unknown keyword '%.*s': must be one of dim, robot, obstacle, %s",
+				(int)(kl > 40 ? 40 : kl), line, s.dim == 2 ? "headings" : "quaternions, rotations");
+		}
+#undef KW
+	}
+	if (!s.dim) BAD(MK_ERR_ARGUMENT, "empty scene: the first line must be 'dim 2' or 'dim 3'");
+	if (!robot_line) BAD(MK_ERR_ARGUMENT, "no robot: a scene needs one line 'robot SPEC'");
+	if (!orient_line)
+		BAD(MK_ERR_ARGUMENT, "no orientations: %s", s.dim == 2 ? "a 2D scene needs 'headings N' or 'headings a1,a2,...'"
+			: "a 3D scene needs 'quaternions w,x,y,z;...' or 'rotations FILE'");
+#undef BAD
+done:
+	free(line);
+	if (r != MK_OK) {
+		mkScene_Free(&s);
+		return r;
+	}
+	*out = s;
+	return MK_OK;
+}
+
+mkResult mkScene_SetRotations(mkScene *s, const char *text, const char *name, char *msg, size_t msglen)
+{
+	if (!s || s->dim != 3 || !text) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "rotations: not a 3D scene");
+	if (!name) name = "rotations";
+	char line[4096];
+	const char *cur = text;
+	int lineno = 0, too_long = 0, count = 0, cap = 0, first = 1;
+	mkMat3 *rot = NULL;
+	while (next_line(&cur, line, sizeof line, &too_long)) {
+		++lineno;
+		if (!line[0]) continue;
+		if (too_long) { free(rot); return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: line too long", name, lineno); }
+		double v[9];
+		int got = number_list(line, strlen(line), v, 9);
+		if (got < 0 && first) { first = 0; continue; } /* a header */
+		first = 0;
+		mkMat3 R;
+		if (got == 9) {
+			for (int i = 0; i < 9; ++i) R.m[i / 3][i % 3] = v[i];
+			if (!is_rotation(R)) {
+				free(rot);
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s:%d: the matrix is not a rotation: must have R^T R = I and "
+					"det R = 1 to within 1e-6", name, lineno);
+			}
+		} else if (got == 4) {
+			if (!quat_rotation(v, &R)) {
+				free(rot);
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s:%d: quaternion %g,%g,%g,%g is out of range: must be nonzero "
+					"and finite", name, lineno, v[0], v[1], v[2], v[3]);
+			}
+		} else {
+			free(rot);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: expected 9 comma-separated numbers r11,...,r33 or a "
+				"quaternion w,x,y,z, got '%.40s'", name, lineno, line);
+		}
+		if (!grow((void **)&rot, &cap, count + 1, sizeof *rot)) {
+			free(rot);
+			return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+		}
+		rot[count++] = R;
+	}
+	if (!count) { free(rot); return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: no rotations in the file", name); }
+	free(s->rotations);
+	s->rotations = rot;
+	s->orientation_count = count;
+	return MK_OK;
+}

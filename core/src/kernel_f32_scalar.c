@@ -1,2 +1,0 @@
-/* kernel_f32_scalar.c - the scalar single-precision kernels on double arrays (kernel_scalarf.h). */
-#include "kernel_scalarf.h"
