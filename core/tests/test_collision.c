@@ -26,9 +26,9 @@
 #include "draw3.h"
 #include "ensure.h"
 
-/* The solver's internal pair evaluation (static functions of the header),
+/* The solver's internal pair evaluation (static functions of pair.h),
  * for test_pair_pass. */
-#include "collide/collision_pair.h"
+#include "collide/pair.h"
 
 /* The solver's two builds (collision_impl.h): every test of MinkSum
  * (Normal) below runs once per build this processor can run (main), through
