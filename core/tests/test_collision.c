@@ -109,8 +109,8 @@ static void test_support_edges(void)
 				 * must stay exact, since with an exponent near 0 a component
 				 * of 1e-17 (a rotation's rounding) already moves the support
 				 * point by a macroscopic amount (w = r^(q-1), q - 1 = 0.005:
-				 * (1e-17)^0.005 = 0.82): the nearly kinked support functions
-				 * of docs/collide.md, where two codes legitimately differ. */
+				 * (1e-17)^0.005 = 0.82): a nearly kinked support function,
+				 * where two codes legitimately differ. */
 				int rotated = kind >= 3 && trial % 2;
 				mkBody3 b = mkBody3_Make(s, rotated ? mk_test_rotation(&seed) : mkMat3_Identity(), mkVec3_Make(1, 2, 3));
 				if (kind < 3) {

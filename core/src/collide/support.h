@@ -34,13 +34,13 @@
 #include "base/base2.h"
 #include "base/geom_inline.h"
 
-/* The functions below that are not marked inline: static in each unit that
- * includes this header, the ones a unit does not use left out without a
+/* MK_PAIR_FN: a function of these headers that is static in each unit that
+ * includes them; a unit that does not use it leaves it out without a
  * warning. MK_PAIR_INLINE marks the few that Newton's loop calls at every
- * step: inlined there even where the compiler would not (measured: the
- * pass called with its flag hess from two places was left out of line, and
- * inlining it with the state's evaluation and the tangent basis made the
- * loop 2 % faster). */
+ * step: inlined there even where the compiler would not (left to itself it
+ * kept the pair pass, called with its flag hess from two places, out of
+ * line; inlined with the state's evaluation and the tangent basis, the
+ * loop is about 2 % faster). */
 #if defined(__GNUC__)
 #define MK_PAIR_FN static __attribute__((unused))
 #define MK_PAIR_INLINE static inline __attribute__((always_inline))
