@@ -86,7 +86,10 @@ static inline void mkSupBody_EvalLanes(int nl, const mkSupBody *const b[MK_LANES
  * mkSupAt_Tangent's to a few ulps; the mkSupAt records are filled as there.
  * With hess = 0 (a constant at each call, so that the compiler drops the
  * dead part) the tangent Jacobian is not formed and A is not written: the
- * support points, values and weights are the same to the last bit. */
+ * support points, values and weights are the same to the last bit.
+ * One long function on purpose: the hot kernel of every Newton step, whose
+ * stages share both bodies' reciprocals, weights and projections (helpers
+ * would pass a dozen of them each way), inlined into its caller whole. */
 MK_PAIR_INLINE void mkSupBody_EvalHess2(const mkSupBody *b1, const mkSupBody *b2, mkVec3 y, double len, mkVec3 n,
 	mkVec3 t1, mkVec3 t2, mkSupAt *a1, mkSupAt *a2, double A[3], int hess)
 {
