@@ -264,7 +264,7 @@ static double mkPatch_Upper(const mkPatch *p, mkVec3 xs, double goal, double sca
  * evaluations used. The computed midpoints lie within a few ulps of their
  * great circles, so the children cover their parent but for slivers that
  * thin, over which f changes by less than the rounding margin added. */
-static int mkNormal_Certify(const mkPairCtx *c, mkNormalState *best, double *res, int *iters, double tol,
+MK_PAIR_INLINE int mkNormal_Certify(const mkPairCtx *c, mkNormalState *best, double *res, int *iters, double tol,
 	double *upper, int *evals)
 {
 	mkPatch stack[20 + 3 * MK_CERT_LEVELS];

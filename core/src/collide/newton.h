@@ -339,7 +339,7 @@ static int mkNormal_Ellipsoids(const mkPairCtx *c, mkVec3 n, mkNormalState *st, 
  * towards 1 after each step taken as tried.
  * Returns 1 when converged; 0 to hand over, st then at the last accepted
  * point and *radius, after a rejected step, short enough to exclude it. */
-static int mkNormal_Newton(const mkPairCtx *c, mkNormalState *st, int *iters, double *res, double *radius)
+MK_PAIR_INLINE int mkNormal_Newton(const mkPairCtx *c, mkNormalState *st, int *iters, double *res, double *radius)
 {
 	double tol = MK_COLLIDE3_RESIDUAL_TOL * c->scale;
 	mkNormalState buf, *cur = st, *nxt = &buf;
@@ -418,7 +418,7 @@ static int mkNormal_Newton(const mkPairCtx *c, mkNormalState *st, int *iters, do
  * against it), starting with the given radius. Returns 1 on convergence,
  * 2 when stalled in value at a kink (f converged, see below), 0 otherwise;
  * *iters and *res as for mkNormal_Solve. */
-static int mkNormal_Trust(const mkPairCtx *c, mkNormalState *st, int *iters, double *res, double radius, int first)
+MK_PAIR_INLINE int mkNormal_Trust(const mkPairCtx *c, mkNormalState *st, int *iters, double *res, double radius, int first)
 {
 	double tol = MK_COLLIDE3_RESIDUAL_TOL * c->scale;
 	int rejects = 0;

@@ -20,7 +20,7 @@
  * answer stands only when it completes; the residual reported is then the
  * width of its bracket. Returns 1 when certified; *upper receives the
  * upper bound of sd. */
-static int mkNormal_CertifyBest(const mkPairCtx *c, mkNormalBest *b, int *iters, double *upper, mkCollision3 *out)
+MK_PAIR_INLINE int mkNormal_CertifyBest(const mkPairCtx *c, mkNormalBest *b, int *iters, double *upper, mkCollision3 *out)
 {
 	int evals = 0;
 	int done = mkNormal_Certify(c, &b->st, &b->res, iters,
@@ -37,7 +37,7 @@ static int mkNormal_CertifyBest(const mkPairCtx *c, mkNormalBest *b, int *iters,
 
 /* The query from the centre line (start NULL) or from a given unit start,
  * as mkCollide3_Normal and mkCollide3_NormalFrom describe. */
-static mkResult mkNormal_Query(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
+MK_PAIR_INLINE mkResult mkNormal_Query(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out)
 {
 	mkCollision3_Clear(out);
 	mkPairCtx c;
