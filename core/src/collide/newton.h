@@ -19,7 +19,7 @@
 /* A plain Newton step at most this long (about radians) lands, on most
  * pairs, where the solve ends: there its tests need the residual and the
  * value only (the predicted gain of test (d) is bounded without the
- * Jacobian, see mkNormal_Solve). Such a point is evaluated without the
+ * Jacobian, see mkNormal_Newton). Such a point is evaluated without the
  * tangent Jacobian (a pass about a fifth cheaper); where it does not end the
  * solve, the Jacobian is formed from its records (mkNormal_Hessian), as for
  * pairs with an ellipsoid. */
@@ -235,7 +235,7 @@ static int mkSolveSym3(double C[3][3], mkVec3 g, mkVec3 *z)
 
 /* Plain Newton for a pair of ellipsoids, all in 3D and in registers: per
  * step two products Q n, two square roots, a 3 x 3 solve. The same tests
- * as mkNormal_Solve (the residual, or an interior step that cannot gain
+ * as mkNormal_Newton (the residual, or an interior step that cannot gain
  * more than 1e-17 of the scale); the first step that fails them (Hessian
  * not positive definite, a step beyond MK_TR_MAX or gaining less than a
  * quarter of its prediction) hands over. Fills st at the last accepted
@@ -375,7 +375,7 @@ MK_PAIR_INLINE int mkNormal_Newton(const mkPairCtx *c, mkNormalState *st, int *i
 		double slope = cur->g[0] * z0 + cur->g[1] * z1; /* g.z > 0: an ascent direction */
 		double pred = 0.5 * slope;
 		if (zlen <= 1e-14 || pred <= 1e-17 * c->scale || mkNormal_Settled(pred, *res, cur->f, c->scale)) {
-			/* The convergence tests (b), (d) of the trust region below. */
+			/* The convergence tests (b), (d) of the trust region (mkNormal_Trust). */
 			done = 1;
 			break;
 		}
