@@ -177,12 +177,12 @@ static mkCollide mkCollide_Mink(mkBody3 b1, mkBody3 b2, int max_iter, int normal
 	return out;
 }
 
-mkCollide mkCollide_MinkRay(mkBody3 b1, mkBody3 b2, int max_iter)
+mkCollide mkCollide_RayLm(mkBody3 b1, mkBody3 b2, int max_iter)
 {
 	return mkCollide_Mink(b1, b2, max_iter, 0);
 }
 
-mkCollide mkCollide_MinkNormal(mkBody3 b1, mkBody3 b2, int max_iter)
+mkCollide mkCollide_NormalLm(mkBody3 b1, mkBody3 b2, int max_iter)
 {
 	return mkCollide_Mink(b1, b2, max_iter, 1);
 }

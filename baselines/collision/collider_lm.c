@@ -20,13 +20,13 @@ static mkResult mkFinish(mkCollide c, mkCollision3 *out)
 static mkResult mkRunNormalLm(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
 {
 	(void)s;
-	return mkFinish(mkCollide_MinkNormal(b1, b2, MK_COLLIDE_LM_MAX_ITER), out);
+	return mkFinish(mkCollide_NormalLm(b1, b2, MK_COLLIDE_LM_MAX_ITER), out);
 }
 
 static mkResult mkRunRayLm(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
 {
 	(void)s;
-	return mkFinish(mkCollide_MinkRay(b1, b2, MK_COLLIDE_LM_MAX_ITER), out);
+	return mkFinish(mkCollide_RayLm(b1, b2, MK_COLLIDE_LM_MAX_ITER), out);
 }
 
 static mkResult mkRunCommon(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)

@@ -23,8 +23,8 @@ static mkVec3 mkMul(mkMat3 R, mkVec3 v) { return mkMat3_MulVec(R, v); }
  * queries); ASC runs on ellipsoid pairs. */
 static void mkCheckAll(const char *what, mkBody3 b1, mkBody3 b2, int expect, int gjk, int residuals)
 {
-	mkCollide r = mkCollide_MinkRay(b1, b2, MK_COLLIDE_LM_MAX_ITER);
-	mkCollide n = mkCollide_MinkNormal(b1, b2, MK_COLLIDE_LM_MAX_ITER);
+	mkCollide r = mkCollide_RayLm(b1, b2, MK_COLLIDE_LM_MAX_ITER);
+	mkCollide n = mkCollide_NormalLm(b1, b2, MK_COLLIDE_LM_MAX_ITER);
 	mkCollide c = mkCollide_CommonNormal(b1, b2, MK_COLLIDE_LM_MAX_ITER);
 	mkCollide i = mkCollide_Implicit(b1, b2, 1e-10);
 	int before = mk_failures;
@@ -87,7 +87,7 @@ static void mkTestSpheres(void)
 		char what[64];
 		snprintf(what, sizeof what, "spheres |d| = %.2f", dd[k]);
 		mkCheckAll(what, b1, b2, expect[k], gjk[k], 1);
-		mkCollide r = mkCollide_MinkRay(b1, b2, MK_COLLIDE_LM_MAX_ITER);
+		mkCollide r = mkCollide_RayLm(b1, b2, MK_COLLIDE_LM_MAX_ITER);
 		mkVec3 x = { r.x.x - c1.x, r.x.y - c1.y, r.x.z - c1.z };
 		ENSURE_NEAR(sqrt(x.x * x.x + x.y * x.y + x.z * x.z), 3.5, 1e-12);
 		/* the referee's min g is -(|d| - 3.5) for spheres: distance or depth */
@@ -244,8 +244,8 @@ static void mkTestRandom(int ellipsoid, int count, int count_implicit, const dou
 		mkCollide_GridVertices(b2, 10, ux, uy, uz, x2, y2, z2);
 		mkVertices3 v1 = { x1, y1, z1, 100 }, v2 = { x2, y2, z2, 100 };
 		int v[6] = {
-			mkCollide_MinkRay(b1, b2, MK_COLLIDE_LM_MAX_ITER).collide,
-			mkCollide_MinkNormal(b1, b2, MK_COLLIDE_LM_MAX_ITER).collide,
+			mkCollide_RayLm(b1, b2, MK_COLLIDE_LM_MAX_ITER).collide,
+			mkCollide_NormalLm(b1, b2, MK_COLLIDE_LM_MAX_ITER).collide,
 			mkCollide_CommonNormal(b1, b2, MK_COLLIDE_LM_MAX_ITER).collide,
 			k < count_implicit ? mkCollide_Implicit(b1, b2, 1e-10).collide : truth,
 			mkCollide_GJK(v1, v2, 100).collide,

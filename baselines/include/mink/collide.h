@@ -7,10 +7,14 @@
  * mkCollide by value. Fields that a method does not produce are NaN (reals)
  * or -1 (integers). Nothing is allocated except inside Ipopt and libccd.
  *
- *  MinkRay       LM over B1's two surface angles phi: (x(phi) - c1) x d = 0,
- *                x(phi) the closed-form contact-space point, d = c2 - c1.
- *  MinkNormal    LM over the same angles: n(phi) x (c2 - x(phi)) = 0, n the
- *                unit outward normal of the contact space at x(phi).
+ *  RayLm         MinkSum (Ray) as the paper solves it (the core's is
+ *                mkCollide3_Ray): LM over B1's two surface angles phi:
+ *                (x(phi) - c1) x d = 0, x(phi) the closed-form
+ *                contact-space point, d = c2 - c1.
+ *  NormalLm      MinkSum (Normal) as the paper solves it (the core's is
+ *                mkCollide3_Normal): LM over the same angles:
+ *                n(phi) x (c2 - x(phi)) = 0, n the unit outward normal
+ *                of the contact space at x(phi).
  *  CommonNormal  LM over both bodies' angles (4 unknowns, 6 residuals):
  *                n1 x n2 = 0, n1 x (x2 - x1) = 0.
  *  Implicit      Ipopt: min |x1 - x2|^2 s.t. Psi1(x1)^eps1 <= 1,
@@ -37,9 +41,9 @@ typedef struct mkCollide {
 	int iterations;   /* solver iterations (LM: Jacobian evaluations) */
 	int status;       /* the solver's own return code (cminpack info, Ipopt
 	                     ApplicationReturnStatus, libccd's result); -1 none */
-	mkVec3 p1, p2;    /* witness points on B1 and B2 (B2's for MinkRay and
-	                     MinkNormal: B1's kissing point moved by c2 - x) */
-	mkVec3 x;         /* MinkRay/MinkNormal: the contact-space point */
+	mkVec3 p1, p2;    /* witness points on B1 and B2 (B2's for RayLm and
+	                     NormalLm: B1's kissing point moved by c2 - x) */
+	mkVec3 x;         /* RayLm/NormalLm: the contact-space point */
 } mkCollide;
 
 /* Iteration limit of the LM queries (the paper's fsolve MaxIterations). */
@@ -54,8 +58,8 @@ typedef struct mkCollide {
 MK_API mkVec3 mkCollide_AnglesToUnit(double eta, double omega);
 MK_API void mkCollide_UnitToAngles(mkVec3 v, double *eta, double *omega);
 
-MK_API mkCollide mkCollide_MinkRay(mkBody3 b1, mkBody3 b2, int max_iter);
-MK_API mkCollide mkCollide_MinkNormal(mkBody3 b1, mkBody3 b2, int max_iter);
+MK_API mkCollide mkCollide_RayLm(mkBody3 b1, mkBody3 b2, int max_iter);
+MK_API mkCollide mkCollide_NormalLm(mkBody3 b1, mkBody3 b2, int max_iter);
 MK_API mkCollide mkCollide_CommonNormal(mkBody3 b1, mkBody3 b2, int max_iter);
 /* tol: Ipopt's convergence tolerance (its scaled NLP error). */
 MK_API mkCollide mkCollide_Implicit(mkBody3 b1, mkBody3 b2, double tol);

@@ -1,20 +1,19 @@
 /* base2.h - two base-2 elementary functions, inline, for the superquadric
- * pair pass of the collision solver (collision_pair.h, mkSupBody_EvalHess2):
+ * pair pass of the collision solver (collide/pair.h, mkSupBody_EvalHess2):
  *
  *   mkExp2(x)        2^x, within 0.52 ulp for normal results (0.509 the
  *                    largest core.ref.base2 meets; glibc's exp2 0.507);
  *   mkSoftplus2(x)   log2(1 + 2^x) for x <= 0, within 2.2e-16 absolute
  *                    (1.96e-16 met; log2(1 + exp2(x)) by glibc 2.07e-16),
- *                    in one step where the pass had log2(1 + exp2(x)).
+ *                    in one step instead of log2(1 + exp2(x)).
  *
  * Why not glibc's: the pass's nested norms chain a logarithm and an
- * exponential per stage, and with the rest of the pass made cheap (the
- * eighth pass, docs/collide.md) the calls themselves weigh: the fused
- * softplus is one table row and a degree-7 polynomial where the pair
- * exp2 then log2 were two dependent calls, and an inline exp2 needs no
- * call, so no live register is saved around it. The library is built for
- * baseline x86-64 (no FMA): both evaluate short Estrin trees of multiplies
- * and adds. core.ref.base2 checks both against 256-bit MPFR, and that the
+ * exponential per stage, and with the rest of the pass cheap the calls
+ * themselves weigh: the fused softplus is one table row and a degree-7
+ * polynomial where exp2 then log2 are two dependent calls, and an inline
+ * exp2 needs no call, so no live register is saved around it. The library
+ * is built for baseline x86-64 (no FMA): both evaluate short Estrin trees
+ * of multiplies and adds. core.ref.base2 checks both against 256-bit MPFR, and that the
  * tables (base2_tables.h, written by core/reference/tools/base2_tables.c)
  * are what the generator writes.
  *

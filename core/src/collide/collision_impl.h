@@ -1,5 +1,5 @@
 /* collision_impl.h - inside the library: MinkSum (Normal)'s solver in its
- * two builds (collision.c compiled as itself, and again by collision_fma.c
+ * two builds (normal.h compiled by normal_portable.c, and by normal_fma.c
  * for processors with the FMA instruction) and the call that picks one.
  * The tests call both builds through mkCollide3_NormalImpl. */
 #ifndef MINK_COLLISION_IMPL_H

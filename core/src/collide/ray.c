@@ -1,7 +1,8 @@
-/* collision_ray.c - mink/collision.h: MinkSum (Ray), the boundary of the
+/* ray.c - mink/collision.h: MinkSum (Ray), the boundary of the
  * contact space on the centre line by a trust-region Newton method on the
- * closed-form support map (collision_pair.h). docs/collide.md describes it. */
-#include "collide/collision_pair.h"
+ * closed-form support map (pair.h, steps.h). */
+#include "collide/pair.h"
+#include "collide/steps.h"
 
 /* ---- MinkSum (Ray) ------------------------------------------------------ */
 
