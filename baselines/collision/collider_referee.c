@@ -472,7 +472,7 @@ static mkResult mkRun(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3
 {
 	(void)s;
 	mkRefState st = { b1, b2, -INFINITY, mkVec3_Make(1, 0, 0), 0 };
-	double scale = mkCollide3_Scale(b1, b2);
+	double scale = mkCollide3_PairSize(b1, b2);
 	out->scale = scale;
 	if (!isfinite(scale))
 		return MK_ERR_UNSUPPORTED;

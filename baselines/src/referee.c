@@ -580,8 +580,8 @@ static mkResult support_check(const Dense *d1, const Dense *d2, const double *sh
 	double factor = opt && opt->tol_factor > 0 ? opt->tol_factor : 1.0;
 	double tmax = 0;
 	for (int i = 0; i < dim; ++i) tmax = fmax(tmax, fabs(shift[i]));
-	v->scale = tmax + d1->rmax + d2->rmax;
-	v->tol = factor * MK_REFEREE_ULPS * (DBL_EPSILON / 2) * v->scale;
+	v->extent = tmax + d1->rmax + d2->rmax;
+	v->tol = factor * MK_REFEREE_ULPS * (DBL_EPSILON / 2) * v->extent;
 	double worst = -HUGE_VAL;
 	for (int k = 0; k < pts->count; ++k) {
 		double p[3] = {pts->x[k] - shift[0], pts->y[k] - shift[1], dim == 3 ? pts->z[k] - shift[2] : 0.0};
@@ -623,8 +623,8 @@ static mkResult support_check(const Dense *d1, const Dense *d2, const double *sh
 		snprintf(v->message, sizeof v->message,
 			"%s: %d points; depth %.3g, excess %.3g (relative to scale %.6g; allowance %.3g); "
 			"bound gap %.3g (dense samples alone %.3g); worst point %d",
-			v->pass ? "PASS" : "FAIL", v->points, v->depth / v->scale, v->excess / v->scale, v->scale,
-			v->tol / v->scale, v->gap / v->scale, v->dense_gap / v->scale, v->worst);
+			v->pass ? "PASS" : "FAIL", v->points, v->depth / v->extent, v->excess / v->extent, v->extent,
+			v->tol / v->extent, v->gap / v->extent, v->dense_gap / v->extent, v->worst);
 	return MK_OK;
 }
 

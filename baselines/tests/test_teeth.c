@@ -61,7 +61,7 @@ int main(void)
 	ENSURE(mkReferee2_Check(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &good, NULL, &v) == MK_OK);
 	/* A move of 1e-11 of the scale, some twenty times the allowance: out
 	 * along the normal, then in. */
-	double d = 1e-11 * v.scale;
+	double d = 1e-11 * v.extent;
 	bad = copy(&good);
 	bad.x[k] += d * nrm.x;
 	bad.y[k] += d * nrm.y;
@@ -73,8 +73,8 @@ int main(void)
 	 * tangent line, so the normal alone cannot see it; it lies outside the
 	 * set by about slide^2 / (2 rho), which the fan of nearby directions
 	 * does see. */
-	bad.x[k] = good.x[k] - 0.05 * v.scale * nrm.y;
-	bad.y[k] = good.y[k] + 0.05 * v.scale * nrm.x;
+	bad.x[k] = good.x[k] - 0.05 * v.extent * nrm.y;
+	bad.y[k] = good.y[k] + 0.05 * v.extent * nrm.x;
 	ENSURE(judge2(&mkMethod_ClosedGradient, c, MK_SET_CONTACT, n, &bad) == 0);
 	mkRefereeOptions nofan = {2048, 0, 1};
 	ENSURE(mkReferee2_Check(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &bad, &nofan, &v) == MK_OK);
@@ -130,7 +130,7 @@ int main(void)
 	mkVec3 nn;
 	mkReferee3_Point(e->a, (mkVec3){u3[k3], u3[n3 * n3 + k3], u3[2 * n3 * n3 + k3]}, &nn);
 	bad = copy(&good);
-	d = 1e-11 * v.scale;
+	d = 1e-11 * v.extent;
 	bad.x[k3] += d * nn.x;
 	bad.y[k3] += d * nn.y;
 	bad.z[k3] += d * nn.z;

@@ -53,7 +53,7 @@ static double dFrob(const refMat *M, int dim)
 	return sqrt(s);
 }
 
-double refSum_Scale(const refBody *b1, const refBody *b2, int plus)
+double refSum_Size(const refBody *b1, const refBody *b2, int plus)
 {
 	int dim = b1->s.dim;
 	double S = dNorm(b1->t, dim) + dFrob(&b1->M, dim) * dNorm(b1->s.a, dim)
@@ -761,7 +761,7 @@ int refSum_Distance(const refBody *b1, const refBody *b2, int plus,
 		if (dPhi(b1, b2, plus, p, h) >= dPhi(b1, b2, plus, p, n0))
 			memcpy(n0, h, sizeof h);
 	}
-	distanceFrom(b1, b2, plus, p, n0, NULL, refSum_Scale(b1, b2, plus), 0, out);
+	distanceFrom(b1, b2, plus, p, n0, NULL, refSum_Size(b1, b2, plus), 0, out);
 	return 0;
 }
 
@@ -1001,7 +1001,7 @@ int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
 	if (!b1 || !b2)
 		return -1;
 	int dim = b1->s.dim;
-	out->scale = refSum_Scale(b1, b2, plus);
+	out->size = refSum_Size(b1, b2, plus);
 	if (count < 0 || (count > 0 && (!x || !y || (dim == 3 && !z))))
 		return -1;
 	int hints = ux && uy && (dim == 2 || uz);
@@ -1034,7 +1034,7 @@ int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
 				oom = 1;
 				break;
 			}
-			c->bound = fabs(f) + 1e-9 * out->scale + 1e-6 * fabs(f);
+			c->bound = fabs(f) + 1e-9 * out->size + 1e-6 * fabs(f);
 		}
 		qsort(cand, (size_t)pending, sizeof *cand, candCompare);
 		for (int i = 0; i < pending && !oom; ++i) {
@@ -1043,9 +1043,9 @@ int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
 			int j = cand[i].index;
 			double p[3] = { x[j], y[j], dim == 3 ? z[j] : 0.0 };
 			refDistance d;
-			int done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 1, &d);
+			int done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->size, 1, &d);
 			if (done == 0) {
-				done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d);
+				done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->size, 0, &d);
 				out->refined++;
 			}
 			if (done < 0) {
@@ -1072,7 +1072,7 @@ int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
 		double ud[3] = { ux[i], uy[i], dim == 3 ? uz[i] : 0.0 };
 		refDistance d;
 		out->searched++;
-		int done = memoDistance(memo, b1, b2, plus, p, NULL, ud, out->scale, 1, &d);
+		int done = memoDistance(memo, b1, b2, plus, p, NULL, ud, out->size, 1, &d);
 		if (done < 0) {
 			oom = 1;
 		} else if (done) {
@@ -1095,7 +1095,7 @@ int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
 		int j = cand[i].index;
 		double p[3] = { x[j], y[j], dim == 3 ? z[j] : 0.0 };
 		refDistance d;
-		if (memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d) < 0) {
+		if (memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->size, 0, &d) < 0) {
 			oom = 1;
 			break;
 		}
@@ -1105,8 +1105,8 @@ int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
 			accMax = d.accuracy;
 	}
 	if (out->worst >= 0) {
-		out->errorRel = out->errorAbs / out->scale;
-		out->accuracy = accMax / out->scale;
+		out->errorRel = out->errorAbs / out->size;
+		out->accuracy = accMax / out->size;
 	}
 	free(cand);
 	if (oom) {
@@ -1184,7 +1184,7 @@ int refSum_Condition(const refBody *b1, const refBody *b2, int plus,
 	if (!ud)
 		return -1;
 	refSample_Params(dim, samples, ud, ud + count, dim == 3 ? ud + 2 * count : NULL);
-	double S = refSum_Scale(b1, b2, plus);
+	double S = refSum_Size(b1, b2, plus);
 	refBody *p1 = malloc(sizeof(refBody) * 2 * (size_t)draws);
 	if (!p1) {
 		free(ud);

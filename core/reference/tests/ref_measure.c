@@ -88,7 +88,7 @@ static void checkCircles(void)
 			 * orthogonal, and would make the discs ellipses at 1e-17 */
 			refBody b1 = makeBody(dim, 1.25, 1.25, 1.25, 1.0, 1.0, 0.0, t1);
 			refBody b2 = makeBody(dim, 0.5, 0.5, 0.5, 1.0, 1.0, 0.0, t2);
-			double c[3], R = 1.75, S = refSum_Scale(&b1, &b2, plus);
+			double c[3], R = 1.75, S = refSum_Size(&b1, &b2, plus);
 			for (int i = 0; i < 3; ++i)
 				c[i] = t1[i] + (plus ? t2[i] : 0.0);
 			for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k)
@@ -156,7 +156,7 @@ static void checkMoved(void)
 				double t1[3] = { 0.3, -0.2, 0.1 }, t2[3] = { -1.0, 2.0, 0.5 };
 				refBody b1 = makeBody(dim, 1.0, 0.4, 0.7, pairs[pi][0], pairs[pi][1], 0.4, t1);
 				refBody b2 = makeBody(dim, 0.6, 0.9, 0.3, pairs[pi][2], pairs[pi][3], 1.3, t2);
-				double S = refSum_Scale(&b1, &b2, plus);
+				double S = refSum_Size(&b1, &b2, plus);
 				int smooth = pairs[pi][0] >= 0.5 && pairs[pi][0] <= 1.5 && pairs[pi][2] >= 0.5 && pairs[pi][2] <= 1.5;
 				static const double rel[] = { 1e-6, 1e-13, -1e-9 };
 				for (int k = 0; k < 3; ++k) {
@@ -210,7 +210,7 @@ static void checkFaces(void)
 			double t2[3] = { 0.0, 0.0, 0.0 };
 			refBody b1 = makeBody(dim, 1.0, 0.5, 0.8, 1e-6, 1e-6, 0.0, NULL);
 			refBody b2 = makeBody(dim, 0.7, 0.4, 0.5, 1e-6, 1e-6, 0.0, t2);
-			double S = refSum_Scale(&b1, &b2, plus);
+			double S = refSum_Size(&b1, &b2, plus);
 			for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k) {
 				double p[3] = { 1.7 + deltas[k], 0.2, -0.3 };
 				/* p_x - 1.7, exactly (a difference of two doubles near each other) */
@@ -240,7 +240,7 @@ static void checkScore(void)
 		refBody b1 = makeBody(dim, 1.0, 0.4, 0.7, 0.5, 1.5, 0.4, t1);
 		refBody b2 = makeBody(dim, 0.6, 0.9, 0.3, 1.5, 0.5, 1.3, t2);
 		refSample_Params(dim, n, ux, uy, dim == 3 ? uz : NULL);
-		double S = refSum_Scale(&b1, &b2, 0);
+		double S = refSum_Size(&b1, &b2, 0);
 		int planted = 17;
 		for (int k = 0; k < count; ++k) {
 			refVec u, xv, nv;
@@ -280,7 +280,7 @@ static void checkScore(void)
 			ENSURE_MSG(sc.worst == planted, "%dD hint %d: worst %d", dim, h, sc.worst);
 			ENSURE_LE(fabs(sc.errorRel - 3e-9), 1e-15, "%dD hint %d: error_rel %.17g", dim, h, sc.errorRel);
 			ENSURE(sc.worstDist > 0.0);
-			ENSURE(sc.scale == S);
+			ENSURE(sc.size == S);
 			printf("score %dD hint %d: error_rel %.6e (planted 3e-9), %ld of %ld points searched at 256 bits "
 				"(%ld by Nelder-Mead), accuracy %.1e\n", dim, h, sc.errorRel, sc.searched, sc.points, sc.refined,
 				sc.accuracy);
@@ -302,7 +302,7 @@ static void checkScore(void)
 		double t1[3] = { 0.3, -0.2, 0.1 };
 		refBody b1 = makeBody(3, 1.0, 0.4, 0.7, 1e-6, 1e-6, 0.4, t1);
 		refBody b2 = makeBody(3, 0.6, 0.9, 0.3, 1.0, 1.0, 1.3, NULL);
-		double S = refSum_Scale(&b1, &b2, 0), ux[12], uy[12], uz[12], x[12], y[12], z[12], pmax = 0.0;
+		double S = refSum_Size(&b1, &b2, 0), ux[12], uy[12], uz[12], x[12], y[12], z[12], pmax = 0.0;
 		int count = 12, planted = 7;
 		for (int k = 0; k < count; ++k) {
 			double a = 0.3 + 0.5 * k;
@@ -422,7 +422,7 @@ static void checkSupportByLogs(void)
  * included, where the derivative-free stage runs). */
 static int scoreSame(const refScore *a, const refScore *b)
 {
-	return a->scale == b->scale && a->errorAbs == b->errorAbs && a->errorRel == b->errorRel
+	return a->size == b->size && a->errorAbs == b->errorAbs && a->errorRel == b->errorRel
 		&& a->accuracy == b->accuracy && a->worst == b->worst && a->worstDist == b->worstDist
 		&& a->points == b->points && a->nonfinite == b->nonfinite && a->searched == b->searched
 		&& a->refined == b->refined;
@@ -441,7 +441,7 @@ static void checkMemo(void)
 				int n = dim == 2 ? 24 : 5, count = dim == 2 ? n : n * n;
 				double ux[25], uy[25], uz[25], x[25], y[25], z[25];
 				refSample_Params(dim, n, ux, uy, dim == 3 ? uz : NULL);
-				double S = refSum_Scale(&b1, &b2, plus);
+				double S = refSum_Size(&b1, &b2, plus);
 				for (int k = 0; k < count; ++k) {
 					refVec u, xv, nv;
 					refVec_Init(&u);
@@ -504,7 +504,7 @@ static void checkCondition(void)
 	double big = 1.5 * 0x1p30, t1[2] = { big, big };
 	refBody b1 = makeBody(2, 1.0, 1.0, 0.0, 1.0, 1.0, 0.0, t1);
 	refBody b2 = makeBody(2, 0.5, 0.5, 0.0, 1.0, 1.0, 0.0, NULL);
-	double S = refSum_Scale(&b1, &b2, 0);
+	double S = refSum_Size(&b1, &b2, 0);
 	refCondition c;
 	ENSURE(refSum_Condition(&b1, &b2, 0, 8, 4, 1234u, &c) == 0);
 	double expect = 0x1p-22 * sqrt(2.0);
