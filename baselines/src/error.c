@@ -123,17 +123,19 @@ double mkDev_Hk3(const mkDevProb3 *P, const double *n, double *x)
 	return h;
 }
 
-static double frob2(mkMat2 m)
+/* R = |M1|_F |a1| + |M2|_F |a2|, a bound on |x - o| over K: the size of
+ * the sum of the bodies moved to the origin (the translation's term is then
+ * an exact zero). */
+static double mkDev_CentredSize2(mkBody2 b1, mkBody2 b2)
 {
-	return sqrt(m.m[0][0] * m.m[0][0] + m.m[0][1] * m.m[0][1] + m.m[1][0] * m.m[1][0] + m.m[1][1] * m.m[1][1]);
+	b1.t = b2.t = mkVec2_Make(0.0, 0.0);
+	return mkSum2_Size(b1, b2, MK_SET_CONTACT);
 }
 
-static double frob3(mkMat3 m)
+static double mkDev_CentredSize3(mkBody3 b1, mkBody3 b2)
 {
-	double s = 0;
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j) s += m.m[i][j] * m.m[i][j];
-	return sqrt(s);
+	b1.t = b2.t = mkVec3_Make(0.0, 0.0, 0.0);
+	return mkSum3_Size(b1, b2, MK_SET_CONTACT);
 }
 
 int mkDev_Prob2Init(mkDevProb2 *P, mkBody2 b1, mkBody2 b2, mkSet set)
@@ -145,7 +147,7 @@ int mkDev_Prob2Init(mkDevProb2 *P, mkBody2 b1, mkBody2 b2, mkSet set)
 	P->o[0] = b1.t.x + (set == MK_SET_PLUS ? b2.t.x : 0.0);
 	P->o[1] = b1.t.y + (set == MK_SET_PLUS ? b2.t.y : 0.0);
 	P->S = mkSum2_Size(b1, b2, set);
-	P->R = frob2(b1.M) * hypot(b1.shape.a, b1.shape.b) + frob2(b2.M) * hypot(b2.shape.a, b2.shape.b);
+	P->R = mkDev_CentredSize2(b1, b2);
 	P->round = ROUND_ULPS * UNIT_ROUND * P->S;
 	return 1;
 }
@@ -161,8 +163,7 @@ int mkDev_Prob3Init(mkDevProb3 *P, mkBody3 b1, mkBody3 b2, mkSet set)
 	P->o[1] = b1.t.y + (plus ? b2.t.y : 0.0);
 	P->o[2] = b1.t.z + (plus ? b2.t.z : 0.0);
 	P->S = mkSum3_Size(b1, b2, set);
-	P->R = frob3(b1.M) * mkVec3_Length(mkVec3_Make(b1.shape.a, b1.shape.b, b1.shape.c))
-		+ frob3(b2.M) * mkVec3_Length(mkVec3_Make(b2.shape.a, b2.shape.b, b2.shape.c));
+	P->R = mkDev_CentredSize3(b1, b2);
 	P->round = ROUND_ULPS * UNIT_ROUND * P->S;
 	P->lead = fmin(b2.shape.eps1, b2.shape.eps2) < fmin(b1.shape.eps1, b1.shape.eps2) ? 2 : 1;
 	return 1;

@@ -220,18 +220,9 @@ typedef struct mkDevWork3 {
 
 static void mkDevWork3_Free(mkDevWork3 *w)
 {
-	free(w->xyz);
-	free(w->idx);
-	free(w->V);
-	free(w->T);
-	free(w->nrm);
-	free(w->H);
-	free(w->tab);
-	free(w->vstart);
-	free(w->vfac);
-	free(w->vi);
-	free(w->pv);
-	free(w->stack);
+	void *all[] = { w->xyz, w->idx, w->V, w->T, w->nrm, w->H, w->tab, w->vstart, w->vfac, w->vi, w->pv, w->stack };
+	for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
+		free(all[i]);
 }
 
 /* The finite points relative to o, counted out->nonfinite otherwise, then
