@@ -1,5 +1,6 @@
 /* draw_paper.h - the paper's collision draw of a 3D pair for the colliders'
- * tests (test_colliders, test_asc_referee), on draw3.h's generator. */
+ * tests (test_colliders, test_asc_referee), on draw3.h's generator, and FCL's
+ * ellipsoid test case. */
 #ifndef MINK_TEST_DRAW_PAPER_H
 #define MINK_TEST_DRAW_PAPER_H
 
@@ -26,6 +27,19 @@ static inline void mk_test_paper_pair3(unsigned long long *seed, int ell, int ne
 		c2 = mkVec3_Add(c1, c2);
 	*b1 = mkBody3_Make(s1, mk_test_rotation(seed), c1);
 	*b2 = mkBody3_Make(s2, mk_test_rotation(seed), c2);
+}
+
+/* FCL's ellipsoid test case: B1 with semi-axes (20, 40, 50) and B2 a sphere
+ * of radius 10 whose centre lies x along B1's rotated x axis, so that the
+ * signed distance is x - 30; both rotated by R and moved by shift. The
+ * distances x the tests run are mkFclCaseX. */
+static const double mkFclCaseX[6] = { 40.0, 30.1, 30.0, 29.9, 29.99, 0.0 };
+
+static inline void mk_test_fcl_case(mkMat3 R, mkVec3 shift, double x, mkBody3 *A, mkBody3 *B)
+{
+	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
+	*A = mkBody3_Make(s1, R, shift);
+	*B = mkBody3_Make(s2, R, mkVec3_Add(shift, mkMat3_MulVec(R, mkVec3_Make(x, 0, 0))));
 }
 
 #endif

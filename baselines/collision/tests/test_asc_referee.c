@@ -63,16 +63,15 @@ static void mk_check_referee(mkBody3 b1, mkBody3 b2, double sd, const char *what
 
 static void test_fcl_cases(void)
 {
-	const double xs[] = { 40.0, 30.1, 30.0, 29.9, 29.99, 0.0 };
-	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
+	const double *xs = mkFclCaseX;
 	unsigned long long seed = 5;
 	for (int rot = 0; rot < 12; ++rot) {
 		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_test_rotation(&seed);
 		mkVec3 shift = rot < 2 ? mkVec3_Make(0, 0, 0)
 			: mkVec3_Make(mk_test_uniform(&seed, -50, 50), mk_test_uniform(&seed, -50, 50), mk_test_uniform(&seed, -50, 50));
-		for (size_t k = 0; k < sizeof xs / sizeof xs[0]; ++k) {
-			mkBody3 A = mkBody3_Make(s1, R, shift);
-			mkBody3 B = mkBody3_Make(s2, R, mkVec3_Add(shift, mkMat3_MulVec(R, mkVec3_Make(xs[k], 0, 0))));
+		for (size_t k = 0; k < sizeof mkFclCaseX / sizeof mkFclCaseX[0]; ++k) {
+			mkBody3 A, B;
+			mk_test_fcl_case(R, shift, xs[k], &A, &B);
 			double sd = xs[k] - 30.0;
 			mkContact want = sd > 0 ? MK_CONTACT_SEPARATED : sd < 0 ? MK_CONTACT_OVERLAPPING : MK_CONTACT_TOUCHING;
 			for (int order = 0; order < 2; ++order) {

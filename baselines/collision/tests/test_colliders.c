@@ -185,14 +185,13 @@ static void test_registry(void)
 
 static void test_fcl_cases(void)
 {
-	const double xs[] = { 40.0, 30.1, 30.0, 29.9, 29.99, 0.0 };
-	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
+	const double *xs = mkFclCaseX;
 	unsigned long long seed = 17;
 	for (int rot = 0; rot < 3; ++rot) {
 		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_test_rotation(&seed);
-		for (size_t k = 0; k < sizeof xs / sizeof xs[0]; ++k) {
-			mkBody3 A = mkBody3_Make(s1, R, mkVec3_Make(0, 0, 0));
-			mkBody3 B = mkBody3_Make(s2, R, mkMat3_MulVec(R, mkVec3_Make(xs[k], 0, 0)));
+		for (size_t k = 0; k < sizeof mkFclCaseX / sizeof mkFclCaseX[0]; ++k) {
+			mkBody3 A, B;
+			mk_test_fcl_case(R, mkVec3_Make(0, 0, 0), xs[k], &A, &B);
 			for (int order = 0; order < 2; ++order) {
 				char what[96];
 				snprintf(what, sizeof what, "FCL case x = %g, rotation %d, order %d", xs[k], rot, order);
