@@ -53,18 +53,34 @@ static refBody makeBody(int dim, double a, double b, double c, double e1, double
 	return r;
 }
 
-static void randomUnit(refRng *rng, int dim, double *u)
+/* x + delta n at 256 bits, rounded to double into p (dim entries). */
+static void movedPoint(const refVec *x, const refVec *n, int dim, double delta, double *p)
 {
-	double n;
-	do {
-		n = 0.0;
-		for (int i = 0; i < dim; ++i) {
-			u[i] = refRng_Uniform(rng, -1.0, 1.0);
-			n += u[i] * u[i];
-		}
-	} while (n < 1e-4 || n > 1.0);
-	for (int i = 0; i < dim; ++i)
-		u[i] /= sqrt(n);
+	for (int i = 0; i < dim; ++i) {
+		mpfr_t t;
+		mpfr_init2(t, REF_PREC);
+		mpfr_mul_d(t, n->c[i], delta, MPFR_RNDN);
+		mpfr_add(t, t, x->c[i], MPFR_RNDN);
+		p[i] = mpfr_get_d(t, MPFR_RNDN);
+		mpfr_clear(t);
+	}
+}
+
+/* The exact point of the surface parameter ud moved by delta along its
+ * exact normal, rounded to double into p (dim entries). */
+static void offNormal(const refBody *b1, const refBody *b2, int plus, const double *ud, double delta, double *p)
+{
+	int dim = b1->s.dim;
+	refVec u, xv, nv;
+	refVec_Init(&u);
+	refVec_Init(&xv);
+	refVec_Init(&nv);
+	refVec_FromD(&u, dim, ud);
+	refSum_Point(b1, b2, plus, 1, &u, &xv, NULL, &nv);
+	movedPoint(&xv, &nv, dim, delta, p);
+	refVec_Clear(&u);
+	refVec_Clear(&xv);
+	refVec_Clear(&nv);
 }
 
 static double dnorm(const double *v, int dim)
@@ -94,7 +110,7 @@ static void checkCircles(void)
 			for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k)
 				for (int trial = 0; trial < 3; ++trial) {
 					double u[3] = { 0.0, 0.0, 0.0 }, p[3] = { 0.0, 0.0, 0.0 };
-					randomUnit(&rng, dim, u);
+					refRng_Unit(&rng, dim, u);
 					for (int i = 0; i < dim; ++i)
 						p[i] = c[i] + (R + deltas[k]) * u[i];
 					/* the exact distance of the rounded p */
@@ -164,7 +180,7 @@ static void checkMoved(void)
 						continue; /* inside a corner the nearest boundary may be another face */
 					for (int trial = 0; trial < 3; ++trial) {
 						double nd[3] = { 0.0, 0.0, 0.0 }, p[3] = { 0.0, 0.0, 0.0 };
-						randomUnit(&rng, dim, nd);
+						refRng_Unit(&rng, dim, nd);
 						refVec n, x;
 						refVec_Init(&n);
 						refVec_Init(&x);
@@ -172,14 +188,7 @@ static void checkMoved(void)
 						refVec_Normalize(&n, dim);
 						refSum_Point(&b1, &b2, plus, 0, &n, &x, NULL, NULL);
 						double delta = rel[k] * S;
-						for (int i = 0; i < dim; ++i) {
-							mpfr_t t;
-							mpfr_init2(t, REF_PREC);
-							mpfr_mul_d(t, n.c[i], delta, MPFR_RNDN);
-							mpfr_add(t, t, x.c[i], MPFR_RNDN);
-							p[i] = mpfr_get_d(t, MPFR_RNDN);
-							mpfr_clear(t);
-						}
+						movedPoint(&x, &n, dim, delta, p);
 						refVec_Clear(&n);
 						refVec_Clear(&x);
 						/* rounding p moves it by at most 2^-53 |p_i| per coordinate;
@@ -243,31 +252,15 @@ static void checkScore(void)
 		double S = refSum_Size(&b1, &b2, 0);
 		int planted = 17;
 		for (int k = 0; k < count; ++k) {
-			refVec u, xv, nv;
-			refVec_Init(&u);
-			refVec_Init(&xv);
-			refVec_Init(&nv);
 			double ud[3] = { ux[k], uy[k], dim == 3 ? uz[k] : 0.0 };
-			refVec_FromD(&u, dim, ud);
-			refSum_Point(&b1, &b2, 0, 1, &u, &xv, NULL, &nv);
 			/* move by delta_k along the normal: -1e-10 S ... 1e-10 S, and
 			 * 3e-9 S at the planted index */
 			double delta = k == planted ? 3e-9 * S : 1e-10 * S * ((k % 7) - 3) / 3.0;
 			double p[3];
-			for (int i = 0; i < dim; ++i) {
-				mpfr_t t;
-				mpfr_init2(t, REF_PREC);
-				mpfr_mul_d(t, nv.c[i], delta, MPFR_RNDN);
-				mpfr_add(t, t, xv.c[i], MPFR_RNDN);
-				p[i] = mpfr_get_d(t, MPFR_RNDN);
-				mpfr_clear(t);
-			}
+			offNormal(&b1, &b2, 0, ud, delta, p);
 			x[k] = p[0];
 			y[k] = p[1];
 			z[k] = dim == 3 ? p[2] : 0.0;
-			refVec_Clear(&u);
-			refVec_Clear(&xv);
-			refVec_Clear(&nv);
 		}
 		x[5] = NAN;
 		y[40 % count] = INFINITY;
@@ -389,7 +382,7 @@ static void checkSupportByLogs(void)
 					for (int c = 0; c < dim; ++c)
 						s.a[c] = axes[(k + c) % 4];
 					double u[3] = { 0.0, 0.0, 0.0 };
-					randomUnit(&rng, dim, u);
+					refRng_Unit(&rng, dim, u);
 					/* a zero component (k = 0, 1, 2) or a tiny one (k = 3, 4) */
 					if (k < dim)
 						u[k] = 0.0;
@@ -443,28 +436,12 @@ static void checkMemo(void)
 				refSample_Params(dim, n, ux, uy, dim == 3 ? uz : NULL);
 				double S = refSum_Size(&b1, &b2, plus);
 				for (int k = 0; k < count; ++k) {
-					refVec u, xv, nv;
-					refVec_Init(&u);
-					refVec_Init(&xv);
-					refVec_Init(&nv);
 					double ud[3] = { ux[k], uy[k], dim == 3 ? uz[k] : 0.0 }, p[3] = { 0.0, 0.0, 0.0 };
-					refVec_FromD(&u, dim, ud);
-					refSum_Point(&b1, &b2, plus, 1, &u, &xv, NULL, &nv);
 					double delta = 1e-12 * S * (1 + k % 5) * (k % 2 ? 1.0 : -1.0) * (k == 3 ? 1000.0 : 1.0);
-					for (int i = 0; i < dim; ++i) {
-						mpfr_t t;
-						mpfr_init2(t, REF_PREC);
-						mpfr_mul_d(t, nv.c[i], delta, MPFR_RNDN);
-						mpfr_add(t, t, xv.c[i], MPFR_RNDN);
-						p[i] = mpfr_get_d(t, MPFR_RNDN);
-						mpfr_clear(t);
-					}
+					offNormal(&b1, &b2, plus, ud, delta, p);
 					x[k] = p[0];
 					y[k] = p[1];
 					z[k] = p[2];
-					refVec_Clear(&u);
-					refVec_Clear(&xv);
-					refVec_Clear(&nv);
 				}
 				for (int h = 0; h < 2; ++h) {
 					const double *hx = h ? ux : NULL, *hy = h ? uy : NULL, *hz = h && dim == 3 ? uz : NULL;
