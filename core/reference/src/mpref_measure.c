@@ -422,9 +422,9 @@ static void searchEval(refSearch *S, const double *s, mpfr_t phi, mpfr_t *g, dou
 	S->evals++;
 }
 
-/* The target of the search: 1e-21 of the scale, or 1e-5 of the distance
+/* The target of the search: 1e-21 of the size S, or 1e-5 of the distance
  * itself (a figure quoted to 4 digits on a log scale needs no more; the
- * rounding of any double output is 1e-16 of the scale). */
+ * rounding of any double output is 1e-16 of the size S). */
 #define TOL_SCALE 1e-21
 #define TOL_REL 1e-5
 static double searchTol(double S, const mpfr_t phi)

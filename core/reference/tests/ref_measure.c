@@ -23,7 +23,7 @@
  *  7. The memo of refSum_ScoreMemo: scores bit for bit those without it.
  * Tolerances: the rounding of p itself (2^-53 |p| per coordinate, so
  * 2^-52 sqrt(dim) |p| in all) plus four times the search's target (1e-5 of
- * the distance or 1e-21 of the scale, mink/mpref_measure.h). */
+ * the distance or 1e-21 of the size S, mink/mpref_measure.h). */
 #include <mink/mpref_measure.h>
 #include "reftest.h"
 
@@ -357,7 +357,7 @@ static void checkScore(void)
  * 2^-227 here, q <= 2e6 and |log| < 50); the powers one by one to a few
  * ulps of 2^-256 times the same amplification. 2^-200 of the point's size
  * leaves a margin of 2^27 over both and is still 1e-60: far below any
- * distance the searches resolve (1e-21 of the scale). */
+ * distance the searches resolve (1e-21 of the size S). */
 static void checkSupportByLogs(void)
 {
 	static const double eps[] = { 1e-6, 1e-3, 0.1, 0.5, 1.0, 1.5, 1.9, 1.999, 2.0 - 1e-6 };
@@ -411,7 +411,7 @@ static void checkSupportByLogs(void)
  * outputs scored with and without it, twice in a row (the second time from
  * the memo alone), then another pair through the same memo (it must empty
  * itself, not answer from the first pair). Points: boundary points of each
- * pair moved by 1e-12 ... 1e-9 of the scale (near-box and ellipsoid edges
+ * pair moved by 1e-12 ... 1e-9 of the size S (near-box and ellipsoid edges
  * included, where the derivative-free stage runs). */
 static int scoreSame(const refScore *a, const refScore *b)
 {
@@ -511,7 +511,7 @@ static void checkCondition(void)
 		ENSURE_LE(fabs(cs.boundary - cl.boundary), 1e-9 * cs.boundary, "scaled boundary %g %g", cs.boundary, cl.boundary);
 		ENSURE_LE(fabs(cs.point - cl.point), 1e-9 * cs.point, "scaled point %g %g", cs.point, cl.point);
 		/* a one-ulp move of well-scaled inputs moves the boundary by a few
-		 * ulps of the scale, no more (eps 0.4 and 1.8 amplify by at most
+		 * ulps of the size S, no more (eps 0.4 and 1.8 amplify by at most
 		 * their exponent 1/(2 - 1.8) = 5) */
 		ENSURE(cs.boundary > 0.0);
 		ENSURE_LE(cs.boundary, 64.0 * REF_U, "boundary of a well-conditioned pair %g", cs.boundary);
