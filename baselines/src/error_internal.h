@@ -6,6 +6,8 @@
 #ifndef MINK_ERROR_INTERNAL_H
 #define MINK_ERROR_INTERNAL_H
 
+#include <float.h>
+
 #include <mink/mink.h>
 #include <mink/error.h>
 
