@@ -8,7 +8,7 @@
  *
  * ccd-gjk-epa-1e-6, -1e-8, -1e-10: GJK+EPA with its tolerances tightened to
  * reach a depth error of about k = 1e-6, 1e-8, 1e-10 of the pair's scale
- * (mkCollide3_Scale). libccd's EPA stops when the new support point is
+ * (mkCollide3_PairSize). libccd's EPA stops when the new support point is
  * within epa_tolerance of the nearest face in *squared* distance (its
  * second test, ccdVec3PointTriDist2 < epa_tolerance; the first, on
  * <v, w> - |w|^2 with w the unnormalised nearest point, is squared too),
@@ -129,7 +129,7 @@ static mkResult mkRunEpaTight(mkBody3 b1, mkBody3 b2, mkCollision3 *out, double 
 {
 	long calls = 0;
 	mkCcdTight t1 = { b1, &calls }, t2 = { b2, &calls };
-	double tol = k * mkCollide3_Scale(b1, b2);
+	double tol = k * mkCollide3_PairSize(b1, b2);
 	ccd_t ccd;
 	mkInit(&ccd);
 	ccd.support1 = ccd.support2 = mkSupportTight;

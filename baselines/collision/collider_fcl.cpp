@@ -78,7 +78,7 @@ mkResult mkRunFcl(mkBody3 b1, mkBody3 b2, mkColliderScratch *, mkCollision3 *out
 	double d = res.min_distance;
 	if (!std::isfinite(d))
 		return MK_ERR_CONVERGENCE;
-	out->scale = mkCollide3_Scale(b1, b2);
+	out->scale = mkCollide3_PairSize(b1, b2);
 	out->distance = d;
 	out->p1 = mkVec3{ res.nearest_points[0](0), res.nearest_points[0](1), res.nearest_points[0](2) };
 	out->p2 = mkVec3{ res.nearest_points[1](0), res.nearest_points[1](1), res.nearest_points[1](2) };

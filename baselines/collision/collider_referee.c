@@ -468,11 +468,88 @@ static mkVec3 mkRefFib(int i, int count)
 	return mkVec3_Make(r * cos(phi), r * sin(phi), z);
 }
 
+/* The depth of an overlap (or the distance of a pair GJK could not
+ * certify): a global sweep over a Fibonacci sphere, the bodies' face
+ * normals, the centre line and the normals met so far, then BFGS and the
+ * pattern search from the best MK_REF_STARTS starts apart; raises st->lb. */
+static void mkRefDepth(mkRefState *st, mkVec3 n0, mkVec3 nlast)
+{
+	enum { CAND = MK_REF_FIB + 12 };
+	mkVec3 bn[MK_REF_STARTS];
+	double bv[MK_REF_STARTS];
+	int nb = 0;
+	for (int i = 0; i < CAND; ++i) {
+		mkVec3 n;
+		if (i < MK_REF_FIB) {
+			n = mkRefFib(i, MK_REF_FIB);
+		} else if (i < MK_REF_FIB + 6) {
+			const mkBody3 *b = i < MK_REF_FIB + 3 ? &st->b1 : &st->b2;
+			int k = (i - MK_REF_FIB) % 3;
+			/* The body's axis k: the normal of its face k is M^-T e_k. */
+			mkMat3 Mi = mkMat3_Inverse(b->M);
+			n = mkVec3_Normalize(mkVec3_Make(Mi.m[k][0], Mi.m[k][1], Mi.m[k][2]));
+		} else if (i == MK_REF_FIB + 6) {
+			n = n0;
+		} else if (i == MK_REF_FIB + 7) {
+			n = mkVec3_Neg(n0);
+		} else if (i == MK_REF_FIB + 8) {
+			n = nlast;
+		} else {
+			n = st->lbn;
+		}
+		if (!(mkVec3_Length(n) > 0.0) || !isfinite(n.x + n.y + n.z))
+			continue;
+		double v = mkRefEval(st, n, NULL);
+		/* Keep the best MK_REF_STARTS that are apart (angle > 0.05). */
+		int near = -1;
+		for (int k = 0; k < nb; ++k)
+			if (mkVec3_Dot(bn[k], n) > cos(0.05))
+				near = k;
+		if (near >= 0) {
+			if (v > bv[near]) {
+				bv[near] = v;
+				bn[near] = n;
+			}
+			continue;
+		}
+		if (nb < MK_REF_STARTS) {
+			bv[nb] = v;
+			bn[nb++] = n;
+		} else {
+			int w = 0;
+			for (int k = 1; k < nb; ++k)
+				if (bv[k] < bv[w])
+					w = k;
+			if (v > bv[w]) {
+				bv[w] = v;
+				bn[w] = n;
+			}
+		}
+	}
+	for (int k = 0; k < nb; ++k) {
+		/* BFGS, then the pattern search where BFGS stalls (near
+		 * kinks), then BFGS again; each keeps the best f of this start. */
+		mkRefState one = *st;
+		one.lb = -INFINITY;
+		mkVec3 n = bn[k];
+		mkRefBfgs(&one, &n, MK_REF_BFGS_EVAL);
+		n = one.lbn;
+		mkRefPattern(&one, &n, 1e-3, MK_REF_PATTERN_EVAL);
+		n = one.lbn;
+		mkRefBfgs(&one, &n, MK_REF_BFGS_EVAL);
+		st->evals = one.evals;
+		if (one.lb > st->lb) {
+			st->lb = one.lb;
+			st->lbn = one.lbn;
+		}
+	}
+}
+
 static mkResult mkRun(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3 *out)
 {
 	(void)s;
 	mkRefState st = { b1, b2, -INFINITY, mkVec3_Make(1, 0, 0), 0 };
-	double scale = mkCollide3_Scale(b1, b2);
+	double scale = mkCollide3_PairSize(b1, b2);
 	out->scale = scale;
 	if (!isfinite(scale))
 		return MK_ERR_UNSUPPORTED;
@@ -506,75 +583,7 @@ static mkResult mkRun(mkBody3 b1, mkBody3 b2, mkColliderScratch *s, mkCollision3
 	}
 	if (inside || st.lb <= 0.0) {
 		/* The depth: global sweep, then local searches from the best starts. */
-		enum { CAND = MK_REF_FIB + 12 };
-		mkVec3 bn[MK_REF_STARTS];
-		double bv[MK_REF_STARTS];
-		int nb = 0;
-		for (int i = 0; i < CAND; ++i) {
-			mkVec3 n;
-			if (i < MK_REF_FIB) {
-				n = mkRefFib(i, MK_REF_FIB);
-			} else if (i < MK_REF_FIB + 6) {
-				const mkBody3 *b = i < MK_REF_FIB + 3 ? &b1 : &b2;
-				int k = (i - MK_REF_FIB) % 3;
-				/* The body's axis k: the normal of its face k is M^-T e_k. */
-				mkMat3 Mi = mkMat3_Inverse(b->M);
-				n = mkVec3_Normalize(mkVec3_Make(Mi.m[k][0], Mi.m[k][1], Mi.m[k][2]));
-			} else if (i == MK_REF_FIB + 6) {
-				n = n0;
-			} else if (i == MK_REF_FIB + 7) {
-				n = mkVec3_Neg(n0);
-			} else if (i == MK_REF_FIB + 8) {
-				n = nlast;
-			} else {
-				n = st.lbn;
-			}
-			if (!(mkVec3_Length(n) > 0.0) || !isfinite(n.x + n.y + n.z))
-				continue;
-			double v = mkRefEval(&st, n, NULL);
-			/* Keep the best MK_REF_STARTS that are apart (angle > 0.05). */
-			int near = -1;
-			for (int k = 0; k < nb; ++k)
-				if (mkVec3_Dot(bn[k], n) > cos(0.05))
-					near = k;
-			if (near >= 0) {
-				if (v > bv[near]) {
-					bv[near] = v;
-					bn[near] = n;
-				}
-				continue;
-			}
-			if (nb < MK_REF_STARTS) {
-				bv[nb] = v;
-				bn[nb++] = n;
-			} else {
-				int w = 0;
-				for (int k = 1; k < nb; ++k)
-					if (bv[k] < bv[w])
-						w = k;
-				if (v > bv[w]) {
-					bv[w] = v;
-					bn[w] = n;
-				}
-			}
-		}
-		for (int k = 0; k < nb; ++k) {
-			/* BFGS, then the pattern search where BFGS stalls (near
-			 * kinks), then BFGS again; each keeps the best f of this start. */
-			mkRefState one = st;
-			one.lb = -INFINITY;
-			mkVec3 n = bn[k];
-			mkRefBfgs(&one, &n, MK_REF_BFGS_EVAL);
-			n = one.lbn;
-			mkRefPattern(&one, &n, 1e-3, MK_REF_PATTERN_EVAL);
-			n = one.lbn;
-			mkRefBfgs(&one, &n, MK_REF_BFGS_EVAL);
-			st.evals = one.evals;
-			if (one.lb > st.lb) {
-				st.lb = one.lb;
-				st.lbn = one.lbn;
-			}
-		}
+		mkRefDepth(&st, n0, nlast);
 		p1 = mkBody3_Support(b1, st.lbn);
 		p2 = mkBody3_Support(b2, mkVec3_Neg(st.lbn));
 	}

@@ -112,7 +112,7 @@ const mkMethod mkMethod_ClosedPaper = {
 };
 
 /* The single-precision tier (mink/sum.h, MK_PRECISION_F32): the same closed
- * forms, each point within MK_F32_TOL of the scale of the exact boundary;
+ * forms, each point within MK_F32_TOL of the sum's size of the exact boundary;
  * pairs outside the tier's domain run in double. */
 const mkMethod mkMethod_ClosedNormalF32 = {
 	"closed-normal-f32",

@@ -33,11 +33,11 @@ static void test_support(void)
 		mkShape2 s = {0.5 + 3 * mk_test_unit(&seed), 0.5 + 3 * mk_test_unit(&seed), e};
 		mkMat2 M = mkMat2_Mul(mkMat2_Rotation(6 * mk_test_unit(&seed)), mkMat2_Shear(mk_test_unit(&seed) - 0.5));
 		mkBody2 b = mkBody2_Make(s, M, (mkVec2){4 * mk_test_unit(&seed) - 2, 4 * mk_test_unit(&seed) - 2});
-		double S = mkError2_Scale(b, b, MK_SET_PLUS);
+		double S = mkSum2_Size(b, b, MK_SET_PLUS);
 		for (int k = 0; k < 16; ++k) {
 			double th = 2 * MK_PI * mk_test_unit(&seed);
 			mkVec2 n, x = mkReferee2_Point(b, (mkVec2){cos(th), sin(th)}, &n), p;
-			double h = mkError2_Support(b, b, MK_SET_PLUS, n, &p);
+			double h = mkDeviation2_Support(b, b, MK_SET_PLUS, n, &p);
 			double want = 2 * (n.x * x.x + n.y * x.y);
 			worst_h = fmax(worst_h, fabs(h - want) / S);
 			if (e >= 0.5 && e <= 1.5) worst_x = fmax(worst_x, hypot(p.x - 2 * x.x, p.y - 2 * x.y) / S);
@@ -46,18 +46,18 @@ static void test_support(void)
 		mkShape3 s3 = {0.5 + 3 * mk_test_unit(&seed), 0.5 + 3 * mk_test_unit(&seed), 0.5 + 3 * mk_test_unit(&seed), e1, e2};
 		mkMat3 R = mkMat3_FromQuat(mk_test_unit(&seed) - 0.5, mk_test_unit(&seed) - 0.5, mk_test_unit(&seed) - 0.5, 0.3);
 		mkBody3 b3 = mkBody3_Make(s3, R, (mkVec3){1, -2, 0.5});
-		double S3 = mkError3_Scale(b3, b3, MK_SET_PLUS);
+		double S3 = mkSum3_Size(b3, b3, MK_SET_PLUS);
 		for (int k = 0; k < 16; ++k) {
 			double et = MK_PI * (mk_test_unit(&seed) - 0.5), om = 2 * MK_PI * mk_test_unit(&seed);
 			mkVec3 n, x = mkReferee3_Point(b3, (mkVec3){cos(et) * cos(om), cos(et) * sin(om), sin(et)}, &n), p;
-			double h = mkError3_Support(b3, b3, MK_SET_PLUS, n, &p);
+			double h = mkDeviation3_Support(b3, b3, MK_SET_PLUS, n, &p);
 			double want = 2 * (n.x * x.x + n.y * x.y + n.z * x.z);
 			worst_h = fmax(worst_h, fabs(h - want) / S3);
 			if (e1 >= 0.5 && e1 <= 1.5 && e2 >= 0.5 && e2 <= 1.5)
 				worst_x = fmax(worst_x, mkVec3_Length(mkVec3_Sub(p, mkVec3_Scale(x, 2))) / S3);
 		}
 	}
-	printf("support vs referee model: h %.3g, point %.3g (of the scale)\n", worst_h, worst_x);
+	printf("support vs referee model: h %.3g, point %.3g (of the size)\n", worst_h, worst_x);
 	ENSURE_LE(worst_h, 1e-13);
 	ENSURE_LE(worst_x, 1e-11);
 }
@@ -78,8 +78,8 @@ static void test_ngon(void)
 	double r1 = 2.5, r2 = 0.75, R = r1 + r2;
 	mkBody2 a = circle(r1, 1.5, -2), b = circle(r2, -3, 4);
 	/* |K| once per set (it is the measure's slow part), then passed in. */
-	mkErrorOptions opt = {0};
-	ENSURE(mkError2_Area(a, b, MK_SET_CONTACT, &opt.truth, &opt.truth_bound) == MK_OK);
+	mkDeviationOptions opt = {0};
+	ENSURE(mkDeviation2_Area(a, b, MK_SET_CONTACT, &opt.truth, &opt.truth_bound) == MK_OK);
 	ENSURE_NEAR(opt.truth, MK_PI * R * R, opt.truth_bound);
 	for (int set = 0; set < 2; ++set)
 		for (size_t i = 0; i < sizeof ns / sizeof *ns; ++i) {
@@ -91,18 +91,18 @@ static void test_ngon(void)
 				pts.x[k] = ox + R * cos(t);
 				pts.y[k] = oy + R * sin(t);
 			}
-			mkError e;
-			ENSURE(mkError2_Measure(a, b, (mkSet)set, &pts, &opt, &e) == MK_OK);
+			mkDeviation e;
+			ENSURE(mkDeviation2_Measure(a, b, (mkSet)set, &pts, &opt, &e) == MK_OK);
 			double H = R * (1 - cos(MK_PI / n)), A = n * sin(2 * MK_PI / n) / (2 * MK_PI) - 1;
-			ENSURE_NEAR(e.hausdorff_abs, H, 1e-14 * e.scale);
+			ENSURE_NEAR(e.hausdorff_abs, H, 1e-14 * e.size);
 			ENSURE(H <= e.hausdorff_abs + e.hausdorff_bound);
-			ENSURE_LE(e.hausdorff_bound, 1e-6 * H + 1e-13 * e.scale); /* tol 1e-6 + rounding */
-			ENSURE_NEAR(e.gap_in, H, 1e-14 * e.scale);
-			ENSURE_LE(e.off_boundary_max, 1e-14 * e.scale); /* the vertices lie on the circle */
+			ENSURE_LE(e.hausdorff_bound, 1e-6 * H + 1e-13 * e.size); /* tol 1e-6 + rounding */
+			ENSURE_NEAR(e.gap_in, H, 1e-14 * e.size);
+			ENSURE_LE(e.off_boundary_max, 1e-14 * e.size); /* the vertices lie on the circle */
 			ENSURE_NEAR(e.area_rel, A, e.area_bound);
 			ENSURE_LE(e.area_bound, 1e-11);
 			ENSURE(e.vertices == n && e.points == n && e.nonfinite == 0);
-			ENSURE_NEAR(e.scale, hypot(1.5, -2) + (set ? hypot(-3, 4) : 0) + sqrt(2) * hypot(r1, r1) + sqrt(2) * hypot(r2, r2),
+			ENSURE_NEAR(e.size, hypot(1.5, -2) + (set ? hypot(-3, 4) : 0) + sqrt(2) * hypot(r1, r1) + sqrt(2) * hypot(r2, r2),
 				1e-14);
 			if (set == 0 && (n == 7 || n == 20000)) printf("%d-gon: %s\n", n, e.message);
 		}
@@ -131,10 +131,10 @@ static void test_ellipse_pair(void)
 		pts.x[k] = 2 + p.x;
 		pts.y[k] = 1 + p.y;
 	}
-	mkError e;
-	ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
+	mkDeviation e;
+	ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
 	double H = (sqrt(2.0) - 1) * A * B / hypot(A, B);
-	ENSURE_NEAR(e.hausdorff_abs, H, 1e-14 * e.scale);
+	ENSURE_NEAR(e.hausdorff_abs, H, 1e-14 * e.size);
 	ENSURE(H <= e.hausdorff_abs + e.hausdorff_bound);
 	ENSURE_NEAR(e.area_rel, 2 / MK_PI - 1, e.area_bound + 1e-15);
 	ENSURE_NEAR(e.area_k, MK_PI * A * B, 1e-11 * MK_PI * A * B);
@@ -143,26 +143,26 @@ static void test_ellipse_pair(void)
 	double d = 1e-3, dirx = cos(rot), diry = sin(rot);
 	pts.x[0] += d * dirx;
 	pts.y[0] += d * diry;
-	ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
-	ENSURE_NEAR(e.gap_out, d, 1e-14 * e.scale);
-	ENSURE_NEAR(e.off_boundary_max, d, 1e-14 * e.scale);
+	ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
+	ENSURE_NEAR(e.gap_out, d, 1e-14 * e.size);
+	ENSURE_NEAR(e.off_boundary_max, d, 1e-14 * e.size);
 	ENSURE(e.worst == 0);
 	/* ... and pull it in by d (less than the radius of curvature there,
 	 * B^2/A = 0.73, so the nearest boundary point is still the vertex). */
 	pts.x[0] -= 2 * d * dirx;
 	pts.y[0] -= 2 * d * diry;
-	ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
-	ENSURE_NEAR(e.off_boundary_max, d, 1e-14 * e.scale);
-	ENSURE_NEAR(e.gap_out, 0.0, 1e-14 * e.scale); /* the other three stay on K */
+	ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
+	ENSURE_NEAR(e.off_boundary_max, d, 1e-14 * e.size);
+	ENSURE_NEAR(e.gap_out, 0.0, 1e-14 * e.size); /* the other three stay on K */
 	ENSURE(e.hausdorff_abs > H);                  /* the rhombus lost area */
 	/* Non-finite points are counted and left out. */
 	mkPointSet_Resize(&pts, 2, 5);
 	pts.x[4] = NAN;
 	pts.y[4] = 0;
-	ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
+	ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e) == MK_OK);
 	ENSURE(e.nonfinite == 1 && e.points == 5 && e.vertices == 4);
-	ENSURE(mkError2_Measure(b1, b2, (mkSet)7, &pts, NULL, &e) == MK_ERR_ARGUMENT);
-	ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, NULL, NULL, &e) == MK_ERR_ARGUMENT);
+	ENSURE(mkDeviation2_Measure(b1, b2, (mkSet)7, &pts, NULL, &e) == MK_ERR_ARGUMENT);
+	ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, NULL, NULL, &e) == MK_ERR_ARGUMENT);
 }
 
 /* |K| for K = B (+) B = 2B: 4 |B|, with |B| = |det M| 4ab Gamma(1+eps/2)^2 /
@@ -182,7 +182,7 @@ static void test_area_volume(void)
 		mkBody2 b = mkBody2_Make(s, M, (mkVec2){1, 2});
 		double exact = 4 * fabs(mkMat2_Det(M)) * 4 * s.a * s.b * exp(2 * lgamma(1 + s.eps / 2) - lgamma(1 + s.eps));
 		double area, bound;
-		ENSURE(mkError2_Area(b, b, MK_SET_PLUS, &area, &bound) == MK_OK);
+		ENSURE(mkDeviation2_Area(b, b, MK_SET_PLUS, &area, &bound) == MK_OK);
 		ENSURE_NEAR(area, exact, bound + 1e-14 * exact);
 		ENSURE_LE(bound, 1e-11 * exact);
 		printf("area eps %.1f: error %.2g, bound %.2g (relative)\n", eps[i], (area - exact) / exact, bound / exact);
@@ -195,7 +195,7 @@ static void test_area_volume(void)
 		double e1 = s.eps1, e2 = s.eps2;
 		double exact = 8 * 2 * s.a * s.b * s.c * e1 * e2 * beta_fn(e1 / 2 + 1, e1) * beta_fn(e2 / 2, e2 / 2);
 		double vol, bound;
-		ENSURE(mkError3_Volume(b, b, MK_SET_PLUS, &vol, &bound) == MK_OK);
+		ENSURE(mkDeviation3_Volume(b, b, MK_SET_PLUS, &vol, &bound) == MK_OK);
 		ENSURE_NEAR(vol, exact, 2 * bound + 1e-14 * exact);
 		printf("volume eps %.1f %.1f: error %.2g, bound %.2g (relative)\n", e1, e2, (vol - exact) / exact,
 			bound / exact);
@@ -222,22 +222,22 @@ static void test_against_cgal(void)
 	for (int k = 0; k < n; ++k) {
 		double t = 2 * MK_PI * mk_test_unit(&seed);
 		mkVec2 p;
-		mkError2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(t), sin(t)}, &p);
+		mkDeviation2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(t), sin(t)}, &p);
 		double f = k % 3 == 0 ? 0.5 + 0.5 * mk_test_unit(&seed) : k % 50 == 1 ? 1.0 + 1e-6 : 1.0;
 		pts.x[k] = 0.5 + f * (p.x - 0.5);
 		pts.y[k] = 1 + f * (p.y - 1);
 		xy[2 * k] = pts.x[k];
 		xy[2 * k + 1] = pts.y[k];
 	}
-	mkError e1, e2;
-	ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e1) == MK_OK);
+	mkDeviation e1, e2;
+	ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, NULL, &e1) == MK_OK);
 	mkPointSet hull = {0};
 	ENSURE(mkHull2_CgalEpeck(xy, n, &hull) == MK_OK);
-	ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &hull, NULL, &e2) == MK_OK);
+	ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &hull, NULL, &e2) == MK_OK);
 	ENSURE(e1.vertices == hull.count && e2.vertices == hull.count);
-	ENSURE_NEAR(e1.gap_in, e2.gap_in, 1e-15 * e1.scale);
+	ENSURE_NEAR(e1.gap_in, e2.gap_in, 1e-15 * e1.size);
 	ENSURE_NEAR(e1.area_p, e2.area_p, 1e-14 * e1.area_p);
-	ENSURE_NEAR(e1.gap_out, e2.gap_out, 1e-15 * e1.scale);
+	ENSURE_NEAR(e1.gap_out, e2.gap_out, 1e-15 * e1.size);
 	double brute = -HUGE_VAL;
 	for (int j = 0; j < 65536 + hull.count; ++j) {
 		double t = 2 * MK_PI * j / 65536;
@@ -247,10 +247,10 @@ static void test_against_cgal(void)
 		}
 		double c = cos(t), s = sin(t), hp = -HUGE_VAL;
 		for (int k = 0; k < hull.count; ++k) hp = fmax(hp, c * hull.x[k] + s * hull.y[k]);
-		brute = fmax(brute, mkError2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){c, s}, NULL) - hp);
+		brute = fmax(brute, mkDeviation2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){c, s}, NULL) - hp);
 	}
 	ENSURE(brute <= e1.gap_in + e1.hausdorff_bound);
-	ENSURE_NEAR(brute, e1.gap_in, 1e-8 * e1.scale);
+	ENSURE_NEAR(brute, e1.gap_in, 1e-8 * e1.size);
 	printf("cloud vs CGAL hull (%d of %d points): %s; brute force gap %.10g vs %.10g\n", hull.count, n,
 		e1.message, brute, e1.gap_in);
 	mkPointSet_Free(&hull);
@@ -272,17 +272,17 @@ static void test_3d(void)
 	double r1 = 2, r2 = 1.5, R = r1 + r2;
 	mkBody3 a = mkBody3_Make((mkShape3){r1, r1, r1, 1, 1}, mkMat3_Identity(), (mkVec3){1, 2, 3});
 	mkBody3 b = mkBody3_Make((mkShape3){r2, r2, r2, 1, 1}, mkMat3_Identity(), (mkVec3){-4, 0, 1});
-	mkErrorOptions opt = {0};
+	mkDeviationOptions opt = {0};
 	opt.truth = 4.0 / 3 * MK_PI * R * R * R;
-	mkError e;
+	mkDeviation e;
 	mkPointSet_Resize(&pts, 3, 6);
 	for (int k = 0; k < 6; ++k) {
 		double v[3] = {0, 0, 0};
 		v[k / 2] = k % 2 ? -R : R;
 		pts.x[k] = 1 + v[0], pts.y[k] = 2 + v[1], pts.z[k] = 3 + v[2];
 	}
-	ENSURE(mkError3_Measure(a, b, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
-	ENSURE_NEAR(e.hausdorff_abs, R * (1 - 1 / sqrt(3.0)), 1e-14 * e.scale);
+	ENSURE(mkDeviation3_Measure(a, b, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+	ENSURE_NEAR(e.hausdorff_abs, R * (1 - 1 / sqrt(3.0)), 1e-14 * e.size);
 	ENSURE(R * (1 - 1 / sqrt(3.0)) <= e.hausdorff_abs + e.hausdorff_bound);
 	ENSURE_NEAR(e.area_p, 4 * R * R * R / 3, 1e-14 * R * R * R);
 	ENSURE(e.vertices == 6);
@@ -291,10 +291,10 @@ static void test_3d(void)
 		double q = R / sqrt(3.0);
 		pts.x[k] = 1 + (k & 1 ? q : -q), pts.y[k] = 2 + (k & 2 ? q : -q), pts.z[k] = 3 + (k & 4 ? q : -q);
 	}
-	ENSURE(mkError3_Measure(a, b, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
-	ENSURE_NEAR(e.hausdorff_abs, R * (1 - 1 / sqrt(3.0)), 1e-14 * e.scale);
+	ENSURE(mkDeviation3_Measure(a, b, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+	ENSURE_NEAR(e.hausdorff_abs, R * (1 - 1 / sqrt(3.0)), 1e-14 * e.size);
 	ENSURE_NEAR(e.area_p, 8 * R * R * R / (3 * sqrt(3.0)), 1e-13 * R * R * R);
-	ENSURE_LE(e.off_boundary_max, 1e-14 * e.scale);
+	ENSURE_LE(e.off_boundary_max, 1e-14 * e.size);
 	printf("cube in a sphere: %s\n", e.message);
 
 	double ea = 3, eb = 2, ec = 1.5, s = 0.5;
@@ -312,32 +312,32 @@ static void test_3d(void)
 		xyz[3 * k] = pts.x[k], xyz[3 * k + 1] = pts.y[k], xyz[3 * k + 2] = pts.z[k];
 	}
 	opt.truth = 4.0 / 3 * MK_PI * A * B * C;
-	ENSURE(mkError3_Measure(c1, c2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+	ENSURE(mkDeviation3_Measure(c1, c2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
 	double H = (sqrt(3.0) - 1) / sqrt(1 / (A * A) + 1 / (B * B) + 1 / (C * C));
-	ENSURE_NEAR(e.hausdorff_abs, H, 1e-14 * e.scale);
+	ENSURE_NEAR(e.hausdorff_abs, H, 1e-14 * e.size);
 	ENSURE(H <= e.hausdorff_abs + e.hausdorff_bound);
 	ENSURE_NEAR(e.area_rel, 1 / MK_PI - 1, 1e-14);
 	printf("octahedron in an ellipsoid: %s\n", e.message);
 	mkPointSet hull = {0};
 	ENSURE(mkHull3_CgalEpeck(xyz, 6, &hull) == MK_OK);
-	mkError e2;
-	ENSURE(mkError3_Measure(c1, c2, MK_SET_CONTACT, &hull, &opt, &e2) == MK_OK);
-	ENSURE_NEAR(e2.hausdorff_abs, e.hausdorff_abs, 1e-15 * e.scale);
+	mkDeviation e2;
+	ENSURE(mkDeviation3_Measure(c1, c2, MK_SET_CONTACT, &hull, &opt, &e2) == MK_OK);
+	ENSURE_NEAR(e2.hausdorff_abs, e.hausdorff_abs, 1e-15 * e.size);
 	mkPointSet_Free(&hull);
 	free(xyz);
 	/* A point pushed out along K's normal by d is measured as d. */
 	mkPointSet_Resize(&pts, 3, 7);
 	mkVec3 nrm = mkMat3_MulVec(M, (mkVec3){1, 0, 0});
 	pts.x[6] = pts.x[0] + 1e-3 * nrm.x, pts.y[6] = pts.y[0] + 1e-3 * nrm.y, pts.z[6] = pts.z[0] + 1e-3 * nrm.z;
-	ENSURE(mkError3_Measure(c1, c2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
-	ENSURE_NEAR(e.gap_out, 1e-3, 1e-14 * e.scale);
+	ENSURE(mkDeviation3_Measure(c1, c2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+	ENSURE_NEAR(e.gap_out, 1e-3, 1e-14 * e.size);
 	ENSURE(e.worst == 6);
 
 	/* The closed form's points on a boxy superquadric (plus an ellipsoid),
 	 * even grid and spaced grid: the referee places every such point on the
-	 * boundary to 1e-13 of the scale (test_referee3), so the true distance
+	 * boundary to 1e-13 of the size (test_referee3), so the true distance
 	 * is ~0 and must lie within the reported bound of the measured one. The
-	 * level, 1e-9 of the scale, is the 3D distance's known weakness
+	 * level, 1e-9 of the size, is the 3D distance's known weakness
 	 * (error.h): Newton in n alone measured 1.4e-4 here. */
 	mkBody3 q1 = mkBody3_Make((mkShape3){2, 1.2, 0.9, 0.3, 0.6}, mkMat3_FromQuat(0.9, 0.2, -0.3, 0.1), (mkVec3){1, 2, 3});
 	mkBody3 q2 = mkBody3_Make((mkShape3){0.6, 0.5, 0.4, 1, 1}, mkMat3_Identity(), (mkVec3){0, 0, 0});
@@ -351,10 +351,10 @@ static void test_3d(void)
 		mkSumOptions so = mkSumOptions_Default();
 		ENSURE(mkSum3_Batch(q1, q2, &so, u, u + G * G, u + 2 * G * G, G * G, pts.x, pts.y, pts.z, NULL, NULL, NULL)
 			== MK_OK);
-		ENSURE(mkError3_Measure(q1, q2, MK_SET_CONTACT, &pts, k ? &opt : NULL, &e) == MK_OK);
+		ENSURE(mkDeviation3_Measure(q1, q2, MK_SET_CONTACT, &pts, k ? &opt : NULL, &e) == MK_OK);
 		if (!k) opt.truth = e.area_k, opt.truth_bound = e.area_bound * e.area_k;
-		ENSURE_LE(e.gap_out, 1e-14 * e.scale);
-		ENSURE_LE(e.off_boundary_max, e.off_boundary_bound + 1e-14 * e.scale);
+		ENSURE_LE(e.gap_out, 1e-14 * e.size);
+		ENSURE_LE(e.off_boundary_max, e.off_boundary_bound + 1e-14 * e.size);
 		ENSURE_LE(e.off_boundary_rel, 1e-9); /* measured <= 3.4e-11 up to n = 100 */
 		printf("boxy superquadric, %s grid %d: %s\n", k ? "spaced" : "even", G, e.message);
 	}
@@ -369,8 +369,8 @@ static void test_closed_points(void)
 	mkBody2 b2 = mkBody2_Make((mkShape2){0.7, 0.5, 1.3}, mkMat2_Shear(0.5), (mkVec2){-2, 0});
 	mkSumOptions o = mkSumOptions_Default();
 	double prev = 0, area, abound;
-	ENSURE(mkError2_Area(b1, b2, MK_SET_CONTACT, &area, &abound) == MK_OK);
-	mkErrorOptions opt = {0};
+	ENSURE(mkDeviation2_Area(b1, b2, MK_SET_CONTACT, &area, &abound) == MK_OK);
+	mkDeviationOptions opt = {0};
 	opt.truth = area;
 	opt.truth_bound = abound;
 	for (int n = 2048; n <= 8192; n *= 2) {
@@ -379,8 +379,8 @@ static void test_closed_points(void)
 		mkSample2_Spaced(n, 0.3, u, u + n);
 		ENSURE(mkSum2_Batch(b1, b2, &o, u, u + n, n, pts.x, pts.y, NULL, NULL) == MK_OK);
 		free(u);
-		mkError e;
-		ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+		mkDeviation e;
+		ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
 		ENSURE_LE(e.off_boundary_rel, 1e-14);
 		if (prev > 0) ENSURE_NEAR(prev / e.hausdorff_abs, 4.0, 0.2);
 		prev = e.hausdorff_abs;
@@ -395,7 +395,7 @@ static void test_closed_points(void)
  * angles, and the reference code's spaced map. Every point is on the
  * boundary to rounding; the Hausdorff distance is the sampling's alone.
  * Measured here (docs/error-measure.md has the table over N and eps): the
- * paper's sampling is the closest, 3.2e-6 of the scale, the normal angles
+ * paper's sampling is the closest, 3.2e-6 of the size, the normal angles
  * 27 times and the spaced map 95 times farther. The spaced map evens out
  * the gaps between neighbours (their largest is 1.8 times the mean instead
  * of 103), but a gap costs its length squared times the curvature, and it
@@ -409,8 +409,8 @@ static void test_samplings(void)
 	mkBody2 b2 = mkBody2_Make((mkShape2){0.5, 0.3, 1.0}, mkMat2_Identity(), (mkVec2){1, 1});
 	static double u[2 * N];
 	double area, abound, h[3];
-	ENSURE(mkError2_Area(b1, b2, MK_SET_CONTACT, &area, &abound) == MK_OK);
-	mkErrorOptions opt = {0};
+	ENSURE(mkDeviation2_Area(b1, b2, MK_SET_CONTACT, &area, &abound) == MK_OK);
+	mkDeviationOptions opt = {0};
 	opt.truth = area;
 	opt.truth_bound = abound;
 	const char *name[3] = {"surface angles (paper)", "normal angles", "spaced (reference code)"};
@@ -422,11 +422,11 @@ static void test_samplings(void)
 		o.param = k == 1 ? MK_PARAM_NORMAL : MK_PARAM_SURFACE;
 		mkPointSet_Resize(&pts, 2, N);
 		ENSURE(mkSum2_Batch(b1, b2, &o, u, u + N, N, pts.x, pts.y, NULL, NULL) == MK_OK);
-		mkError e;
-		ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+		mkDeviation e;
+		ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
 		ENSURE_LE(e.off_boundary_rel, 1e-14);
 		h[k] = e.hausdorff_rel;
-		printf("N = %d, eps 0.1, %-24s hausdorff %.3g, area error %.3g (of the scale / relative)\n", N, name[k],
+		printf("N = %d, eps 0.1, %-24s hausdorff %.3g, area error %.3g (of the size / relative)\n", N, name[k],
 			e.hausdorff_rel, e.area_rel);
 	}
 	ENSURE(h[0] * 10 < h[2]);
@@ -437,13 +437,13 @@ static void test_samplings(void)
  * finds sd(p) = max over unit n of <n, p> - h_K(n) by a bracket (2D) or
  * Newton (3D) that stop early, once the last step can no longer change the
  * value beyond rounding; this asks that they still land where a plain
- * search lands. Brute force: h_K from mkError2/3_Support (the textbook
+ * search lands. Brute force: h_K from mkDeviation2/3_Support (the textbook
  * support function, the quantity being maximised) over a dense direction
  * set (2D 2^14 angles, 3D a Fibonacci sphere of 2^15), then refined around
  * the best one (2D golden section on the two neighbouring cells, 3D a
  * pattern search whose step halves from 2e-2 to 1e-13 rad). Points:
  * support points of K moved along a random direction by 0, 1e-9, 1e-4 or
- * 1e-3 of the scale, in or out. Tolerance: both values are attained, so each
+ * 1e-3 of the size, in or out. Tolerance: both values are attained, so each
  * is at most the true sd; near its maximum f is flat to second order, so a
  * direction within 1e-8 rad gives the value to ~1e-16 S; 1e-14 S (2D) and
  * 1e-12 S (3D, where the measure's distance is an estimate, error.h) are a
@@ -455,14 +455,14 @@ static double sd_brute2(mkBody2 b1, mkBody2 b2, mkVec2 p)
 	double best = -HUGE_VAL, tb = 0;
 	for (int j = 0; j < D; ++j) {
 		double t = 2 * MK_PI * j / D, c = cos(t), s = sin(t);
-		double f = c * p.x + s * p.y - mkError2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){c, s}, NULL);
+		double f = c * p.x + s * p.y - mkDeviation2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){c, s}, NULL);
 		if (f > best) best = f, tb = t;
 	}
 	double lo = tb - 2 * MK_PI / D, hi = tb + 2 * MK_PI / D, g = 0.5 * (sqrt(5.0) - 1);
 	for (int it = 0; it < 90; ++it) {
 		double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-		double fa = cos(a) * p.x + sin(a) * p.y - mkError2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(a), sin(a)}, NULL);
-		double fb = cos(b) * p.x + sin(b) * p.y - mkError2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(b), sin(b)}, NULL);
+		double fa = cos(a) * p.x + sin(a) * p.y - mkDeviation2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(a), sin(a)}, NULL);
+		double fb = cos(b) * p.x + sin(b) * p.y - mkDeviation2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(b), sin(b)}, NULL);
 		best = fmax(best, fmax(fa, fb));
 		if (fa >= fb) hi = b;
 		else lo = a;
@@ -473,7 +473,7 @@ static double sd_brute2(mkBody2 b1, mkBody2 b2, mkVec2 p)
 static double f3(mkBody3 b1, mkBody3 b2, mkVec3 p, mkVec3 n)
 {
 	n = mkVec3_Scale(n, 1 / mkVec3_Length(n));
-	return mkVec3_Dot(n, p) - mkError3_Support(b1, b2, MK_SET_CONTACT, n, NULL);
+	return mkVec3_Dot(n, p) - mkDeviation3_Support(b1, b2, MK_SET_CONTACT, n, NULL);
 }
 
 static double sd_brute3(mkBody3 b1, mkBody3 b2, mkVec3 p)
@@ -516,17 +516,17 @@ static void test_fast_vs_brute(void)
 			mkMat2_Mul(mkMat2_Rotation(6 * u), mkMat2_Shear(mk_test_unit(&seed) - 0.5)), (mkVec2){1, -2});
 		mkBody2 b2 = mkBody2_Make((mkShape2){0.3 + mk_test_unit(&seed), 0.3 + mk_test_unit(&seed), 0.3 + 1.4 * mk_test_unit(&seed)},
 			mkMat2_Rotation(6 * mk_test_unit(&seed)), (mkVec2){4, 5});
-		mkErrorOptions opt = {0, 1.0, 0.0}; /* a stand-in area: only the distances are compared */
+		mkDeviationOptions opt = {0, 1.0, 0.0}; /* a stand-in area: only the distances are compared */
 		for (int k = 0; k < 24; ++k) {
 			double t = 2 * MK_PI * mk_test_unit(&seed), a = 2 * MK_PI * mk_test_unit(&seed);
 			mkVec2 x;
-			mkError2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(t), sin(t)}, &x);
-			double S = mkError2_Scale(b1, b2, MK_SET_CONTACT), d = moves[k % 4] * S * (k & 4 ? -1 : 1);
+			mkDeviation2_Support(b1, b2, MK_SET_CONTACT, (mkVec2){cos(t), sin(t)}, &x);
+			double S = mkSum2_Size(b1, b2, MK_SET_CONTACT), d = moves[k % 4] * S * (k & 4 ? -1 : 1);
 			mkVec2 p = {x.x + d * cos(a), x.y + d * sin(a)};
 			mkPointSet_Resize(&pts, 2, 1);
 			pts.x[0] = p.x, pts.y[0] = p.y;
-			mkError e;
-			ENSURE(mkError2_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+			mkDeviation e;
+			ENSURE(mkDeviation2_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
 			double brute = sd_brute2(b1, b2, p);
 			ENSURE_NEAR(e.gap_out, brute, 1e-14 * S);
 			ENSURE(brute <= e.gap_out + e.off_boundary_bound);
@@ -542,24 +542,24 @@ static void test_fast_vs_brute(void)
 			mk_test_unit(&seed)), (mkVec3){1, 2, 3});
 		mkBody3 b2 = mkBody3_Make(s2, mkMat3_FromQuat(mk_test_unit(&seed), mk_test_unit(&seed), mk_test_unit(&seed),
 			mk_test_unit(&seed)), (mkVec3){-1, 0, 2});
-		mkErrorOptions opt = {0, 1.0, 0.0};
+		mkDeviationOptions opt = {0, 1.0, 0.0};
 		for (int k = 0; k < 8; ++k) {
 			mkVec3 n = {mk_test_unit(&seed) - 0.5, mk_test_unit(&seed) - 0.5, mk_test_unit(&seed) - 0.5}, x;
 			mkVec3 m = {mk_test_unit(&seed) - 0.5, mk_test_unit(&seed) - 0.5, mk_test_unit(&seed) - 0.5};
-			mkError3_Support(b1, b2, MK_SET_CONTACT, n, &x);
-			double S = mkError3_Scale(b1, b2, MK_SET_CONTACT), d = moves[k % 4] * S * (k & 4 ? -1 : 1);
+			mkDeviation3_Support(b1, b2, MK_SET_CONTACT, n, &x);
+			double S = mkSum3_Size(b1, b2, MK_SET_CONTACT), d = moves[k % 4] * S * (k & 4 ? -1 : 1);
 			mkVec3 p = mkVec3_Add(x, mkVec3_Scale(m, d / mkVec3_Length(m)));
 			mkPointSet_Resize(&pts, 3, 1);
 			pts.x[0] = p.x, pts.y[0] = p.y, pts.z[0] = p.z;
-			mkError e;
-			ENSURE(mkError3_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
+			mkDeviation e;
+			ENSURE(mkDeviation3_Measure(b1, b2, MK_SET_CONTACT, &pts, &opt, &e) == MK_OK);
 			double brute = sd_brute3(b1, b2, p);
 			ENSURE_NEAR(e.gap_out, brute, 1e-12 * S);
 			ENSURE(brute <= e.gap_out + e.off_boundary_bound + 1e-13 * S);
 			worst3 = fmax(worst3, fabs(e.gap_out - brute) / S);
 		}
 	}
-	printf("signed distance, measure vs brute force: 2D %.2g, 3D %.2g of the scale at most\n", worst2, worst3);
+	printf("signed distance, measure vs brute force: 2D %.2g, 3D %.2g of the size at most\n", worst2, worst3);
 }
 
 /* The 3D figures do not depend on the order of the points: the measure
@@ -578,8 +578,8 @@ static void test_order3(void)
 	mkPointSet_Resize(&pts, 3, N);
 	ENSURE(mkSum3_Batch(q1, q2, &so, u, u + N, u + 2 * N, N, pts.x, pts.y, pts.z, NULL, NULL, NULL) == MK_OK);
 	for (int k = 0; k < N; ++k) xyz[3 * k] = pts.x[k], xyz[3 * k + 1] = pts.y[k], xyz[3 * k + 2] = pts.z[k];
-	mkErrorOptions opt = {0, 1.0, 0.0};
-	mkError e[3];
+	mkDeviationOptions opt = {0, 1.0, 0.0};
+	mkDeviation e[3];
 	static int perm[3][N]; /* as given; reversed; every third point first, then the others */
 	for (int k = 0, c = 0; k < N; ++k) {
 		perm[0][k] = k;
@@ -593,7 +593,7 @@ static void test_order3(void)
 			int j = perm[v][k];
 			pts.x[k] = xyz[3 * j], pts.y[k] = xyz[3 * j + 1], pts.z[k] = xyz[3 * j + 2];
 		}
-		ENSURE(mkError3_Measure(q1, q2, MK_SET_CONTACT, &pts, &opt, &e[v]) == MK_OK);
+		ENSURE(mkDeviation3_Measure(q1, q2, MK_SET_CONTACT, &pts, &opt, &e[v]) == MK_OK);
 	}
 	for (int v = 1; v < 3; ++v) {
 		ENSURE(e[v].gap_in == e[0].gap_in && e[v].gap_out == e[0].gap_out);

@@ -133,7 +133,7 @@ typedef struct Out {
 	int rc, nv, nt;
 	double V[3 * MAXP];
 	int T[6 * MAXP];
-	mkError e;
+	mkDeviation e;
 	int mrc;
 } Out;
 
@@ -181,8 +181,8 @@ static void run(const Set *s, int order, Out *o, int tid)
 	mkPointSet p = {0};
 	mkPointSet_Resize(&p, 3, s->n);
 	for (int k = 0; k < s->n; ++k) p.x[k] = xyz[3 * k], p.y[k] = xyz[3 * k + 1], p.z[k] = xyz[3 * k + 2];
-	mkErrorOptions opt = {0, 1.0, 0.0}; /* the volume of K given: only P's figures matter here */
-	o->mrc = mkError3_Measure(s->b1, s->b2, MK_SET_CONTACT, &p, &opt, &o->e);
+	mkDeviationOptions opt = {0, 1.0, 0.0}; /* the volume of K given: only P's figures matter here */
+	o->mrc = mkDeviation3_Measure(s->b1, s->b2, MK_SET_CONTACT, &p, &opt, &o->e);
 	mkPointSet_Free(&p);
 }
 
@@ -219,7 +219,7 @@ static int differ(const Out *a, const Out *b)
 	int hull = a->rc != b->rc || a->nv != b->nv || a->nt != b->nt
 		|| memcmp(a->V, b->V, 3 * (size_t)a->nv * sizeof a->V[0])
 		|| memcmp(a->T, b->T, 3 * (size_t)a->nt * sizeof a->T[0]);
-	const mkError *x = &a->e, *y = &b->e;
+	const mkDeviation *x = &a->e, *y = &b->e;
 	double fx[] = {x->gap_in, x->gap_out, x->hausdorff_abs, x->hausdorff_bound, x->off_boundary_max,
 		x->off_boundary_bound, x->area_p, x->area_rel, x->area_bound};
 	double fy[] = {y->gap_in, y->gap_out, y->hausdorff_abs, y->hausdorff_bound, y->off_boundary_max,

@@ -82,8 +82,8 @@ int main(int argc, char **argv)
 					if (!strncmp(m->name, "hull-cgal", 9)) ENSURE(v.extreme);
 					if (!strcmp(m->name, "edge-sort")) ENSURE_LE(v.outside_max, 4 * v.outside_tol / MK_REFEREE_HULL_ULPS);
 				} else {
-					depth = fmax(depth, v.depth / v.scale);
-					excess = fmax(excess, v.excess / v.scale);
+					depth = fmax(depth, v.depth / v.extent);
+					excess = fmax(excess, v.excess / v.extent);
 				}
 			}
 		if (sampled)

@@ -40,17 +40,12 @@ static int judge3(const mkMethod *m, const Case3 *c, mkSet set, int n, const mkP
 	return v.pass;
 }
 
-int main(void)
+/* Boundary points in 2D: moved out or in along the normal, slid along the
+ * tangent, NaN, the wrong set, the wrong order. */
+static void teethBoundary2(const Case2 *c)
 {
-	Case2 c2[16];
-	Case3 c3[16];
-	cases2(c2, 7);
-	cases3(c3, 7);
-	const Case2 *c = &c2[0];
 	const int n = 200, k = 37;
 	mkPointSet good = {0}, bad;
-
-	/* ---- 2D boundary points ---- */
 	ENSURE(mkMethod_ClosedGradient.run2(c->a, c->b, MK_SET_CONTACT, n, &good) == MK_OK);
 	ENSURE(judge2(&mkMethod_ClosedGradient, c, MK_SET_CONTACT, n, &good) == 1);
 	double *u = malloc(2 * (size_t)n * sizeof *u);
@@ -59,9 +54,9 @@ int main(void)
 	mkReferee2_Point(c->a, (mkVec2){u[k], u[n + k]}, &nrm);
 	mkVerdict v;
 	ENSURE(mkReferee2_Check(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &good, NULL, &v) == MK_OK);
-	/* A move of 1e-11 of the scale, some twenty times the allowance: out
+	/* A move of 1e-11 of the extent, some twenty times the allowance: out
 	 * along the normal, then in. */
-	double d = 1e-11 * v.scale;
+	double d = 1e-11 * v.extent;
 	bad = copy(&good);
 	bad.x[k] += d * nrm.x;
 	bad.y[k] += d * nrm.y;
@@ -69,12 +64,12 @@ int main(void)
 	bad.x[k] = good.x[k] - d * nrm.x;
 	bad.y[k] = good.y[k] - d * nrm.y;
 	ENSURE(judge2(&mkMethod_ClosedGradient, c, MK_SET_CONTACT, n, &bad) == 0);
-	/* A slide along the tangent by 5% of the scale leaves the point on the
+	/* A slide along the tangent by 5% of the extent leaves the point on the
 	 * tangent line, so the normal alone cannot see it; it lies outside the
 	 * set by about slide^2 / (2 rho), which the fan of nearby directions
 	 * does see. */
-	bad.x[k] = good.x[k] - 0.05 * v.scale * nrm.y;
-	bad.y[k] = good.y[k] + 0.05 * v.scale * nrm.x;
+	bad.x[k] = good.x[k] - 0.05 * v.extent * nrm.y;
+	bad.y[k] = good.y[k] + 0.05 * v.extent * nrm.x;
 	ENSURE(judge2(&mkMethod_ClosedGradient, c, MK_SET_CONTACT, n, &bad) == 0);
 	mkRefereeOptions nofan = {2048, 0, 1};
 	ENSURE(mkReferee2_Check(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &bad, &nofan, &v) == MK_OK);
@@ -92,7 +87,14 @@ int main(void)
 	mkPointSet_Free(&bad);
 	free(u);
 
-	/* ---- 2D hulls ---- */
+	mkPointSet_Free(&good);
+}
+
+/* Hulls in 2D: rotated (passes), clockwise, a vertex missing, twice, or one
+ * ulp off. */
+static void teethHulls2(const Case2 *c)
+{
+	mkPointSet good = {0}, bad;
 	const int ns = 64;
 	ENSURE(mkMethod_HullCgalEpick.run2(c->a, c->b, MK_SET_CONTACT, ns, &good) == MK_OK);
 	ENSURE(judge2(&mkMethod_HullCgalEpick, c, MK_SET_CONTACT, ns, &good) == 1);
@@ -119,18 +121,24 @@ int main(void)
 	ENSURE(judge2(&mkMethod_HullCgalEpick, c, MK_SET_CONTACT, ns, &bad) == 0);
 	mkPointSet_Free(&bad);
 
-	/* ---- 3D ---- */
-	const Case3 *e = &c3[0];
+	mkPointSet_Free(&good);
+}
+
+/* Boundary points in 3D: moved out or in along the normal. */
+static void teethBoundary3(const Case3 *e)
+{
+	mkPointSet good = {0}, bad;
 	const int n3 = 12, k3 = 5 * 12 + 7;
 	ENSURE(mkMethod_ClosedNormal.run3(e->a, e->b, MK_SET_PLUS, n3, &good) == MK_OK);
 	ENSURE(judge3(&mkMethod_ClosedNormal, e, MK_SET_PLUS, n3, &good) == 1);
+	mkVerdict v;
 	ENSURE(mkReferee3_Check(&mkMethod_ClosedNormal, e->a, e->b, MK_SET_PLUS, n3, &good, NULL, &v) == MK_OK);
 	double *u3 = malloc(3 * (size_t)n3 * n3 * sizeof *u3);
 	mkSample3_Grid(n3, u3, u3 + n3 * n3, u3 + 2 * n3 * n3);
 	mkVec3 nn;
 	mkReferee3_Point(e->a, (mkVec3){u3[k3], u3[n3 * n3 + k3], u3[2 * n3 * n3 + k3]}, &nn);
 	bad = copy(&good);
-	d = 1e-11 * v.scale;
+	double d = 1e-11 * v.extent;
 	bad.x[k3] += d * nn.x;
 	bad.y[k3] += d * nn.y;
 	bad.z[k3] += d * nn.z;
@@ -141,6 +149,15 @@ int main(void)
 	ENSURE(judge3(&mkMethod_ClosedNormal, e, MK_SET_PLUS, n3, &bad) == 0);
 	mkPointSet_Free(&bad);
 
+	free(u3);
+	mkPointSet_Free(&good);
+}
+
+/* Hulls in 3D: a vertex missing, one ulp off, an input sum that is not
+ * extreme added. */
+static void teethHulls3(const Case3 *e)
+{
+	mkPointSet good = {0}, bad;
 	const int s3 = 6;
 	ENSURE(mkMethod_HullCgalEpick.run3(e->a, e->b, MK_SET_CONTACT, s3, &good) == MK_OK);
 	ENSURE(judge3(&mkMethod_HullCgalEpick, e, MK_SET_CONTACT, s3, &good) == 1);
@@ -172,41 +189,55 @@ int main(void)
 		bad.x[good.count] = pq[3 * i1] + pq[3 * per + 3 * i2];
 		bad.y[good.count] = pq[3 * i1 + 1] + pq[3 * per + 3 * i2 + 1];
 		bad.z[good.count] = pq[3 * i1 + 2] + pq[3 * per + 3 * i2 + 2];
+		mkVerdict v;
 		ENSURE(mkReferee3_Check(&mkMethod_HullCgalEpick, e->a, e->b, MK_SET_CONTACT, s3, &bad, NULL, &v) == MK_OK);
 		ENSURE(!v.pass && v.subset && !v.convex);
 		mkPointSet_Free(&bad);
 		free(pq);
 	}
 
-	/* ---- a wrong pairing ----
-	 * The mistake a wrong Phi or a wrong normal map makes: body 1's point
-	 * u_k paired with body 2's support point for a normal turned by a small
-	 * angle. Such points lie inside the sum by about rho angle^2 / 2; at
-	 * 1e-4 rad that is ~1e-9 of the scale, far above the allowance. The
-	 * correctly paired points, built the same way, pass. */
-	{
-		const Case2 *w = &c2[1];
-		mkPointSet right = {0}, wrong = {0};
-		mkPointSet_Resize(&right, 2, n);
-		mkPointSet_Resize(&wrong, 2, n);
-		double *uu = malloc(2 * (size_t)n * sizeof *uu);
-		mkSample2_Angles(n, uu, uu + n);
-		for (int i = 0; i < n; ++i) {
-			mkVec2 nn2, x1 = mkReferee2_Point(w->a, (mkVec2){uu[i], uu[n + i]}, &nn2);
-			double cs = cos(1e-4), sn = sin(1e-4);
-			mkVec2 turned = {cs * nn2.x - sn * nn2.y, sn * nn2.x + cs * nn2.y};
-			mkVec2 s0 = mkBody2_Support(w->b, (mkVec2){-nn2.x, -nn2.y});
-			mkVec2 s1 = mkBody2_Support(w->b, (mkVec2){-turned.x, -turned.y});
-			right.x[i] = x1.x - (s0.x - w->b.t.x), right.y[i] = x1.y - (s0.y - w->b.t.y);
-			wrong.x[i] = x1.x - (s1.x - w->b.t.x), wrong.y[i] = x1.y - (s1.y - w->b.t.y);
-		}
-		ENSURE(judge2(&mkMethod_ClosedNormal, w, MK_SET_CONTACT, n, &right) == 1);
-		ENSURE(judge2(&mkMethod_ClosedNormal, w, MK_SET_CONTACT, n, &wrong) == 0);
-		free(uu);
-		mkPointSet_Free(&right);
-		mkPointSet_Free(&wrong);
-	}
-	free(u3);
 	mkPointSet_Free(&good);
+}
+
+/* A wrong pairing, the mistake a wrong Phi or a wrong normal map makes:
+ * body 1's point u_k paired with body 2's support point for a normal turned
+ * by a small angle. Such points lie inside the sum by about rho angle^2 / 2; at
+ * 1e-4 rad that is ~1e-9 of the extent, far above the allowance. The
+ * correctly paired points, built the same way, pass. */
+static void teethWrongPairing(const Case2 *w)
+{
+	const int n = 200;
+	mkPointSet right = {0}, wrong = {0};
+	mkPointSet_Resize(&right, 2, n);
+	mkPointSet_Resize(&wrong, 2, n);
+	double *uu = malloc(2 * (size_t)n * sizeof *uu);
+	mkSample2_Angles(n, uu, uu + n);
+	for (int i = 0; i < n; ++i) {
+		mkVec2 nn2, x1 = mkReferee2_Point(w->a, (mkVec2){uu[i], uu[n + i]}, &nn2);
+		double cs = cos(1e-4), sn = sin(1e-4);
+		mkVec2 turned = {cs * nn2.x - sn * nn2.y, sn * nn2.x + cs * nn2.y};
+		mkVec2 s0 = mkBody2_Support(w->b, (mkVec2){-nn2.x, -nn2.y});
+		mkVec2 s1 = mkBody2_Support(w->b, (mkVec2){-turned.x, -turned.y});
+		right.x[i] = x1.x - (s0.x - w->b.t.x), right.y[i] = x1.y - (s0.y - w->b.t.y);
+		wrong.x[i] = x1.x - (s1.x - w->b.t.x), wrong.y[i] = x1.y - (s1.y - w->b.t.y);
+	}
+	ENSURE(judge2(&mkMethod_ClosedNormal, w, MK_SET_CONTACT, n, &right) == 1);
+	ENSURE(judge2(&mkMethod_ClosedNormal, w, MK_SET_CONTACT, n, &wrong) == 0);
+	free(uu);
+	mkPointSet_Free(&right);
+	mkPointSet_Free(&wrong);
+}
+
+int main(void)
+{
+	Case2 c2[16];
+	Case3 c3[16];
+	cases2(c2, 7);
+	cases3(c3, 7);
+	teethBoundary2(&c2[0]);
+	teethHulls2(&c2[0]);
+	teethBoundary3(&c3[0]);
+	teethHulls3(&c3[0]);
+	teethWrongPairing(&c2[1]);
 	return mk_summary("test_teeth");
 }

@@ -117,7 +117,7 @@ int main(int argc, char **argv)
 			continue;
 		}
 		for (int s = 0; s < steps; ++s) {
-			double sc = mkCollide3_Scale(b1, b2);
+			double sc = mkCollide3_PairSize(b1, b2);
 			mkVec3 dir = mkVec3_Normalize(mkVec3_Make(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)));
 			mkVec3 ax = mkVec3_Normalize(mkVec3_Make(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)));
 			double h = 0.5 * step;

@@ -571,7 +571,7 @@ static void test_warm_start(void)
 		mkMat3 R = mk_test_rotation(&seed);
 		mkBody3 b2 = mkBody3_Make(b, R, c2);
 		/* the nearby pose: moved and turned a little */
-		double sc = mkCollide3_Scale(b1, b2);
+		double sc = mkCollide3_PairSize(b1, b2);
 		mkVec3 step = mkVec3_Scale(mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
 			mk_test_uniform(&seed, -1, 1))), 1e-2 * sc);
 		mkMat3 turn = mkMat3_FromQuat(1.0, 0.005, -0.004, 0.003);

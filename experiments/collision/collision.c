@@ -81,7 +81,7 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 	char margin[32];
 	snprintf(margin, sizeof margin, "%g", o->margin);
 	mkMeta_Set(meta, "referee_margin", margin);
-	mkMeta_Set(meta, "referee_margin_unit", "scale (mkCollide3_Scale of the pair)");
+	mkMeta_Set(meta, "referee_margin_unit", "scale (mkCollide3_PairSize of the pair)");
 	mkMeta_Set(meta, "rng", "xoshiro256** seeded by splitmix64, one stream per trial: (kind << 32) | trial, "
 		"kind 0 ellipsoids 1 superquadrics 2 near 3 deep");
 	mkMeta_Set(meta, "draw", "B1 a,b,c~U(1,11) c~U(-5,5)^3; B2 a,b,c~U(1,6) c~U(5,15)^3; eps1,eps2~U(0.1,1.9) "
@@ -90,7 +90,7 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 		"by secant steps on the referee's signed distance to s*size within 1e-3 relative, s = "
 		"+-1e-1..+-1e-6 by (trial/2)%12, size = the smallest semi-axis of the two bodies");
 	mkMeta_Set(meta, "deep", "centres U(-1,1)^3 and U(-2,2)^3");
-	mkMeta_Set(meta, "error", "|distance - referee_distance| / mkCollide3_Scale of the pair; empty (and agrees "
+	mkMeta_Set(meta, "error", "|distance - referee_distance| / mkCollide3_PairSize of the pair; empty (and agrees "
 		"empty) where the referee is not certain");
 	mkMeta_Set(meta, "referee_certain", "1 when the referee's answer is certified: separated with its bracket "
 		"[lower, upper] of sd narrower than 1e-10 of the scale, or an overlap certified by an enclosing tetrahedron "
@@ -314,7 +314,7 @@ int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *
 		fprintf(stderr, "collision: %s trial %ld: the referee failed\n", mkCollision_PairNames[kind], trial);
 		return -1;
 	}
-	truth.scale = mkCollide3_Scale(b1, b2);
+	truth.scale = mkCollide3_PairSize(b1, b2);
 	/* The referee's residual: its bracket width / scale (separated), 0 for a
 	 * certified overlap, NaN otherwise (colliders.h). */
 	truth.certain = truth.ref.residual <= MK_REFEREE_CERTAIN;

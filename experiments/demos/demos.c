@@ -1,6 +1,7 @@
 /* demos.c - the geometry of the paper's demonstration figures 1-4 (see
  * demos.h): the fixed choices, the SPEC texts, one writer per figure. */
 #include "demos.h"
+#include "demos_internal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,62 +20,16 @@ static const double mkFig3Shear[2] = { 0.8, -0.6 };
 #define MK_FIG3_N 100
 #define MK_FIG3_PLACES 10
 
-/* Fig. 4: general superquadrics (reference demo: B1 a ~ 1 + 10 U, B2
- * a ~ 1 + 5 U, eps ~ U(0.1, 1.9), drawn at random). */
-static const double mkFig4Sq1[5] = { 7.5, 5.0, 4.0, 0.4, 1.4 };   /* a, b, c, eps1, eps2 */
-static const double mkFig4Sq2[5] = { 3.5, 2.2, 1.6, 1.6, 0.3 };
-/* Rotations of every rotated 3D body (quaternions w, x, y, z, normalised by
- * the SPEC parser); the reference code draws quat2rotm(rand(1,4)). */
-static const double mkQuat1[4] = { 0.86, 0.22, 0.38, 0.26 };
-static const double mkQuat2[4] = { 0.42, 0.71, 0.13, 0.55 };
-/* Primitive sizes (edge lengths of the cubes, l x w x h; cylinder
- * cross-section semi-axes and height) from the reference demo script. */
-static const double mkBox1[3] = { 5.2, 3.3, 2.87 };
-static const double mkBox2[3] = { 4.3, 2.8, 1.254 };
-static const double mkCyl1[3] = { 6.24, 3.6, 10.0 };
-static const double mkCyl2[3] = { 3.58, 2.52, 5.0 };
-/* The reference demo's "ellipsoids" are spheres of radius 8.6 and 3.56; the
- * paper's caption says ellipsoids, so the largest semi-axes keep those
- * radii and the other two are chosen here. */
-static const double mkEll1[3] = { 8.6, 5.5, 3.5 };
-static const double mkEll2[3] = { 3.56, 2.4, 1.6 };
-/* The parallelepipeds' maps (paper, Sec. 5.2.3). */
-static const double mkShear1[9] = { 1, 0, 0.5, 0, 1, 0.2, 0, 0, 1 };
-static const double mkShear2[9] = { 1, 0, 0.47, 0, 1, 0.14, 0, 0, 1 };
-/* B2 is placed at the sum point whose B1 surface normal is closest to this
- * direction: to the right of B1 as the 3D plots look at it (gnuplot's view
- * 60, 30 has the screen's right along (cos 30, sin 30, 0)), a little
- * raised, so that B2 does not hide B1. */
-static const double mkPlaceDir[3] = { 0.85, 0.45, 0.3 };
-#define MK_FIG4_GRID 50
 
 /* ---- the run: index rows, geometry files --------------------------------- */
 
-typedef struct mkDemoRun {
-	const mkDemosOptions *o;
-	mkRun *run;
-	int failed;
-} mkDemoRun;
 
-/* What one geometry file shows, for its index row. */
-typedef struct mkEntry {
-	int figure;
-	const char *panel;
-	const char *file;
-	const char *content;
-	const char *body1;   /* SPEC text, or "" */
-	const char *body2;
-	const char *form;    /* closed form used, or "" */
-	const char *param;
-	long n;              /* parameters of the sum (3D: grid side), 0 if none */
-	const char *note;
-} mkEntry;
 
 const char *const mkDemos_Columns[] = {
 	"figure", "panel", "file", "rows", "content", "body1", "body2", "set", "form", "param", "n", "note", NULL
 };
 
-static int mkDemoRun_Open(mkDemoRun *run, const char *name, const char *const *cols, int ncols, mkCsv *csv)
+int mkDemoRun_Open(mkDemoRun *run, const char *name, const char *const *cols, int ncols, mkCsv *csv)
 {
 	if (mkRun_OpenSibling(run->run, name, cols, ncols, csv) != 0) {
 		run->failed = 1;
@@ -84,7 +39,7 @@ static int mkDemoRun_Open(mkDemoRun *run, const char *name, const char *const *c
 }
 
 /* Commit a geometry file with its sidecar and add its index row. */
-static int mkDemoRun_Commit(mkDemoRun *run, mkCsv *csv, const mkEntry *e)
+int mkDemoRun_Commit(mkDemoRun *run, mkCsv *csv, const mkDemoEntry *e)
 {
 	char msg[1024];
 	long rows = csv->rows;
@@ -125,12 +80,9 @@ static void mkEndBlock(mkCsv *csv)
 
 /* ---- bodies from SPEC text ---------------------------------------------- */
 
-/* The shortest of %.15g, %.16g, %.17g that reads back to v, so that the SPEC
- * texts stay readable ("8.6", not "8.5999999999999996") and exact. */
-typedef struct mkNum { char s[32]; } mkNum;
-static mkNum mkFmt(double v)
+mkDemoNum mkDemo_Fmt(double v)
 {
-	mkNum n;
+	mkDemoNum n;
 	for (int digits = 15; digits <= 17; ++digits) {
 		snprintf(n.s, sizeof n.s, "%.*g", digits, v);
 		if (strtod(n.s, NULL) == v)
@@ -142,12 +94,12 @@ static mkNum mkFmt(double v)
 static void mkSpec2(char *buf, size_t len, const double s[3], double angle, double shear)
 {
 	snprintf(buf, len, "superellipse a=%s b=%s eps=%s rot=%s shear=%s",
-		mkFmt(s[0]).s, mkFmt(s[1]).s, mkFmt(s[2]).s, mkFmt(angle).s, mkFmt(shear).s);
+		mkDemo_Fmt(s[0]).s, mkDemo_Fmt(s[1]).s, mkDemo_Fmt(s[2]).s, mkDemo_Fmt(angle).s, mkDemo_Fmt(shear).s);
 }
 
 /* The body of a SPEC text into *out: an mkBody2 when dim is 2, an mkBody3
  * when 3. Returns 0, or -1 after printing why. */
-static int mkParseBody(const char *text, int dim, const char *what, void *out)
+int mkDemo_ParseBody(const char *text, int dim, const char *what, void *out)
 {
 	mkSpec spec;
 	char msg[512];
@@ -162,7 +114,7 @@ static int mkParseBody(const char *text, int dim, const char *what, void *out)
 	return 0;
 }
 
-static mkSumOptions mkOptionsFor(const mkDemosOptions *o, mkForm form, mkParam param)
+mkSumOptions mkDemo_Options(const mkDemosOptions *o, mkForm form, mkParam param)
 {
 	mkSumOptions opt = mkSumOptions_Default();
 	opt.set = MK_SET_CONTACT;
@@ -172,13 +124,8 @@ static mkSumOptions mkOptionsFor(const mkDemosOptions *o, mkForm form, mkParam p
 	return opt;
 }
 
-/* Buffers of n points (2D or 3D), owned by the caller. */
-typedef struct mkPts {
-	int n;
-	double *ux, *uy, *uz, *x, *y, *z, *kx, *ky, *kz;
-} mkPts;
 
-static int mkPts_Alloc(mkPts *p, int n)
+int mkDemoPts_Alloc(mkDemoPts *p, int n)
 {
 	memset(p, 0, sizeof *p);
 	p->n = n;
@@ -193,7 +140,7 @@ static int mkPts_Alloc(mkPts *p, int n)
 	return ok ? 0 : -1;
 }
 
-static void mkPts_Free(mkPts *p)
+void mkDemoPts_Free(mkDemoPts *p)
 {
 	double *all[] = { p->ux, p->uy, p->uz, p->x, p->y, p->z, p->kx, p->ky, p->kz };
 	for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
@@ -219,7 +166,7 @@ static void mkWriteLeads(mkCsv *csv, const char *lead1, const char *lead2, long 
  * up to three leading fields (NULL / MK_NO_FIELD: none); with_kiss adds two
  * empty kissing-point fields. */
 static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, long lead3,
-	mkBody2 b, const mkPts *u, int with_kiss)
+	mkBody2 b, const mkDemoPts *u, int with_kiss)
 {
 	for (int k = 0; k <= u->n; ++k) {
 		int kk = k % u->n;
@@ -241,7 +188,7 @@ static void mkWriteOutline2(mkCsv *csv, const char *lead1, const char *lead2, lo
 /* A closed-form sum curve: for k = 0..n (k = n repeats k = 0) the lead
  * fields (as in mkWriteOutline2), k, the parameter's angle when
  * with_angle, the sum point and the kissing point; then a block end. */
-static void mkWriteSum2(mkCsv *csv, const char *lead1, const char *lead2, long lead3, const mkPts *pt,
+static void mkWriteSum2(mkCsv *csv, const char *lead1, const char *lead2, long lead3, const mkDemoPts *pt,
 	int with_angle)
 {
 	for (int k = 0; k <= pt->n; ++k) {
@@ -270,8 +217,8 @@ static void mkFigure1(mkDemoRun *run)
 	mkSpec2(s1, sizeof s1, p1, MK_PI / 8.0, 1.32);
 	mkSpec2(s2, sizeof s2, p2, -MK_PI / 5.0, 1.6);
 	mkBody2 b1, b2;
-	mkPts pt;
-	if (mkParseBody(s1, 2, "fig1.body1", &b1) || mkParseBody(s2, 2, "fig1.body2", &b2) || mkPts_Alloc(&pt, N)) {
+	mkDemoPts pt;
+	if (mkDemo_ParseBody(s1, 2, "fig1.body1", &b1) || mkDemo_ParseBody(s2, 2, "fig1.body2", &b2) || mkDemoPts_Alloc(&pt, N)) {
 		run->failed = 1;
 		return;
 	}
@@ -295,7 +242,7 @@ static void mkFigure1(mkDemoRun *run)
 			}
 			mkEndBlock(&csv);
 		}
-		mkEntry e = { 1, "a", "fig1-bodies.csv",
+		mkDemoEntry e = { 1, "a", "fig1-bodies.csv",
 			"samples x1(theta_k) of B1 and -x2(theta_k) of -B2, theta_k = -pi + 2 pi k / 50; k = 50 repeats k = 0",
 			s1, s2, "", "", N, "bodies centred at the origin" };
 		mkDemoRun_Commit(run, &csv, &e);
@@ -317,7 +264,7 @@ static void mkFigure1(mkDemoRun *run)
 				mkCsv_EndRow(&csv);
 			}
 		}
-		mkEntry e = { 1, "a", "fig1-pairwise.csv",
+		mkDemoEntry e = { 1, "a", "fig1-pairwise.csv",
 			"the definition: all 2500 differences x1_i - x2_j of the 50 samples of each body", s1, s2,
 			"", "", N, "their convex hull approximates the boundary of B1 (+) (-B2)" };
 		mkDemoRun_Commit(run, &csv, &e);
@@ -325,7 +272,7 @@ static void mkFigure1(mkDemoRun *run)
 
 	/* The closed form at B1's 50 surface parameters, with B1's point at the
 	 * same parameter (the kissing point). */
-	mkSumOptions opt = mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
+	mkSumOptions opt = mkDemo_Options(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
 	mkResult rc = run->failed ? MK_OK
 		: mkSum2_Batch(b1, b2, &opt, pt.ux, pt.uy, N, pt.x, pt.y, pt.kx, pt.ky);
 	if (rc != MK_OK) {
@@ -335,12 +282,12 @@ static void mkFigure1(mkDemoRun *run)
 	static const char *const ccols[] = { "k", "theta", "x", "y", "x1", "y1" };
 	if (!run->failed && mkDemoRun_Open(run, "fig1-closed.csv", ccols, 6, &csv) == 0) {
 		mkWriteSum2(&csv, NULL, NULL, MK_NO_FIELD, &pt, 1);
-		mkEntry e = { 1, "b", "fig1-closed.csv",
+		mkDemoEntry e = { 1, "b", "fig1-closed.csv",
 			"the closed form x(theta_k) at B1's 50 surface parameters, with B1's point x1(theta_k) at the same parameter; k = 50 repeats k = 0",
 			s1, s2, mkForm_Name(opt.form), mkParam_Name(opt.param), N, "" };
 		mkDemoRun_Commit(run, &csv, &e);
 	}
-	mkPts_Free(&pt);
+	mkDemoPts_Free(&pt);
 }
 
 /* ---- Fig. 2: the two theorems --------------------------------------------- */
@@ -358,7 +305,7 @@ typedef struct mkFig2 {
 
 /* Curves: Theorem 1 at 100 normal angles, Theorem 2 at B1's 100 surface
  * angles. */
-static void mkFigure2_Curves(mkDemoRun *run, const mkFig2 *f, mkPts *pt)
+static void mkFigure2_Curves(mkDemoRun *run, const mkFig2 *f, mkDemoPts *pt)
 {
 	const mkDemosOptions *o = run->o;
 	const int N = MK_FIG2_N;
@@ -368,8 +315,8 @@ static void mkFigure2_Curves(mkDemoRun *run, const mkFig2 *f, mkPts *pt)
 	mkCsv csv;
 	if (mkDemoRun_Open(run, "fig2-curves.csv", ccols, 7, &csv) == 0) {
 		for (int th = 1; th <= 2 && !run->failed; ++th) {
-			mkSumOptions opt = th == 1 ? mkOptionsFor(o, MK_FORM_NORMAL, MK_PARAM_NORMAL)
-				: mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
+			mkSumOptions opt = th == 1 ? mkDemo_Options(o, MK_FORM_NORMAL, MK_PARAM_NORMAL)
+				: mkDemo_Options(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
 			mkResult rc = mkSum2_Batch(b1, b2, &opt, pt->ux, pt->uy, N, pt->x, pt->y, pt->kx, pt->ky);
 			if (rc != MK_OK) {
 				fprintf(stderr, "demos: fig. 2: the closed form failed: %s\n", mkResult_Name(rc));
@@ -381,7 +328,7 @@ static void mkFigure2_Curves(mkDemoRun *run, const mkFig2 *f, mkPts *pt)
 		if (run->failed) {
 			mkCsv_Discard(&csv);
 		} else {
-			mkEntry e = { 2, "a,b", "fig2-curves.csv",
+			mkDemoEntry e = { 2, "a,b", "fig2-curves.csv",
 				"theorem 1: normal form at 100 unit normals n_k = (cos, sin)(-pi + 2 pi k / 100); "
 				"theorem 2: gradient form at B1's 100 surface angles; kx, ky the kissing point on B1",
 				s1, s2, "normal (theorem 1), gradient (theorem 2)", "normal (theorem 1), surface (theorem 2)",
@@ -392,7 +339,7 @@ static void mkFigure2_Curves(mkDemoRun *run, const mkFig2 *f, mkPts *pt)
 }
 
 /* B1 and B2 placed at the contact, in both panels. */
-static void mkFigure2_Bodies(mkDemoRun *run, const mkFig2 *f, const mkPts *ol)
+static void mkFigure2_Bodies(mkDemoRun *run, const mkFig2 *f, const mkDemoPts *ol)
 {
 	const mkDemosOptions *o = run->o;
 	mkCsv csv;
@@ -410,7 +357,7 @@ static void mkFigure2_Bodies(mkDemoRun *run, const mkFig2 *f, const mkPts *ol)
 		}
 		char note[128];
 		snprintf(note, sizeof note, "outlines of %ld samples, closed; B2 centred at the contact's sum point", o->outline);
-		mkEntry e = { 2, "a,b", "fig2-bodies.csv", "B1 at the origin and B2 placed to touch it", s1, s2,
+		mkDemoEntry e = { 2, "a,b", "fig2-bodies.csv", "B1 at the origin and B2 placed to touch it", s1, s2,
 			"", "", 0, note };
 		mkDemoRun_Commit(run, &csv, &e);
 	}
@@ -464,7 +411,7 @@ static void mkFigure2_Contact(mkDemoRun *run, const mkFig2 *f)
 			mkCsv_Double(&csv, diff);
 			mkCsv_EndRow(&csv);
 		}
-		mkEntry e = { 2, "a,b", "fig2-contact.csv",
+		mkDemoEntry e = { 2, "a,b", "fig2-contact.csv",
 			"the contact at B1's surface parameter k = 24 of 100: centres c1 (B1) and c2 (B2), kissing point p; "
 			"theorem 1: v1 = n1, v2 = -n1; theorem 2: v1 = m1 (gradient of B1 at p), v2 = m2 (gradient of the placed B2 at p); "
 			"param_angle = the contact's parameter angle in its theorem's curve; "
@@ -483,9 +430,9 @@ static void mkFigure2(mkDemoRun *run)
 	const double p1[3] = { 3.3, 2.6, 0.73 }, p2[3] = { 2.4, 2.0, 1.28 };
 	mkSpec2(f.s1, sizeof f.s1, p1, MK_PI / 6.3, 0.276);
 	mkSpec2(f.s2, sizeof f.s2, p2, -MK_PI / 3.0, 0.85);
-	mkPts pt, ol;
-	if (mkParseBody(f.s1, 2, "fig2.body1", &f.b1) || mkParseBody(f.s2, 2, "fig2.body2", &f.b2)
-		|| mkPts_Alloc(&pt, N) || mkPts_Alloc(&ol, (int)o->outline)) {
+	mkDemoPts pt, ol;
+	if (mkDemo_ParseBody(f.s1, 2, "fig2.body1", &f.b1) || mkDemo_ParseBody(f.s2, 2, "fig2.body2", &f.b2)
+		|| mkDemoPts_Alloc(&pt, N) || mkDemoPts_Alloc(&ol, (int)o->outline)) {
 		run->failed = 1;
 		return;
 	}
@@ -507,8 +454,8 @@ static void mkFigure2(mkDemoRun *run)
 		mkFigure2_Bodies(run, &f, &ol);
 	if (!run->failed)
 		mkFigure2_Contact(run, &f);
-	mkPts_Free(&pt);
-	mkPts_Free(&ol);
+	mkDemoPts_Free(&pt);
+	mkDemoPts_Free(&ol);
 }
 
 /* ---- Fig. 3: four 2D pairs, B2 at 10 places -------------------------------- */
@@ -518,8 +465,8 @@ static void mkFigure3(mkDemoRun *run)
 	const mkDemosOptions *o = run->o;
 	const int N = MK_FIG3_N;
 	static const char *const panels[4] = { "canonical", "rotated", "sheared", "rotated+sheared" };
-	mkPts pt, ol;
-	if (mkPts_Alloc(&pt, N) || mkPts_Alloc(&ol, (int)o->outline)) {
+	mkDemoPts pt, ol;
+	if (mkDemoPts_Alloc(&pt, N) || mkDemoPts_Alloc(&ol, (int)o->outline)) {
 		run->failed = 1;
 		return;
 	}
@@ -529,17 +476,17 @@ static void mkFigure3(mkDemoRun *run)
 	mkCsv csv;
 	char specs[4][2][256];
 	if (mkDemoRun_Open(run, "fig3.csv", cols, 8, &csv) != 0) {
-		mkPts_Free(&pt);
-		mkPts_Free(&ol);
+		mkDemoPts_Free(&pt);
+		mkDemoPts_Free(&ol);
 		return;
 	}
-	mkSumOptions opt = mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
+	mkSumOptions opt = mkDemo_Options(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
 	for (int p = 0; p < 4 && !run->failed; ++p) {
 		int rot = p == 1 || p == 3, shear = p == 2 || p == 3;
 		mkSpec2(specs[p][0], sizeof specs[p][0], mkFig3A1, rot ? mkFig3Angle[0] : 0.0, shear ? mkFig3Shear[0] : 0.0);
 		mkSpec2(specs[p][1], sizeof specs[p][1], mkFig3A2, rot ? mkFig3Angle[1] : 0.0, shear ? mkFig3Shear[1] : 0.0);
 		mkBody2 b1, b2;
-		if (mkParseBody(specs[p][0], 2, "fig3.body1", &b1) || mkParseBody(specs[p][1], 2, "fig3.body2", &b2)) {
+		if (mkDemo_ParseBody(specs[p][0], 2, "fig3.body1", &b1) || mkDemo_ParseBody(specs[p][1], 2, "fig3.body2", &b2)) {
 			run->failed = 1;
 			break;
 		}
@@ -568,237 +515,14 @@ static void mkFigure3(mkDemoRun *run)
 		snprintf(note, sizeof note, "B2 (curve b2) centred at sum points k = 0, 10, ..., 90 (place = k / 10); "
 			"outlines of %ld samples; bodies per panel in the order canonical | rotated | sheared | rotated+sheared",
 			o->outline);
-		mkEntry e = { 3, "canonical,rotated,sheared,rotated+sheared", "fig3.csv",
+		mkDemoEntry e = { 3, "canonical,rotated,sheared,rotated+sheared", "fig3.csv",
 			"per panel: B1's outline, the closed-form sum at B1's 100 surface angles (with kissing points), "
 			"B2 at 10 places on it; closed curves (last row repeats the first)",
 			body1, body2, mkForm_Name(opt.form), mkParam_Name(opt.param), N, note };
 		mkDemoRun_Commit(run, &csv, &e);
 	}
-	mkPts_Free(&pt);
-	mkPts_Free(&ol);
-}
-
-/* ---- Fig. 4: 3D pairs on 50 x 50 grids ------------------------------------ */
-
-static void mkSpecQuat(char *buf, size_t len, const double q[4])
-{
-	if (q)
-		snprintf(buf, len, " quat=%s,%s,%s,%s", mkFmt(q[0]).s, mkFmt(q[1]).s, mkFmt(q[2]).s, mkFmt(q[3]).s);
-	else
-		buf[0] = '\0';
-}
-
-/* A superquadric SPEC with a = s[0..2], eps = e1, e2 and either a rotation
- * (q, may be NULL) or the map R(q) S (S row-major, not NULL). */
-static int mkSpec3(char *buf, size_t len, const char *kind, const double s[3], double e1, double e2,
-	const double q[4], const double S[9])
-{
-	char pose[512];
-	if (S) {
-		int ok = 0;
-		mkMat3 R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
-		ok = mkMat3_IsFinite(R);
-		mkMat3 Sm;
-		for (int i = 0; i < 9; ++i)
-			Sm.m[i / 3][i % 3] = S[i];
-		mkMat3 M = mkMat3_Mul(R, Sm);
-		snprintf(pose, sizeof pose, " M=%s,%s,%s,%s,%s,%s,%s,%s,%s",
-			mkFmt(M.m[0][0]).s, mkFmt(M.m[0][1]).s, mkFmt(M.m[0][2]).s, mkFmt(M.m[1][0]).s, mkFmt(M.m[1][1]).s,
-			mkFmt(M.m[1][2]).s, mkFmt(M.m[2][0]).s, mkFmt(M.m[2][1]).s, mkFmt(M.m[2][2]).s);
-		if (!ok)
-			return -1;
-	} else {
-		mkSpecQuat(pose, sizeof pose, q);
-	}
-	if (strcmp(kind, "ellipsoid") == 0)
-		snprintf(buf, len, "ellipsoid a=%s b=%s c=%s%s", mkFmt(s[0]).s, mkFmt(s[1]).s, mkFmt(s[2]).s, pose);
-	else
-		snprintf(buf, len, "superquadric a=%s b=%s c=%s eps1=%s eps2=%s%s",
-			mkFmt(s[0]).s, mkFmt(s[1]).s, mkFmt(s[2]).s, mkFmt(e1).s, mkFmt(e2).s, pose);
-	return 0;
-}
-
-/* One surface on the grid: rows i (eta) from the south pole (i = 0) to the
- * north pole (i = n - 1; mkSample3_Grid gives the poles exactly), columns
- * j = 0..n with j = n repeating j = 0 so that the surface closes around the
- * axis; a blank line after each row, two after the surface. */
-static void mkWriteSurface(mkCsv *csv, const char *name, int n, const double *x, const double *y, const double *z)
-{
-	for (int i = 0; i < n; ++i) {
-		for (int j = 0; j <= n; ++j) {
-			int idx = i * n + (j % n);
-			mkCsv_Str(csv, name);
-			mkCsv_Int(csv, i);
-			mkCsv_Int(csv, j);
-			mkCsv_Double(csv, x[idx]);
-			mkCsv_Double(csv, y[idx]);
-			mkCsv_Double(csv, z[idx]);
-			mkCsv_EndRow(csv);
-		}
-		fputc('\n', csv->file.fp);
-	}
-	fputc('\n', csv->file.fp);
-}
-
-typedef struct mkPanel3 {
-	const char *panel;     /* a..h */
-	const char *title;
-	char spec1[512], spec2[512];
-} mkPanel3;
-
-/* The bodies of Fig. 4 and its panels: which pair, rotated (B1 by
- * mkQuat1, B2 by mkQuat2) or not, and which of the two are parallelepipeds
- * (bit 0: B1 mapped by R mkShear1, bit 1: B2 by R mkShear2). */
-enum { MK_SQ1, MK_SQ2, MK_CUBE1, MK_CUBE2, MK_CYL1, MK_CYL2, MK_ELL1, MK_ELL2 };
-static const struct {
-	const char *panel, *title;
-	int body1, body2, rotated, sheared;
-} mkFig4Panels[8] = {
-	{ "a", "two general superquadrics, canonical", MK_SQ1, MK_SQ2, 0, 0 },
-	{ "b", "two general superquadrics, rotated", MK_SQ1, MK_SQ2, 1, 0 },
-	{ "c", "two cubes", MK_CUBE1, MK_CUBE2, 1, 0 },
-	{ "d", "cube and elliptic cylinder", MK_CUBE1, MK_CYL2, 1, 0 },
-	{ "e", "two parallelepipeds", MK_CUBE1, MK_CUBE2, 1, 3 },
-	{ "f", "parallelepiped and elliptic cylinder", MK_CUBE1, MK_CYL2, 1, 1 },
-	{ "g", "two elliptic cylinders", MK_CYL1, MK_CYL2, 1, 0 },
-	{ "h", "two ellipsoids", MK_ELL1, MK_ELL2, 1, 0 },
-};
-
-/* The eight panels' SPEC texts; -1 on a zero quaternion (a program
- * error). */
-static int mkFigure4_Panels(mkPanel3 P[8])
-{
-	memset(P, 0, 8 * sizeof *P);
-	double cube1[3], cube2[3];
-	for (int i = 0; i < 3; ++i) {
-		cube1[i] = mkBox1[i] / 2.0;
-		cube2[i] = mkBox2[i] / 2.0;
-	}
-	const double cyl1[3] = { mkCyl1[0], mkCyl1[1], mkCyl1[2] / 2.0 };
-	const double cyl2[3] = { mkCyl2[0], mkCyl2[1], mkCyl2[2] / 2.0 };
-	const struct { const char *kind; const double *a; double e1, e2; } body[8] = {
-		{ "superquadric", mkFig4Sq1, mkFig4Sq1[3], mkFig4Sq1[4] },
-		{ "superquadric", mkFig4Sq2, mkFig4Sq2[3], mkFig4Sq2[4] },
-		{ "superquadric", cube1, 0.1, 0.1 }, { "superquadric", cube2, 0.1, 0.1 },
-		{ "superquadric", cyl1, 0.1, 1.0 }, { "superquadric", cyl2, 0.1, 1.0 },
-		{ "ellipsoid", mkEll1, 1.0, 1.0 }, { "ellipsoid", mkEll2, 1.0, 1.0 },
-	};
-	const double *quat[2] = { mkQuat1, mkQuat2 }, *shear[2] = { mkShear1, mkShear2 };
-	int bad = 0;
-	for (int p = 0; p < 8; ++p) {
-		P[p].panel = mkFig4Panels[p].panel;
-		P[p].title = mkFig4Panels[p].title;
-		for (int k = 0; k < 2; ++k) {
-			int which = k == 0 ? mkFig4Panels[p].body1 : mkFig4Panels[p].body2;
-			bad |= mkSpec3(k == 0 ? P[p].spec1 : P[p].spec2, sizeof P[p].spec1, body[which].kind, body[which].a,
-				body[which].e1, body[which].e2, mkFig4Panels[p].rotated ? quat[k] : NULL,
-				(mkFig4Panels[p].sheared >> k) & 1 ? shear[k] : NULL);
-		}
-	}
-	return bad ? -1 : 0;
-}
-
-/* Where B2 goes: the grid index whose B1 normal is closest to the
- * placement direction. */
-static int mkFigure4_Place(mkBody3 b1, const mkPts *pt, int N)
-{
-	double dn = sqrt(mkPlaceDir[0] * mkPlaceDir[0] + mkPlaceDir[1] * mkPlaceDir[1] + mkPlaceDir[2] * mkPlaceDir[2]);
-	int best = 0;
-	double bestdot = -2.0;
-	for (int k = 0; k < N; ++k) {
-		mkVec3 u = { pt->ux[k], pt->uy[k], pt->uz[k] };
-		mkVec3 x1 = mkBody3_Point(b1, u);
-		mkVec3 g = mkBody3_Gradient(b1, x1);
-		double gn = sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
-		double dot = (g.x * mkPlaceDir[0] + g.y * mkPlaceDir[1] + g.z * mkPlaceDir[2]) / (gn * dn);
-		if (gn > 0.0 && dot > bestdot) {
-			bestdot = dot;
-			best = k;
-		}
-	}
-	return best;
-}
-
-/* One panel: the sum on the grid, B2 placed on it, the file and its index
- * row. pt holds the grid; b1p and b2p are room for the bodies' surfaces. */
-static void mkFigure4_Panel(mkDemoRun *run, const mkPanel3 *P, mkPts *pt, mkPts *b1p, mkPts *b2p)
-{
-	const mkDemosOptions *o = run->o;
-	const int G = MK_FIG4_GRID, N = G * G;
-	mkSumOptions opt = mkOptionsFor(o, MK_FORM_GRADIENT, MK_PARAM_SURFACE);
-	static const char *const cols[] = { "surface", "i", "j", "x", "y", "z" };
-	mkBody3 b1, b2;
-	if (mkParseBody(P->spec1, 3, "fig4.body1", &b1) || mkParseBody(P->spec2, 3, "fig4.body2", &b2)) {
-		run->failed = 1;
-		return;
-	}
-	mkResult rc = mkSum3_Batch(b1, b2, &opt, pt->ux, pt->uy, pt->uz, N, pt->x, pt->y, pt->z, pt->kx, pt->ky, pt->kz);
-	if (rc != MK_OK) {
-		fprintf(stderr, "demos: fig. 4(%s): the closed form failed: %s\n", P->panel, mkResult_Name(rc));
-		run->failed = 1;
-		return;
-	}
-	int best = mkFigure4_Place(b1, pt, N);
-	mkBody3 placed = b2;
-	placed.t.x = pt->x[best];
-	placed.t.y = pt->y[best];
-	placed.t.z = pt->z[best];
-	for (int k = 0; k < N; ++k) {
-		mkVec3 u = { pt->ux[k], pt->uy[k], pt->uz[k] };
-		mkVec3 a = mkBody3_Point(b1, u), b = mkBody3_Point(placed, u);
-		b1p->x[k] = a.x;
-		b1p->y[k] = a.y;
-		b1p->z[k] = a.z;
-		b2p->x[k] = b.x;
-		b2p->y[k] = b.y;
-		b2p->z[k] = b.z;
-	}
-	int finite = 1;
-	for (int k = 0; k < N; ++k)
-		finite = finite && isfinite(pt->x[k]) && isfinite(pt->y[k]) && isfinite(pt->z[k]);
-	if (!finite) {
-		fprintf(stderr, "demos: fig. 4(%s): a point of the sum is not finite\n", P->panel);
-		run->failed = 1;
-		return;
-	}
-	char file[64], content[512], note[512];
-	snprintf(file, sizeof file, "fig4-%s.csv", P->panel);
-	mkCsv csv;
-	if (mkDemoRun_Open(run, file, cols, 6, &csv) != 0)
-		return;
-	mkWriteSurface(&csv, "b1", G, b1p->x, b1p->y, b1p->z);
-	mkWriteSurface(&csv, "sum", G, pt->x, pt->y, pt->z);
-	mkWriteSurface(&csv, "b2", G, b2p->x, b2p->y, b2p->z);
-	snprintf(content, sizeof content, "%s: surfaces b1 (data block 0), sum (1) and b2 placed on the sum (2) "
-		"on the 50 x 50 grid of B1's surface angles (eta_i, omega_j; i = 0 and 49 the exact poles; "
-		"j = 50 repeats j = 0)",
-		P->title);
-	snprintf(note, sizeof note, "B2 centred at the sum point of grid index (i, j) = (%d, %d), "
-		"at %.17g,%.17g,%.17g, where B1's normal is closest to (%g, %g, %g)",
-		best / G, best % G, placed.t.x, placed.t.y, placed.t.z, mkPlaceDir[0], mkPlaceDir[1], mkPlaceDir[2]);
-	mkEntry e = { 4, P->panel, file, content, P->spec1, P->spec2,
-		mkForm_Name(opt.form), mkParam_Name(opt.param), G, note };
-	mkDemoRun_Commit(run, &csv, &e);
-}
-
-static void mkFigure4(mkDemoRun *run)
-{
-	const int G = MK_FIG4_GRID, N = G * G;
-	mkPanel3 P[8];
-	int bad = mkFigure4_Panels(P) != 0;
-	mkPts pt, b1p, b2p;
-	if (bad || mkPts_Alloc(&pt, N) || mkPts_Alloc(&b1p, N) || mkPts_Alloc(&b2p, N)) {
-		if (bad)
-			fprintf(stderr, "demos: fig. 4: a zero quaternion (program error)\n");
-		run->failed = 1;
-		return;
-	}
-	mkSample3_Grid(G, pt.ux, pt.uy, pt.uz);
-	for (int p = 0; p < 8 && !run->failed; ++p)
-		mkFigure4_Panel(run, &P[p], &pt, &b1p, &b2p);
-	mkPts_Free(&pt);
-	mkPts_Free(&b1p);
-	mkPts_Free(&b2p);
+	mkDemoPts_Free(&pt);
+	mkDemoPts_Free(&ol);
 }
 
 /* ---- the run ------------------------------------------------------------- */

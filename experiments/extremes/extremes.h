@@ -4,8 +4,8 @@
  * of their range, semi-axis ratios, shears, size ratios and translations),
  * scored by the 256-bit MPFR reference (mink/mpref_measure.h): the largest
  * distance of an output point from the exact boundary, absolute and relative
- * to the scale S, beside the problem's own condition (how far the exact
- * boundary moves under one-ulp input perturbations).
+ * to the sum's size S (refSum_Size), beside the problem's own condition
+ * (how far the exact boundary moves under one-ulp input perturbations).
  *
  * One row per (cell, set, method). A method that fails on a cell gets its
  * row with status error:<result> or nonfinite; no row is ever dropped. A
@@ -76,7 +76,7 @@ int mkExtremes_RunUnits(const mkExtremesOptions *o, const int *dims, const int *
 	mkCsv *csv, mkExtremesTally *tally, void (*step)(void *ctx), void *ctx);
 
 /* The stability section of results/tables.md: per method and dim, the
- * cells kept within 1e-12 of the scale, the worst cell, the non-finite
+ * cells kept within 1e-12 of the size S, the worst cell, the non-finite
  * outputs and error returns; for the exact closed forms whether 1e-13
  * holds wherever the condition is at most 1e-14. Compares with no
  * published number: the tally is left untouched. */

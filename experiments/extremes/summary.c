@@ -1,5 +1,5 @@
 /* summary.c - the extremes section of results/tables.md: per method and
- * dimension, the rows kept within 1e-12 of the scale, the worst cell, the
+ * dimension, the rows kept within 1e-12 of the size S, the worst cell, the
  * non-finite outputs and error returns, and for the exact closed forms
  * whether 1e-13 holds wherever the condition is at most 1e-14.
  *

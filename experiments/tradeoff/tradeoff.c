@@ -328,7 +328,7 @@ typedef struct mkLevel {
 	long *pair;      /* their indices, rising */
 	mkPointSet *pts; /* by pair index */
 	double *seconds;
-	mkError *err;
+	mkDeviation *err;
 	mkResult *rc;
 } mkLevel;
 
@@ -337,13 +337,13 @@ static void mkMeasureOne(void *ctx, long i)
 	mkLevel *L = ctx;
 	const mkPairs *p = L->p;
 	long k = L->pair[i];
-	mkErrorOptions eo = { 0.0, p->truth[k], p->bound[k] };
-	L->rc[k] = p->dim == 2 ? mkError2_Measure(p->p1[k], p->p2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k])
-	                       : mkError3_Measure(p->q1[k], p->q2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k]);
+	mkDeviationOptions eo = { 0.0, p->truth[k], p->bound[k] };
+	L->rc[k] = p->dim == 2 ? mkDeviation2_Measure(p->p1[k], p->p2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k])
+	                       : mkDeviation3_Measure(p->q1[k], p->q2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k]);
 }
 
 /* Write the row of pair k (measured) to csv. */
-static void mkWriteRow(const mkPairs *p, long k, int curve, int n, int points, double seconds, const mkError *e,
+static void mkWriteRow(const mkPairs *p, long k, int curve, int n, int points, double seconds, const mkDeviation *e,
 	mkCsv *csv)
 {
 	char b1[512], b2[512];
@@ -476,8 +476,8 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 static void mkPairs_Truth(void *ctx, long k)
 {
 	mkPairs *p = ctx;
-	p->rc[k] = p->dim == 2 ? mkError2_Area(p->p1[k], p->p2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k])
-	                       : mkError3_Volume(p->q1[k], p->q2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k]);
+	p->rc[k] = p->dim == 2 ? mkDeviation2_Area(p->p1[k], p->p2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k])
+	                       : mkDeviation3_Volume(p->q1[k], p->q2[k], MK_SET_CONTACT, &p->truth[k], &p->bound[k]);
 }
 
 static int mkPairs_Make(const mkTradeoffOptions *o, int dim, int c, mkPairs *p)

@@ -4,7 +4,7 @@
  * Pairs. Per (dimension, case) the run draws T pairs (--trials), each from
  * its own stream mkTradeoff_Stream(dim, case, trial), and computes the true
  * area / volume of their contact set B1 (+) (-B2) once per pair
- * (mkError2_Area / mkError3_Volume); every method and level then runs on
+ * (mkDeviation2_Area / mkDeviation3_Volume); every method and level then runs on
  * the same T pairs. Draws (the validation experiment's ranges):
  *  2D: a, b ~ U(0,10), redrawn (the whole shape) while a or b < 1e-3;
  *      eps ~ U(0.1,1.9); M = rot(2 pi U) [1 s; 0 1], s ~ U(-2,2).

@@ -130,7 +130,9 @@ static long mkArgInt(const char *name, const char *text, long lo, long hi)
 	return v;
 }
 
-int main(int argc, char **argv)
+/* The command line (see mkUsage): -1 to run, else the exit status (0 after
+ * the help, 2 on a bad argument, with one line naming it). */
+static int mkBenchArgs(int argc, char **argv, int *pairs, unsigned long long *seed, const char **skip, int *only)
 {
 	if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
 		fputs(mkUsage, stdout);
@@ -140,20 +142,93 @@ int main(int argc, char **argv)
 		fputs(mkUsage, stderr);
 		return 2;
 	}
-	int pairs = argc > 1 ? (int)mkArgInt("PAIRS", argv[1], 1, 10000000) : 2000;
-	unsigned long long seed = 2022;
+	*pairs = argc > 1 ? (int)mkArgInt("PAIRS", argv[1], 1, 10000000) : 2000;
+	*seed = 2022;
 	if (argc > 2) {
 		char *end;
 		errno = 0;
-		seed = strtoull(argv[2], &end, 0);
+		*seed = strtoull(argv[2], &end, 0);
 		if (errno || end == argv[2] || *end || argv[2][0] == '-') {
 			fprintf(stderr, "bench_colliders: SEED = '%s' is out of range: must be an integer in [0, 2^64-1]\n",
 				argv[2]);
 			return 2;
 		}
 	}
-	const char *skip = argc > 3 ? argv[3] : "";
-	int only = argc > 4 ? (int)mkArgInt("KIND", argv[4], 0, MK_KINDS - 1) : -1;
+	*skip = argc > 3 ? argv[3] : "";
+	*only = argc > 4 ? (int)mkArgInt("KIND", argv[4], 0, MK_KINDS - 1) : -1;
+	return -1;
+}
+
+/* The pairs of one kind (0 .. 4, see mkKindNames) drawn from the run seed,
+ * and the referee's answer and time (microseconds) on each. */
+static void mkBenchDraw(int kind, int pairs, unsigned long long seed, const mkCollider *referee,
+	mkColliderScratch *scratch, mkBody3 *B1, mkBody3 *B2, mkCollision3 *ref, double *reftime)
+{
+	mkState = seed * 1000003ULL + (unsigned long long)kind;
+	for (int p = 0; p < pairs; ++p) {
+		int ell = kind == 0 || ((kind == 2 || kind == 3) && p % 2 == 0);
+		double elo = kind == 4 ? 0.05 : 0.1, ehi = kind == 4 ? 0.3 : 1.9;
+		if (kind == 3) {
+			B1[p] = mkDraw(11.0, -1.0, 1.0, ell, elo, ehi);
+			B2[p] = mkDraw(6.0, -2.0, 2.0, ell, elo, ehi);
+		} else {
+			B1[p] = mkDraw(11.0, -5.0, 5.0, ell, elo, ehi);
+			B2[p] = mkDraw(6.0, 5.0, 15.0, ell, elo, ehi);
+		}
+		if (kind == 2) {
+			static const double sep[6] = { 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6 };
+			mkCollision3 c;
+			if (mkCollide3_Normal(B1[p], B2[p], &c) == MK_OK)
+				B2[p].t = mkVec3_Add(B2[p].t, mkVec3_Scale(c.normal, sep[p % 6] * c.scale - c.distance));
+		}
+		double t0 = mkNow();
+		mkCollider_Run(referee, B1[p], B2[p], scratch, &ref[p]);
+		reftime[p] = 1e6 * (mkNow() - t0);
+	}
+}
+
+/* One entry's line: times t[nt] (microseconds), distance and penetration
+ * errors dd[nd], pp[np], counts = failed, disagree, below, above, and the
+ * witnesses' worst error. */
+static void mkBenchRow(const mkCollider *c, double *t, int nt, double *dd, int nd, double *pp, int np,
+	const int counts[4], double wit)
+{
+	double mean = 0.0;
+	for (int i = 0; i < nt; ++i)
+		mean += t[i];
+	mean /= nt;
+	printf("%-18s %9.3f %9.3f %7d %8d %6d %6d %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e\n", c->name,
+		mkQuantile(t, nt, 0.5), mean, counts[0], counts[1], counts[2], counts[3], mkQuantile(dd, nd, 0.5),
+		mkQuantile(dd, nd, 0.99), mkQuantile(dd, nd, 1.0), mkQuantile(pp, np, 0.5), mkQuantile(pp, np, 0.99),
+		mkQuantile(pp, np, 1.0), c->gives & MK_GIVES_WITNESS ? wit : NAN);
+}
+
+/* The referee's own line: its statuses, time and bracket on separated
+ * pairs (refgap is scratch space of pairs entries). */
+static void mkBenchRefereeLine(const mkCollision3 *ref, double *reftime, double *refgap, int pairs, int nref_fail,
+	int nuncertain)
+{
+	int nsep = 0, ng = 0;
+	double rmean = 0.0;
+	for (int p = 0; p < pairs; ++p) {
+		nsep += ref[p].distance > 0.0;
+		rmean += reftime[p];
+		if (ref[p].distance > 0.0)
+			refgap[ng++] = ref[p].gap / ref[p].scale;
+	}
+	printf("(referee: %d separated, %d overlapping, %d failed, %d uncertain; median %.1f us, mean %.1f us; "
+		"bracket / scale on separated pairs: median %.2e, p99 %.2e, max %.2e)\n", nsep, pairs - nsep - nref_fail,
+		nref_fail, nuncertain, mkQuantile(reftime, pairs, 0.5), rmean / pairs, mkQuantile(refgap, ng, 0.5),
+		mkQuantile(refgap, ng, 0.99), mkQuantile(refgap, ng, 1.0));
+}
+
+int main(int argc, char **argv)
+{
+	int pairs, only, rc;
+	unsigned long long seed;
+	const char *skip;
+	if ((rc = mkBenchArgs(argc, argv, &pairs, &seed, &skip, &only)) >= 0)
+		return rc;
 	int ne = mkColliders_Count();
 	double *times = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
 	double *derr = malloc(sizeof(double) * (size_t)pairs * (size_t)ne);
@@ -177,27 +252,7 @@ int main(int argc, char **argv)
 	for (int kind = 0; kind < MK_KINDS; ++kind) {
 		if (only >= 0 ? kind != only : kind >= MK_KINDS_DEFAULT)
 			continue;
-		mkState = seed * 1000003ULL + (unsigned long long)kind;
-		for (int p = 0; p < pairs; ++p) {
-			int ell = kind == 0 || ((kind == 2 || kind == 3) && p % 2 == 0);
-			double elo = kind == 4 ? 0.05 : 0.1, ehi = kind == 4 ? 0.3 : 1.9;
-			if (kind == 3) {
-				B1[p] = mkDraw(11.0, -1.0, 1.0, ell, elo, ehi);
-				B2[p] = mkDraw(6.0, -2.0, 2.0, ell, elo, ehi);
-			} else {
-				B1[p] = mkDraw(11.0, -5.0, 5.0, ell, elo, ehi);
-				B2[p] = mkDraw(6.0, 5.0, 15.0, ell, elo, ehi);
-			}
-			if (kind == 2) {
-				static const double sep[6] = { 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6 };
-				mkCollision3 c;
-				if (mkCollide3_Normal(B1[p], B2[p], &c) == MK_OK)
-					B2[p].t = mkVec3_Add(B2[p].t, mkVec3_Scale(c.normal, sep[p % 6] * c.scale - c.distance));
-			}
-			double t0 = mkNow();
-			mkCollider_Run(referee, B1[p], B2[p], &scratch, &ref[p]);
-			reftime[p] = 1e6 * (mkNow() - t0);
-		}
+		mkBenchDraw(kind, pairs, seed, referee, &scratch, B1, B2, ref, reftime);
 		int nref_fail = 0, nuncertain = 0;
 		printf("\n## %s\n%-18s %9s %9s %7s %8s %6s %6s %10s %10s %10s %10s %10s %10s %10s\n", mkKindNames[kind], "entry",
 			"median_us", "mean_us", "failed", "disagree", "below", "above", "dist_med", "dist_p99", "dist_max", "pen_med",
@@ -264,32 +319,13 @@ int main(int argc, char **argv)
 			}
 		}
 		for (int e = 0; e < ne && e < 64; ++e) {
-			const mkCollider *c = mkColliders_At(e);
 			if (nt[e] == 0)
 				continue;
-			double *t = times + (size_t)e * (size_t)pairs;
-			double mean = 0.0;
-			for (int i = 0; i < nt[e]; ++i)
-				mean += t[i];
-			mean /= nt[e];
-			double *dd = derr + (size_t)e * (size_t)pairs, *pp = perr + (size_t)e * (size_t)pairs;
-			printf("%-18s %9.3f %9.3f %7d %8d %6d %6d %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e %10.2e\n", c->name,
-				mkQuantile(t, nt[e], 0.5), mean, fails[e], dis[e], worse[e], above[e], mkQuantile(dd, nd[e], 0.5),
-				mkQuantile(dd, nd[e], 0.99), mkQuantile(dd, nd[e], 1.0), mkQuantile(pp, np[e], 0.5), mkQuantile(pp, np[e], 0.99),
-				mkQuantile(pp, np[e], 1.0), c->gives & MK_GIVES_WITNESS ? wit[e] : NAN);
+			size_t at = (size_t)e * (size_t)pairs;
+			int counts[4] = { fails[e], dis[e], worse[e], above[e] };
+			mkBenchRow(mkColliders_At(e), times + at, nt[e], derr + at, nd[e], perr + at, np[e], counts, wit[e]);
 		}
-		int nsep = 0, ng = 0;
-		double rmean = 0.0;
-		for (int p = 0; p < pairs; ++p) {
-			nsep += ref[p].distance > 0.0;
-			rmean += reftime[p];
-			if (ref[p].distance > 0.0)
-				refgap[ng++] = ref[p].gap / ref[p].scale;
-		}
-		printf("(referee: %d separated, %d overlapping, %d failed, %d uncertain; median %.1f us, mean %.1f us; "
-			"bracket / scale on separated pairs: median %.2e, p99 %.2e, max %.2e)\n", nsep, pairs - nsep - nref_fail,
-			nref_fail, nuncertain, mkQuantile(reftime, pairs, 0.5), rmean / pairs, mkQuantile(refgap, ng, 0.5),
-			mkQuantile(refgap, ng, 0.99), mkQuantile(refgap, ng, 1.0));
+		mkBenchRefereeLine(ref, reftime, refgap, pairs, nref_fail, nuncertain);
 	}
 	(void)normal;
 	free(times);

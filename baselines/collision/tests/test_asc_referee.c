@@ -28,15 +28,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "draw_paper.h"
 #include "ensure.h"
-
-static mkMat3 mk_rand_rot(unsigned long long *seed)
-{
-	double q[4];
-	for (int i = 0; i < 4; ++i)
-		q[i] = mk_test_uniform(seed, -1.0, 1.0);
-	return mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
-}
 
 static mkContact mk_run_status(const char *name, mkBody3 b1, mkBody3 b2, mkCollision3 *o)
 {
@@ -51,7 +44,7 @@ static void mk_check_referee(mkBody3 b1, mkBody3 b2, double sd, const char *what
 {
 	mkCollision3 o;
 	mk_run_status("referee", b1, b2, &o);
-	double scale = mkCollide3_Scale(b1, b2), tol = 1e-13 * scale;
+	double scale = mkCollide3_PairSize(b1, b2), tol = 1e-13 * scale;
 	int ok = o.bound <= sd + tol && fabs(o.distance - sd) <= tol;
 	if (sd > 1e-12 * scale) {
 		/* Separated: certain, [bound, bound + gap] holds sd, and the upper
@@ -70,16 +63,15 @@ static void mk_check_referee(mkBody3 b1, mkBody3 b2, double sd, const char *what
 
 static void test_fcl_cases(void)
 {
-	const double xs[] = { 40.0, 30.1, 30.0, 29.9, 29.99, 0.0 };
-	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
+	const double *xs = mkFclCaseX;
 	unsigned long long seed = 5;
 	for (int rot = 0; rot < 12; ++rot) {
-		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_rand_rot(&seed);
+		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_test_rotation(&seed);
 		mkVec3 shift = rot < 2 ? mkVec3_Make(0, 0, 0)
 			: mkVec3_Make(mk_test_uniform(&seed, -50, 50), mk_test_uniform(&seed, -50, 50), mk_test_uniform(&seed, -50, 50));
-		for (size_t k = 0; k < sizeof xs / sizeof xs[0]; ++k) {
-			mkBody3 A = mkBody3_Make(s1, R, shift);
-			mkBody3 B = mkBody3_Make(s2, R, mkVec3_Add(shift, mkMat3_MulVec(R, mkVec3_Make(xs[k], 0, 0))));
+		for (size_t k = 0; k < sizeof mkFclCaseX / sizeof mkFclCaseX[0]; ++k) {
+			mkBody3 A, B;
+			mk_test_fcl_case(R, shift, xs[k], &A, &B);
 			double sd = xs[k] - 30.0;
 			mkContact want = sd > 0 ? MK_CONTACT_SEPARATED : sd < 0 ? MK_CONTACT_OVERLAPPING : MK_CONTACT_TOUCHING;
 			for (int order = 0; order < 2; ++order) {
@@ -110,8 +102,8 @@ static void test_referee_hand(void)
 		mkVec3 u = mkVec3_Normalize(
 			mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1)));
 		mkVec3 c1 = mkVec3_Make(1, -2, 3);
-		mkBody3 b1 = mkBody3_Make(s1, mk_rand_rot(&seed), c1);
-		mkBody3 b2 = mkBody3_Make(s2, mk_rand_rot(&seed), mkVec3_Add(c1, mkVec3_Scale(u, dd[k])));
+		mkBody3 b1 = mkBody3_Make(s1, mk_test_rotation(&seed), c1);
+		mkBody3 b2 = mkBody3_Make(s2, mk_test_rotation(&seed), mkVec3_Add(c1, mkVec3_Scale(u, dd[k])));
 		double sd = mkVec3_Length(mkVec3_Sub(b2.t, b1.t)) - 4.0;
 		char what[64];
 		snprintf(what, sizeof what, "two spheres %g apart", dd[k]);
@@ -151,7 +143,7 @@ static void test_needle_plate(void)
 	const double gaps[] = { 1.0, 1e-3, 1e-6, -1e-3 };
 	unsigned long long seed = 23;
 	for (int rot = 0; rot < 4; ++rot) {
-		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_rand_rot(&seed);
+		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_test_rotation(&seed);
 		for (size_t k = 0; k < sizeof gaps / sizeof gaps[0]; ++k) {
 			mkBody3 b1 = mkBody3_Make(needle, R, mkVec3_Make(0, 0, 0));
 			mkBody3 b2 = mkBody3_Make(plate, R, mkMat3_MulVec(R, mkVec3_Make(300.002 + gaps[k], 0, 0)));
@@ -172,19 +164,6 @@ static void test_needle_plate(void)
 	}
 }
 
-static void mk_draw(unsigned long long *seed, int deep, mkBody3 *b1, mkBody3 *b2)
-{
-	mkShape3 s1 = { mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), 1, 1 };
-	mkShape3 s2 = { mk_test_uniform(seed, 1, 6), mk_test_uniform(seed, 1, 6), mk_test_uniform(seed, 1, 6), 1, 1 };
-	double lo = deep ? -2 : 5, hi = deep ? 2 : 15;
-	mkVec3 c1 = mkVec3_Make(mk_test_uniform(seed, -5, 5), mk_test_uniform(seed, -5, 5), mk_test_uniform(seed, -5, 5));
-	mkVec3 c2 = mkVec3_Make(mk_test_uniform(seed, lo, hi), mk_test_uniform(seed, lo, hi), mk_test_uniform(seed, lo, hi));
-	if (deep)
-		c2 = mkVec3_Add(c1, c2);
-	*b1 = mkBody3_Make(s1, mk_rand_rot(seed), c1);
-	*b2 = mkBody3_Make(s2, mk_rand_rot(seed), c2);
-}
-
 /* ASC against asc-eigen and the referee on random ellipsoid pairs. */
 static void test_asc_random(void)
 {
@@ -192,12 +171,12 @@ static void test_asc_random(void)
 	int disagree_eigen = 0, uncertain = 0, sep = 0, ovl = 0;
 	for (int trial = 0; trial < 400; ++trial) {
 		mkBody3 b1, b2;
-		mk_draw(&seed, trial % 5 == 4, &b1, &b2);
+		mk_test_paper_pair3(&seed, 1, trial % 5 == 4, &b1, &b2);
 		mkCollision3 a, e, r;
 		mkContact sa = mk_run_status("asc", b1, b2, &a);
 		mkContact se = mk_run_status("asc-eigen", b1, b2, &e);
 		mk_run_status("referee", b1, b2, &r);
-		double scale = mkCollide3_Scale(b1, b2);
+		double scale = mkCollide3_PairSize(b1, b2);
 		if (!(r.residual <= 1e-10)) {
 			++uncertain;
 			continue;
@@ -226,7 +205,7 @@ static void test_asc_near(void)
 	int wrong = 0, runs = 0;
 	for (int trial = 0; trial < 60; ++trial) {
 		mkBody3 b1, b2;
-		mk_draw(&seed, 0, &b1, &b2);
+		mk_test_paper_pair3(&seed, 1, 0, &b1, &b2);
 		mkCollision3 c;
 		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
 		if (!(c.distance > 0))

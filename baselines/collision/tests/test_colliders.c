@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "draw3.h"
+#include "draw_paper.h"
 #include "ensure.h"
 
 typedef struct mkTol {
@@ -107,7 +108,7 @@ static void mk_check_entry(const mkCollider *c, mkBody3 b1, mkBody3 b2, double s
 	mkColliderScratch scratch;
 	mkCollision3 o;
 	mkResult r = mkCollider_Run(c, b1, b2, &scratch, &o);
-	double scale = mkCollide3_Scale(b1, b2);
+	double scale = mkCollide3_PairSize(b1, b2);
 	int idx = -1;
 	for (int i = 0; i < mkColliders_Count(); ++i)
 		if (mkColliders_At(i) == c)
@@ -184,14 +185,13 @@ static void test_registry(void)
 
 static void test_fcl_cases(void)
 {
-	const double xs[] = { 40.0, 30.1, 30.0, 29.9, 29.99, 0.0 };
-	mkShape3 s1 = { 20, 40, 50, 1, 1 }, s2 = { 10, 10, 10, 1, 1 };
+	const double *xs = mkFclCaseX;
 	unsigned long long seed = 17;
 	for (int rot = 0; rot < 3; ++rot) {
 		mkMat3 R = rot == 0 ? mkMat3_Identity() : mk_test_rotation(&seed);
-		for (size_t k = 0; k < sizeof xs / sizeof xs[0]; ++k) {
-			mkBody3 A = mkBody3_Make(s1, R, mkVec3_Make(0, 0, 0));
-			mkBody3 B = mkBody3_Make(s2, R, mkMat3_MulVec(R, mkVec3_Make(xs[k], 0, 0)));
+		for (size_t k = 0; k < sizeof mkFclCaseX / sizeof mkFclCaseX[0]; ++k) {
+			mkBody3 A, B;
+			mk_test_fcl_case(R, mkVec3_Make(0, 0, 0), xs[k], &A, &B);
 			for (int order = 0; order < 2; ++order) {
 				char what[96];
 				snprintf(what, sizeof what, "FCL case x = %g, rotation %d, order %d", xs[k], rot, order);
@@ -213,26 +213,6 @@ static void test_fcl_cases(void)
 	}
 }
 
-/* The paper's draw (experiments/collision.c's ranges). */
-static void mk_draw(unsigned long long *seed, int ell, int near, mkBody3 *b1, mkBody3 *b2)
-{
-	mkShape3 s1 = { mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), mk_test_uniform(seed, 1, 11), 1, 1 };
-	mkShape3 s2 = { mk_test_uniform(seed, 1, 6), mk_test_uniform(seed, 1, 6), mk_test_uniform(seed, 1, 6), 1, 1 };
-	if (!ell) {
-		s1.eps1 = mk_test_uniform(seed, 0.1, 1.9);
-		s1.eps2 = mk_test_uniform(seed, 0.1, 1.9);
-		s2.eps1 = mk_test_uniform(seed, 0.1, 1.9);
-		s2.eps2 = mk_test_uniform(seed, 0.1, 1.9);
-	}
-	double lo = near ? -2 : 5, hi = near ? 2 : 15;
-	mkVec3 c1 = mkVec3_Make(mk_test_uniform(seed, -5, 5), mk_test_uniform(seed, -5, 5), mk_test_uniform(seed, -5, 5));
-	mkVec3 c2 = mkVec3_Make(mk_test_uniform(seed, lo, hi), mk_test_uniform(seed, lo, hi), mk_test_uniform(seed, lo, hi));
-	if (near)
-		c2 = mkVec3_Add(c1, c2);
-	*b1 = mkBody3_Make(s1, mk_test_rotation(seed), c1);
-	*b2 = mkBody3_Make(s2, mk_test_rotation(seed), c2);
-}
-
 /* Random pairs against the referee, for the fast entries (the slow LM and
  * Ipopt peers run on FCL's cases above and in the benchmark). */
 static void test_random_pairs(void)
@@ -245,7 +225,7 @@ static void test_random_pairs(void)
 	for (int trial = 0; trial < 160; ++trial) {
 		int ell = trial % 2 == 0, deep = trial % 4 == 1;
 		mkBody3 b1, b2;
-		mk_draw(&seed, ell, deep, &b1, &b2);
+		mk_test_paper_pair3(&seed, ell, deep, &b1, &b2);
 		mkColliderScratch s;
 		mkCollision3 ref, mine;
 		ENSURE(mkCollider_Run(referee, b1, b2, &s, &ref) == MK_OK);
@@ -561,7 +541,7 @@ static void test_near_touching(void)
 	for (int trial = 0; trial < 24; ++trial) {
 		int ell = trial % 2 == 0;
 		mkBody3 b1, b2;
-		mk_draw(&seed, ell, 0, &b1, &b2);
+		mk_test_paper_pair3(&seed, ell, 0, &b1, &b2);
 		mkCollision3 c;
 		ENSURE(mkCollide3_Normal(b1, b2, &c) == MK_OK);
 		for (size_t k = 0; k < sizeof seps / sizeof seps[0]; ++k) {

@@ -21,10 +21,10 @@
  *   off_boundary_max = max over the points of |sd(p)|, the points' own
  *              distance off the boundary of K;
  *   area_rel = (|P| - |K|) / |K|, area in 2D, volume in 3D (volume_rel).
- * Relative figures divide by the problem's scale
+ * Relative figures divide by the sum's size (mkSum2_Size, mink/sum.h)
  *   S = |t1| (+ |t2| for the plus set) + |M1|_F |a1| + |M2|_F |a2|
- * (|a| the Euclidean norm of the semi-axes), the definition the core's
- * accuracy tests use (core/tests/reference/refcheck.h).
+ * (|a| the Euclidean norm of the semi-axes), the unit the core's accuracy
+ * is stated in (the MPFR reference computes it on its own, refSum_Size).
  *
  * How far the computed values can be from the true ones (docs/error-measure.md
  * derives each bound):
@@ -55,7 +55,7 @@
  *            Newton's last step (an estimate). Every value found is
  *            attained, so gap_out never exceeds the truth and the depth of
  *            a point inside K is never understated; on boxy superquadrics
- *            boundary points were measured up to 3.4e-11 of the scale deep,
+ *            boundary points were measured up to 3.4e-11 of the size deep,
  *            with a loose bound (up to 3e-5). Known weakness
  *            (docs/error-measure.md).
  *   area (2D): certified: |K| lies between the inscribed polygon of exact
@@ -77,7 +77,7 @@
  * uses only the bodies' parameters. Costs: 2D some 10 to 20 support
  * evaluations per point (a few us); 3D one CGAL hull, one evaluation per
  * hull facet and tens per point (hundreds where the branch and bound runs).
- * |K| costs about a second in 2D: compute it once per pair (mkError2_Area)
+ * |K| costs about a second in 2D: compute it once per pair (mkDeviation2_Area)
  * and pass it in opt->truth. */
 #ifndef MINK_ERROR_H
 #define MINK_ERROR_H
@@ -86,20 +86,23 @@
 
 MK_EXTERN_C_BEGIN
 
-typedef struct mkErrorOptions {
+typedef struct mkDeviationOptions {
 	double tol;         /* relative precision sought for gap_in; 0: 1e-6 */
 	double truth;       /* |K| (area in 2D, volume in 3D) when known, e.g. from an
-	                       earlier mkError2_Area / mkError3_Volume on the same
+	                       earlier mkDeviation2_Area / mkDeviation3_Volume on the same
 	                       pair; 0: computed on every call */
 	double truth_bound; /* its absolute bound, with truth */
-} mkErrorOptions;
+} mkDeviationOptions;
 
-typedef struct mkError {
+/* mkDeviation: the figures above for one point set, how far it deviates
+ * from the true set K. A measurement, not a failure: the MK_ERR_* codes
+ * (mkResult, mink/base.h) say whether a call ran. */
+typedef struct mkDeviation {
 	int points;         /* points given */
 	int nonfinite;      /* of them with a NaN or infinite coordinate (left out of
 	                       every figure; hausdorff is +inf when no point is finite) */
 	int vertices;       /* vertices of P */
-	double scale;       /* S above */
+	double size;        /* S above, the sum's size (mkSum2_Size / mkSum3_Size) */
 	double gap_in, gap_out;
 	double hausdorff_abs, hausdorff_rel;
 	double hausdorff_bound;    /* the true distance is within
@@ -111,25 +114,21 @@ typedef struct mkError {
 	double area_rel;    /* (|P| - |K|) / |K|; volume_rel in 3D */
 	double area_bound;  /* bound on |area_rel - true value| */
 	char message[256];  /* one line with the figures */
-} mkError;
-
-/* The problem's scale S (see above); a positive number for valid bodies. */
-MK_API double mkError2_Scale(mkBody2 b1, mkBody2 b2, mkSet set);
-MK_API double mkError3_Scale(mkBody3 b1, mkBody3 b2, mkSet set);
+} mkDeviation;
 
 /* The textbook support function h_K(n) of the true set and its support
  * point (n any nonzero vector; the point is written when point != NULL).
  * Valid bodies assumed; NaN for a zero or non-finite n. */
-MK_API double mkError2_Support(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 n, mkVec2 *point);
-MK_API double mkError3_Support(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 n, mkVec3 *point);
+MK_API double mkDeviation2_Support(mkBody2 b1, mkBody2 b2, mkSet set, mkVec2 n, mkVec2 *point);
+MK_API double mkDeviation3_Support(mkBody3 b1, mkBody3 b2, mkSet set, mkVec3 n, mkVec3 *point);
 
 /* |K| and a bound on its error (see above). Fails with MK_ERR_ARGUMENT on a
  * NULL pointer, a bad set or an invalid body, MK_ERR_MEMORY when it cannot
  * allocate. */
-MK_API mkResult mkError2_Area(mkBody2 b1, mkBody2 b2, mkSet set, double *area, double *bound);
-MK_API mkResult mkError3_Volume(mkBody3 b1, mkBody3 b2, mkSet set, double *volume, double *bound);
+MK_API mkResult mkDeviation2_Area(mkBody2 b1, mkBody2 b2, mkSet set, double *area, double *bound);
+MK_API mkResult mkDeviation3_Volume(mkBody3 b1, mkBody3 b2, mkSet set, double *volume, double *bound);
 
-/* Measure the points pts (dimension 2 / 3, any order, any count >= 1) against
+/* Measure the deviation of the points pts (dimension 2 / 3, any order, any count >= 1) against
  * the true set. opt may be NULL. Returns MK_OK when the measure ran (out
  * holds the figures), MK_ERR_ARGUMENT on a NULL pointer, a wrong dimension,
  * a bad set or an invalid body, MK_ERR_MEMORY when it cannot allocate,
@@ -137,10 +136,10 @@ MK_API mkResult mkError3_Volume(mkBody3 b1, mkBody3 b2, mkSet set, double *volum
  * area (2D: one or two hull vertices) or no volume (3D) are measured all
  * the same (|P| = 0); in 3D gap_in is then measured over a direction set
  * only and its bound is +inf. */
-MK_API mkResult mkError2_Measure(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts,
-	const mkErrorOptions *opt, mkError *out);
-MK_API mkResult mkError3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts,
-	const mkErrorOptions *opt, mkError *out);
+MK_API mkResult mkDeviation2_Measure(mkBody2 b1, mkBody2 b2, mkSet set, const mkPointSet *pts,
+	const mkDeviationOptions *opt, mkDeviation *out);
+MK_API mkResult mkDeviation3_Measure(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet *pts,
+	const mkDeviationOptions *opt, mkDeviation *out);
 
 MK_EXTERN_C_END
 

@@ -32,7 +32,7 @@
  *   excess = <d, p_k> - U(d)     <= tol   (p_k is not outside the set), for
  *            d = n_k and a fan of nearby directions.
  * tol is the rounding allowance, MK_REFEREE_ULPS units of roundoff of the
- * problem's scale (see below); the sampling error never enters a bound in
+ * sum's extent on the referee's samples (see below); the sampling error never enters a bound in
  * the method's favour.
  *
  * Sampled methods (hull of pairwise sums, edge sorting): the hull check,
@@ -66,9 +66,12 @@
 MK_EXTERN_C_BEGIN
 
 /* Rounding allowance of the support check, in units of u = 2^-53 times the
- * problem's scale S = |t1|_inf + |t2|_inf (plus set) + R1 + R2, where R_i is
+ * sum's extent E = |o|_inf + R1 + R2, o = t1 (+ t2 for the plus set), where R_i is
  * the largest |x - t_i|_inf over the referee's dense samples of body i (its
- * radius in the max norm). Reasoning in referee.c and the tests. */
+ * radius in the max norm): a bound on the largest coordinate of any point
+ * of the set, as the referee's own samples see it (the error measure's
+ * size S, mkSum2_Size, bounds the Euclidean norm from the bodies'
+ * parameters instead). Reasoning in referee.c and the tests. */
 #define MK_REFEREE_ULPS 4096.0
 /* Allowance of the hull check for input sums outside the output's hull, in
  * units of u times the largest input coordinate. Edge sorting needs 4 (one
@@ -90,8 +93,8 @@ typedef struct mkVerdict {
 	int pass;          /* 1 when every check holds */
 	int kind;          /* mkVerdictKind */
 	int points;        /* output points examined */
-	/* support check (absolute lengths; divide by scale for relative) */
-	double scale;      /* S above */
+	/* support check (absolute lengths; divide by extent for relative) */
+	double extent;     /* E above, the sum's extent in the max norm */
 	double tol;        /* rounding allowance, absolute */
 	double depth;      /* max over points of H(n_k) - <n_k, p_k> */
 	double excess;     /* max over points and fan directions of <d, p_k> - U(d) */

@@ -76,8 +76,8 @@ MK_API int mkRegistry_Names(const char **names, int max);
  * functions return MK_ERR_RANGE for such n. */
 MK_API int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen);
 
-/* The accuracy a method states for its points, relative to the problem's
- * scale: MK_F32_TOL (1e-6) for the single-precision tier (MK_METHOD_APPROX);
+/* The accuracy a method states for its points, relative to the sum's
+ * size (mkSum2_Size): MK_F32_TOL (1e-6) for the single-precision tier (MK_METHOD_APPROX);
  * 0 for every other method, which means "exact up to rounding" for
  * MK_METHOD_EXACT ones (the referee's rounding allowance) and nothing for
  * the rest. 0 also for NULL or an unregistered method. */

@@ -94,7 +94,8 @@ typedef struct mkCollision3 {
 	                       answered by a fallback (Gilbert's iteration, or
 	                       the branch and bound when no start converged) the
 	                       width of its bracket of sd */
-	double scale;       /* |d| + r1 + r2, r the bodies' circumradius bounds */
+	double scale;       /* the pair's size (mkCollide3_PairSize): |d| + r1 + r2,
+	                       r the bodies' circumradius bounds */
 	int iterations;     /* Newton iterations (all restarts), and the pair
 	                       evaluations of Gilbert's iteration when it ran */
 	int restarts;       /* extra starts tried (Normal, overlap only) */
@@ -171,10 +172,11 @@ MK_API mkResult mkCollide3_Ray(mkBody3 b1, mkBody3 b2, mkCollision3 *out);
  * mkBody3_SupportValue. NaN for n = 0. */
 MK_API double mkCollide3_Bound(mkBody3 b1, mkBody3 b2, mkVec3 n);
 
-/* The scale the tolerances are relative to: |c2 - c1| + r1 + r2 with
- * r = max(a, b, c) |M|_F, an upper bound of the body's distance from its
- * centre. */
-MK_API double mkCollide3_Scale(mkBody3 b1, mkBody3 b2);
+/* The pair's size, the unit every tolerance here is relative to (the
+ * `scale` of mkCollision3): |c2 - c1| + r1 + r2 with r = max(a, b, c) |M|_F,
+ * an upper bound of the body's distance from its centre. Not the sum's size
+ * of mink/sum.h (mkSum3_Size), which bounds the sum's points instead. */
+MK_API double mkCollide3_PairSize(mkBody3 b1, mkBody3 b2);
 
 /* The support point s(n) = argmax over B of <n, x> of the centred body B - t
  * and its Jacobian ds/dn (the Hessian of the support function, symmetric

@@ -42,7 +42,7 @@ typedef enum mkMethodFlags {
 	MK_METHOD_SAMPLED = 8,  /* n is samples per body, output is a hull */
 	MK_METHOD_APPROX = 16   /* a faster, less accurate tier of an exact method: its points lie
 	                           within a stated distance of the smooth boundary (relative to the
-	                           problem's scale; mkMethod_Tolerance in mink/registry.h) */
+	                           sum's size, mkSum2_Size; mkMethod_Tolerance in mink/registry.h) */
 } mkMethodFlags;
 
 typedef struct mkMethod {

@@ -47,15 +47,16 @@ typedef enum mkImpl { MK_IMPL_AUTO = 0, MK_IMPL_SCALAR = 1, MK_IMPL_AVX2 = 2, MK
 
 /* The arithmetic of the kernels (docs/fast-tiers.md).
  *  - MK_PRECISION_DOUBLE: double throughout, exp/log within 1 ulp: every
- *    point within a few thousand units of roundoff of the problem's scale.
+ *    point within a few thousand units of roundoff of the sum's size
+ *    (mkSum2_Size).
  *  - MK_PRECISION_F32: the same kernels in single precision (16 lanes with
  *    AVX-512, 8 with AVX2; SLEEF's float exp (1 ulp) and log (3.5 ulp), the
  *    C library's expf/logf in the scalar build), about twice the points per second of
  *    double on superellipses and superquadrics. Inputs and outputs stay
  *    double: parameter vectors are normalised in double, then rounded to
  *    float; the body constants are rounded to float once per call; points
- *    are widened on store. Stated accuracy, relative to the problem's scale
- *    S (|t| + |M|_F |a| summed over the bodies): every point within
+ *    are widened on store. Stated accuracy, relative to the sum's size
+ *    S (mkSum2_Size): every point within
  *    MK_F32_TOL S of the exact boundary of the sum (measured along the exact
  *    normal), and within MK_F32_TOL S of the exact point of the same
  *    parameter wherever that point is well-conditioned (moves by less than
@@ -107,6 +108,14 @@ MK_API mkImpl mkImpl_Resolve(mkImpl impl);
  * Always 1 for MK_PRECISION_DOUBLE. */
 MK_API int mkSum2_TierHolds(mkBody2 b1, mkBody2 b2, const mkSumOptions *opt);
 MK_API int mkSum3_TierHolds(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt);
+
+/* The sum's size S = |t1| (+ |t2| for MK_SET_PLUS) + |M1|_F |a1| + |M2|_F |a2|,
+ * |a| the Euclidean norm of a body's semi-axes: a bound on |x| over the set
+ * (B1 (+) B2, or B1 (+) (-B2) without B2's translation), and the unit every
+ * relative accuracy of the sums and of the error measure (mink/error.h) is
+ * quoted in. Positive for valid bodies. */
+MK_API double mkSum2_Size(mkBody2 b1, mkBody2 b2, mkSet set);
+MK_API double mkSum3_Size(mkBody3 b1, mkBody3 b2, mkSet set);
 
 /* Batch closed form over n parameter vectors (u may be any nonzero finite
  * vectors; only their directions matter). Fails with MK_ERR_ARGUMENT on n < 0, NULL

@@ -35,6 +35,45 @@ static double now(void)
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+/* Timings and counts of the extra scorings of the normal form. */
+typedef struct refPreviewStats {
+	double tBlind, blindDiff, tHull;
+	long blindScored, hullSearched;
+} refPreviewStats;
+
+/* The normal form's points scored again without their parameters (as hull
+ * vertices are; 2D), and hull-like points scored. */
+static void previewExtra(const refCell *cell, int plus, int dim, int count, const double *x, const double *y,
+	const double *z, double *kx, double *ky, double *kz, const refScore *sc, refPreviewStats *st)
+{
+	if (dim == 2) {
+		refScore blind;
+		double t0 = now();
+		refSum_Score(&cell->b1, &cell->b2, plus, x, y, NULL, count, NULL, NULL, NULL, &blind);
+		st->tBlind += now() - t0;
+		double dd = fabs(blind.errorRel - sc->errorRel) / (sc->errorRel > 0 ? sc->errorRel : 1.0);
+		if (dd > st->blindDiff)
+			st->blindDiff = dd;
+	}
+	st->blindScored += count;
+	/* Hull-like points: B1's point of parameter i plus B2's
+	 * part of parameter i + 1 (a sum of two boundary points
+	 * with different normals, as a hull vertex is). */
+	double *hx = kx, *hy = ky, *hz = kz; /* reused in place */
+	for (int i = 0; i < count; ++i) {
+		int j = (i + 1) % count;
+		hx[i] = kx[i] + (x[j] - kx[j]);
+		hy[i] = ky[i] + (y[j] - ky[j]);
+		if (dim == 3)
+			hz[i] = kz[i] + (z[j] - kz[j]);
+	}
+	refScore hull;
+	double t0 = now();
+	refSum_Score(&cell->b1, &cell->b2, plus, hx, hy, dim == 3 ? hz : NULL, count, NULL, NULL, NULL, &hull);
+	st->tHull += now() - t0;
+	st->hullSearched += hull.searched;
+}
+
 int main(int argc, char **argv)
 {
 	refGridKind kind = REF_GRID_QUICK;
@@ -67,8 +106,9 @@ int main(int argc, char **argv)
 	static const char *formName[3] = { "closed-normal", "closed-gradient", "closed-paper" };
 	double worst[3] = { 0, 0, 0 };
 	char worstCell[3][3 * REF_SPEC_MAX] = { "", "", "" };
-	double tScore = 0.0, tCond = 0.0, tCore = 0.0, tBlind = 0.0, blindDiff = 0.0, tHull = 0.0;
-	long scored = 0, blindScored = 0, hullSearched = 0, refinedAll = 0, nonfiniteAll[3] = { 0, 0, 0 }, errors[3] = { 0, 0, 0 };
+	double tScore = 0.0, tCond = 0.0, tCore = 0.0;
+	refPreviewStats extra = { 0.0, 0.0, 0.0, 0, 0 };
+	long scored = 0, refinedAll = 0, nonfiniteAll[3] = { 0, 0, 0 }, errors[3] = { 0, 0, 0 };
 	int cells = refGrid_Count(kind, dim);
 	printf("dim,family,eps1,eps2,axis,shear,size,shift,set,method,n,error_rel,condition,cond_point,nonfinite,status,refined,accuracy\n");
 	for (int c = 0; c < cells; ++c) {
@@ -107,34 +147,8 @@ int main(int argc, char **argv)
 					scored += count;
 					refinedAll += sc.refined;
 					nonfiniteAll[f] += sc.nonfinite;
-					if (f == 0) {
-						if (dim == 2) {
-							refScore blind;
-							t0 = now();
-							refSum_Score(&cell.b1, &cell.b2, plus, x, y, NULL, count, NULL, NULL, NULL, &blind);
-							tBlind += now() - t0;
-							double dd = fabs(blind.errorRel - sc.errorRel) / (sc.errorRel > 0 ? sc.errorRel : 1.0);
-							if (dd > blindDiff)
-								blindDiff = dd;
-						}
-						blindScored += count;
-						/* Hull-like points: B1's point of parameter i plus B2's
-						 * part of parameter i + 1 (a sum of two boundary points
-						 * with different normals, as a hull vertex is). */
-						double *hx = kx, *hy = ky, *hz = kz; /* reused in place */
-						for (int i = 0; i < count; ++i) {
-							int j = (i + 1) % count;
-							hx[i] = kx[i] + (x[j] - kx[j]);
-							hy[i] = ky[i] + (y[j] - ky[j]);
-							if (dim == 3)
-								hz[i] = kz[i] + (z[j] - kz[j]);
-						}
-						refScore hull;
-						t0 = now();
-						refSum_Score(&cell.b1, &cell.b2, plus, hx, hy, dim == 3 ? hz : NULL, count, NULL, NULL, NULL, &hull);
-						tHull += now() - t0;
-						hullSearched += hull.searched;
-					}
+					if (f == 0)
+						previewExtra(&cell, plus, dim, count, x, y, z, kx, ky, kz, &sc, &extra);
 				} else {
 					errors[f]++;
 				}
@@ -158,10 +172,10 @@ int main(int argc, char **argv)
 		"derivative-free search), condition %.2f s, core %.3f s (CPU)\n", dim, kind == REF_GRID_FULL ? "full" : "quick",
 		cells, n, tScore, 1e6 * tScore / (double)(scored ? scored : 1), refinedAll, tCond, tCore);
 	fprintf(stderr, "without parameters (as hull vertices): %.2f s, %.1f us per point; largest relative difference "
-		"of the two scores %.2e\n", tBlind, 1e6 * tBlind / (double)(blindScored ? blindScored : 1), blindDiff);
+		"of the two scores %.2e\n", extra.tBlind, 1e6 * extra.tBlind / (double)(extra.blindScored ? extra.blindScored : 1), extra.blindDiff);
 	fprintf(stderr, "hull-like points (mismatched pairs of boundary points): %.2f s, %.1f us per point, "
-		"%ld of %ld searched at 256 bits\n", tHull, 1e6 * tHull / (double)(blindScored ? blindScored : 1),
-		hullSearched, blindScored);
+		"%ld of %ld searched at 256 bits\n", extra.tHull, 1e6 * extra.tHull / (double)(extra.blindScored ? extra.blindScored : 1),
+		extra.hullSearched, extra.blindScored);
 	free(buf);
 	return 0;
 }

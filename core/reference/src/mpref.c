@@ -584,7 +584,8 @@ void refShape_FromGradientInverse(refShape s, const refVec *m, refVec *x)
 
 /* ---- placed body ------------------------------------------------------- */
 
-void refMat_MulVec(const refMat *M, int dim, const refVec *v, refVec *out)
+/* M v, or M^T v when transpose is set. */
+static void refMat_Product(const refMat *M, int dim, int transpose, const refVec *v, refVec *out)
 {
 	refVec r;
 	mpfr_t t;
@@ -592,7 +593,7 @@ void refMat_MulVec(const refMat *M, int dim, const refVec *v, refVec *out)
 	refInit(t);
 	for (int i = 0; i < dim; ++i)
 		for (int j = 0; j < dim; ++j) {
-			mpfr_mul_d(t, v->c[j], M->m[i][j], RND);
+			mpfr_mul_d(t, v->c[j], transpose ? M->m[j][i] : M->m[i][j], RND);
 			mpfr_add(r.c[i], r.c[i], t, RND);
 		}
 	refVec_Set(out, &r);
@@ -600,20 +601,14 @@ void refMat_MulVec(const refMat *M, int dim, const refVec *v, refVec *out)
 	mpfr_clear(t);
 }
 
+void refMat_MulVec(const refMat *M, int dim, const refVec *v, refVec *out)
+{
+	refMat_Product(M, dim, 0, v, out);
+}
+
 void refMat_MulTVec(const refMat *M, int dim, const refVec *v, refVec *out)
 {
-	refVec r;
-	mpfr_t t;
-	refVec_Init(&r);
-	refInit(t);
-	for (int i = 0; i < dim; ++i)
-		for (int j = 0; j < dim; ++j) {
-			mpfr_mul_d(t, v->c[j], M->m[j][i], RND);
-			mpfr_add(r.c[i], r.c[i], t, RND);
-		}
-	refVec_Set(out, &r);
-	refVec_Clear(&r);
-	mpfr_clear(t);
+	refMat_Product(M, dim, 1, v, out);
 }
 
 /* M^-T v = cof(M) v / det(M), with cof the cofactor matrix; the products of

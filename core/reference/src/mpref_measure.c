@@ -1,5 +1,6 @@
-/* mpref_measure.c - distance from the exact boundary of a sum, the scale and
- * the problem's condition (mink/mpref_measure.h).
+/* mpref_measure.c - the distance of a point from the exact boundary of a
+ * sum at 256 bits, and the sum's size (mink/mpref_measure.h); scoring a
+ * point set and the problem's condition are in mpref_score.c.
  *
  * The search for max phi(n), phi(n) = <n, p> - h_K(n), works on offsets s
  * (1 or 2 doubles) in the tangent space of a base normal n0 held at 256 bits:
@@ -23,13 +24,14 @@
  * times the slope |d phi/d s| (a Lipschitz estimate of the remaining gain). */
 #include <mink/mpref_measure.h>
 
+#include "mpref_measure_internal.h"
+
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define RND MPFR_RNDN
-#define MEAS_PI 3.14159265358979323846
 #define FD_STEP 1e-30      /* step of the second differences, radian */
 #define NEWTON_ITERS 16
 #define NM_EVALS 1000      /* Nelder-Mead budget per point */
@@ -53,7 +55,7 @@ static double dFrob(const refMat *M, int dim)
 	return sqrt(s);
 }
 
-double refSum_Scale(const refBody *b1, const refBody *b2, int plus)
+double refSum_Size(const refBody *b1, const refBody *b2, int plus)
 {
 	int dim = b1->s.dim;
 	double S = dNorm(b1->t, dim) + dFrob(&b1->M, dim) * dNorm(b1->s.a, dim)
@@ -169,7 +171,7 @@ static void cofactors(const refMat *M, int dim, double C[3][3])
 /* A start normal for p: the best of a scan of the circle (256 angles) or the
  * sphere (512 Fibonacci points) and of the bodies' face normals, polished by
  * a pattern search in double. Returns phi there, in double. */
-static double coarseNormal(const refBody *b1, const refBody *b2, int plus, const double *p, double *best)
+double refSum_CoarseNormal(const refBody *b1, const refBody *b2, int plus, const double *p, double *best)
 {
 	int dim = b1->s.dim;
 	double bestPhi = -INFINITY, n[3] = { 0.0, 0.0, 0.0 };
@@ -420,9 +422,9 @@ static void searchEval(refSearch *S, const double *s, mpfr_t phi, mpfr_t *g, dou
 	S->evals++;
 }
 
-/* The target of the search: 1e-21 of the scale, or 1e-5 of the distance
+/* The target of the search: 1e-21 of the size S, or 1e-5 of the distance
  * itself (a figure quoted to 4 digits on a log scale needs no more; the
- * rounding of any double output is 1e-16 of the scale). */
+ * rounding of any double output is 1e-16 of the size S). */
 #define TOL_SCALE 1e-21
 #define TOL_REL 1e-5
 static double searchTol(double S, const mpfr_t phi)
@@ -610,7 +612,7 @@ static void searchSimplex(refSearch *S, double scale, mpfr_t phi, double *acc)
 	refVec_Clear(&bestN);
 }
 
-static int finite3(const double *v, int dim)
+int refFinite(const double *v, int dim)
 {
 	for (int i = 0; i < dim; ++i)
 		if (!isfinite(v[i]))
@@ -686,7 +688,7 @@ static int faceCertificate(refSearch *S, const mpfr_t phi)
  * derivative-free stage is skipped; returns 1 when the search reached its
  * target (out->accuracy is then the estimate), 0 otherwise (out->dist is
  * still a lower bound of d(p) and out->upper an upper bound of |d(p)|). */
-static int distanceFrom(const refBody *b1, const refBody *b2, int plus, const double *p,
+int refSum_DistanceFrom(const refBody *b1, const refBody *b2, int plus, const double *p,
 	const double *n0, const refVec *n0m, double S, int newtonOnly, refDistance *out)
 {
 	int dim = b1->s.dim;
@@ -748,12 +750,12 @@ int refSum_Distance(const refBody *b1, const refBody *b2, int plus,
 {
 	int dim = b1->s.dim;
 	double n0[3] = { 0.0, 0.0, 0.0 };
-	if (!finite3(p, dim))
+	if (!refFinite(p, dim))
 		return -1;
-	if (hint && (!finite3(hint, dim) || !(dNorm(hint, dim) > 0.0)))
+	if (hint && (!refFinite(hint, dim) || !(dNorm(hint, dim) > 0.0)))
 		return -1;
 	/* The scan, and the hint where it does better in double precision. */
-	coarseNormal(b1, b2, plus, p, n0);
+	refSum_CoarseNormal(b1, b2, plus, p, n0);
 	if (hint) {
 		double h[3] = { 0.0, 0.0, 0.0 }, l = dNorm(hint, dim);
 		for (int i = 0; i < dim; ++i)
@@ -761,486 +763,7 @@ int refSum_Distance(const refBody *b1, const refBody *b2, int plus,
 		if (dPhi(b1, b2, plus, p, h) >= dPhi(b1, b2, plus, p, n0))
 			memcpy(n0, h, sizeof h);
 	}
-	distanceFrom(b1, b2, plus, p, n0, NULL, refSum_Scale(b1, b2, plus), 0, out);
+	refSum_DistanceFrom(b1, b2, plus, p, n0, NULL, refSum_Size(b1, b2, plus), 0, out);
 	return 0;
 }
 
-/* ---- the memo of refSum_ScoreMemo ---------------------------------------- */
-
-/* Kinds of memoised work: the scan (coarseNormal) of a point, the Newton
- * stage from the exact normal at u, and distanceFrom from a double start
- * normal with or without the derivative-free stage. */
-enum { MEMO_SCAN = 1, MEMO_EXACT_NEWTON = 2, MEMO_START_NEWTON = 3, MEMO_START_FULL = 4 };
-
-typedef struct refMemoEntry {
-	int kind;          /* 0: empty slot */
-	double p[3], s[3]; /* the point and its start (u or the start normal; unused by MEMO_SCAN) */
-	int done;          /* distanceFrom's return */
-	double phi;        /* MEMO_SCAN: coarseNormal's return */
-	double n0[3];      /* MEMO_SCAN: the normal it found */
-	refDistance d;
-} refMemoEntry;
-
-struct refScoreMemo {
-	refBody b1, b2;
-	int plus, valid;
-	refMemoEntry *slot;
-	size_t cap, used;
-	long hits, misses;
-};
-
-refScoreMemo *refScoreMemo_New(void)
-{
-	return calloc(1, sizeof(refScoreMemo));
-}
-
-void refScoreMemo_Free(refScoreMemo *memo)
-{
-	if (memo)
-		free(memo->slot);
-	free(memo);
-}
-
-void refScoreMemo_Counts(const refScoreMemo *memo, long *hits, long *misses)
-{
-	*hits = memo ? memo->hits : 0;
-	*misses = memo ? memo->misses : 0;
-}
-
-static int bodySame(const refBody *a, const refBody *b)
-{
-	if (a->s.dim != b->s.dim || a->s.e1 != b->s.e1 || a->s.e2 != b->s.e2)
-		return 0;
-	for (int i = 0; i < 3; ++i) {
-		if (a->s.a[i] != b->s.a[i] || a->t[i] != b->t[i])
-			return 0;
-		for (int j = 0; j < 3; ++j)
-			if (a->M.m[i][j] != b->M.m[i][j])
-				return 0;
-	}
-	return 1;
-}
-
-/* Bound the memo to the pair (emptied when it was another's). */
-static void memoBind(refScoreMemo *m, const refBody *b1, const refBody *b2, int plus)
-{
-	if (m->valid && m->plus == plus && bodySame(&m->b1, b1) && bodySame(&m->b2, b2))
-		return;
-	if (m->slot)
-		memset(m->slot, 0, m->cap * sizeof *m->slot);
-	m->used = 0;
-	m->b1 = *b1;
-	m->b2 = *b2;
-	m->plus = plus;
-	m->valid = 1;
-}
-
-/* Keys compare by bits (so -0 and 0 differ, as they may for the search). */
-static uint64_t memoHash(int kind, const double *p, const double *s)
-{
-	uint64_t h = 0x9e3779b97f4a7c15u * (uint64_t)kind;
-	for (int i = 0; i < 6; ++i) {
-		uint64_t w;
-		memcpy(&w, i < 3 ? &p[i] : &s[i - 3], sizeof w);
-		h ^= w + 0x9e3779b97f4a7c15u + (h << 6) + (h >> 2);
-		h *= 0xbf58476d1ce4e5b9u;
-	}
-	return h ^ (h >> 31);
-}
-
-static int memoKeyEq(const refMemoEntry *e, int kind, const double *p, const double *s)
-{
-	return e->kind == kind && memcmp(e->p, p, sizeof e->p) == 0 && memcmp(e->s, s, sizeof e->s) == 0;
-}
-
-/* The slot of (kind, p, s): its entry when present (*found = 1), else the
- * empty slot to fill (NULL when the table cannot grow). */
-static refMemoEntry *memoSlot(refScoreMemo *m, int kind, const double *p, const double *s, int *found)
-{
-	*found = 0;
-	if (2 * (m->used + 1) > m->cap) {
-		size_t cap = m->cap ? 2 * m->cap : 256;
-		refMemoEntry *slot = calloc(cap, sizeof *slot);
-		if (!slot)
-			return NULL;
-		for (size_t i = 0; i < m->cap; ++i) {
-			const refMemoEntry *e = &m->slot[i];
-			if (!e->kind)
-				continue;
-			size_t j = memoHash(e->kind, e->p, e->s) & (cap - 1);
-			while (slot[j].kind)
-				j = (j + 1) & (cap - 1);
-			slot[j] = *e;
-		}
-		free(m->slot);
-		m->slot = slot;
-		m->cap = cap;
-	}
-	size_t j = memoHash(kind, p, s) & (m->cap - 1);
-	while (m->slot[j].kind) {
-		if (memoKeyEq(&m->slot[j], kind, p, s)) {
-			*found = 1;
-			return &m->slot[j];
-		}
-		j = (j + 1) & (m->cap - 1);
-	}
-	return &m->slot[j];
-}
-
-static void memoFill(refScoreMemo *m, refMemoEntry *e, int kind, const double *p, const double *s)
-{
-	e->kind = kind;
-	memcpy(e->p, p, sizeof e->p);
-	memcpy(e->s, s, sizeof e->s);
-	m->used++;
-	m->misses++;
-}
-
-/* coarseNormal through the memo. Returns 0, or -1 when the memo cannot grow. */
-static int memoScan(refScoreMemo *m, const refBody *b1, const refBody *b2, int plus, const double *p,
-	double *n0, double *phi)
-{
-	static const double none[3] = { 0.0, 0.0, 0.0 };
-	if (!m) {
-		*phi = coarseNormal(b1, b2, plus, p, n0);
-		return 0;
-	}
-	int found;
-	refMemoEntry *e = memoSlot(m, MEMO_SCAN, p, none, &found);
-	if (!e)
-		return -1;
-	if (found) {
-		m->hits++;
-	} else {
-		e->phi = coarseNormal(b1, b2, plus, p, e->n0);
-		memoFill(m, e, MEMO_SCAN, p, none);
-	}
-	*phi = e->phi;
-	memcpy(n0, e->n0, sizeof e->n0);
-	return 0;
-}
-
-/* distanceFrom through the memo: from the double start n0 (u NULL), or
- * from the exact normal nn of B1 at u (newtonOnly then). Returns
- * distanceFrom's result, or -1 when the memo cannot grow. */
-static int distanceAt(const refBody *b1, const refBody *b2, int plus, const double *p,
-	const double *n0, const double *u, double S, int newtonOnly, refDistance *out)
-{
-	if (!u)
-		return distanceFrom(b1, b2, plus, p, n0, NULL, S, newtonOnly, out);
-	/* The exact normal of B1 at u, kept at 256 bits (see distanceFrom). */
-	int dim = b1->s.dim;
-	double nd[3] = { 0.0, 0.0, 0.0 };
-	refVec uu, nn;
-	refVec_Init(&uu);
-	refVec_Init(&nn);
-	refVec_FromD(&uu, dim, u);
-	refBody_Normal(b1, &uu, &nn);
-	refVec_ToD(&nn, dim, nd);
-	int done = distanceFrom(b1, b2, plus, p, nd, &nn, S, 1, out);
-	refVec_Clear(&uu);
-	refVec_Clear(&nn);
-	return done;
-}
-
-static int memoDistance(refScoreMemo *m, const refBody *b1, const refBody *b2, int plus, const double *p,
-	const double *n0, const double *u, double S, int newtonOnly, refDistance *out)
-{
-	if (!m)
-		return distanceAt(b1, b2, plus, p, n0, u, S, newtonOnly, out);
-	int kind = u ? MEMO_EXACT_NEWTON : newtonOnly ? MEMO_START_NEWTON : MEMO_START_FULL, found;
-	const double *s = u ? u : n0;
-	refMemoEntry *e = memoSlot(m, kind, p, s, &found);
-	if (!e)
-		return -1;
-	if (found) {
-		m->hits++;
-	} else {
-		e->done = distanceAt(b1, b2, plus, p, n0, u, S, newtonOnly, &e->d);
-		memoFill(m, e, kind, p, s);
-	}
-	*out = e->d;
-	return e->done;
-}
-
-/* ---- scoring a point set ------------------------------------------------ */
-
-typedef struct refCand { int index; double bound; double n0[3]; } refCand;
-
-static int candCompare(const void *a, const void *b)
-{
-	double x = ((const refCand *)a)->bound, y = ((const refCand *)b)->bound;
-	return x < y ? 1 : x > y ? -1 : 0;
-}
-
-static void scoreTake(refScore *out, int index, const refDistance *d)
-{
-	double a = fabs(d->dist);
-	if (out->worst < 0 || a > out->errorAbs) {
-		out->errorAbs = a;
-		out->worst = index;
-		out->worstDist = d->dist;
-	}
-}
-
-int refSum_Score(const refBody *b1, const refBody *b2, int plus,
-	const double *x, const double *y, const double *z, int count,
-	const double *ux, const double *uy, const double *uz, refScore *out)
-{
-	return refSum_ScoreMemo(b1, b2, plus, x, y, z, count, ux, uy, uz, NULL, out);
-}
-
-int refSum_ScoreMemo(const refBody *b1, const refBody *b2, int plus,
-	const double *x, const double *y, const double *z, int count,
-	const double *ux, const double *uy, const double *uz, refScoreMemo *memo, refScore *out)
-{
-	if (!out)
-		return -1;
-	memset(out, 0, sizeof *out);
-	out->worst = -1;
-	if (!b1 || !b2)
-		return -1;
-	int dim = b1->s.dim;
-	out->scale = refSum_Scale(b1, b2, plus);
-	if (count < 0 || (count > 0 && (!x || !y || (dim == 3 && !z))))
-		return -1;
-	int hints = ux && uy && (dim == 2 || uz);
-	refCand *cand = malloc(sizeof *cand * (size_t)(count > 0 ? count : 1));
-	if (!cand)
-		return -1;
-	if (memo)
-		memoBind(memo, b1, b2, plus);
-	int pending = 0, oom = 0;
-	double accMax = 0.0;
-	if (!hints) {
-		/* Without parameters (hull vertices): the scan's phi in double is
-		 * within MARGIN of d(p) (the double support value errs by up to
-		 * q u h <= 2e6 * 1.1e-16 * S at eps = 2 - 1e-6, the pattern search
-		 * stops 1e-12 rad from a kink of slope <= S), so |d| <= |phi| +
-		 * MARGIN. The 256-bit search runs in decreasing order of that bound
-		 * until it falls below the largest distance known: a sampled hull's
-		 * errors (1e-6 ... 1e-2 of S) are decided by a few vertices. */
-		for (int i = 0; i < count; ++i) {
-			double p[3] = { x[i], y[i], dim == 3 ? z[i] : 0.0 };
-			if (!finite3(p, dim)) {
-				out->nonfinite++;
-				continue;
-			}
-			out->points++;
-			refCand *c = &cand[pending++];
-			c->index = i;
-			double f;
-			if (memoScan(memo, b1, b2, plus, p, c->n0, &f) != 0) {
-				oom = 1;
-				break;
-			}
-			c->bound = fabs(f) + 1e-9 * out->scale + 1e-6 * fabs(f);
-		}
-		qsort(cand, (size_t)pending, sizeof *cand, candCompare);
-		for (int i = 0; i < pending && !oom; ++i) {
-			if (out->worst >= 0 && cand[i].bound <= out->errorAbs)
-				break;
-			int j = cand[i].index;
-			double p[3] = { x[j], y[j], dim == 3 ? z[j] : 0.0 };
-			refDistance d;
-			int done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 1, &d);
-			if (done == 0) {
-				done = memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d);
-				out->refined++;
-			}
-			if (done < 0) {
-				oom = 1;
-				break;
-			}
-			out->searched++;
-			scoreTake(out, j, &d);
-			if (d.accuracy > accMax)
-				accMax = d.accuracy;
-		}
-		pending = 0;
-	}
-	/* Stage 1 (with parameters): Newton from the exact normal of every
-	 * point. Where it converges the distance is known; elsewhere (kinks)
-	 * keep the bound |d| <= |v| and the normal reached. */
-	for (int i = 0; i < count && hints && !oom; ++i) {
-		double p[3] = { x[i], y[i], dim == 3 ? z[i] : 0.0 };
-		if (!finite3(p, dim)) {
-			out->nonfinite++;
-			continue;
-		}
-		out->points++;
-		double ud[3] = { ux[i], uy[i], dim == 3 ? uz[i] : 0.0 };
-		refDistance d;
-		out->searched++;
-		int done = memoDistance(memo, b1, b2, plus, p, NULL, ud, out->scale, 1, &d);
-		if (done < 0) {
-			oom = 1;
-		} else if (done) {
-			scoreTake(out, i, &d);
-			if (d.accuracy > accMax)
-				accMax = d.accuracy;
-		} else {
-			refCand *c = &cand[pending++];
-			c->index = i;
-			c->bound = d.upper;
-			memcpy(c->n0, d.normal, sizeof c->n0);
-		}
-	}
-	/* Stage 2: the derivative-free search, in decreasing order of the bound,
-	 * until the bound falls below the largest distance known. */
-	qsort(cand, (size_t)pending, sizeof *cand, candCompare);
-	for (int i = 0; i < pending && !oom; ++i) {
-		if (out->worst >= 0 && cand[i].bound <= out->errorAbs)
-			break; /* every remaining point is bounded below the maximum */
-		int j = cand[i].index;
-		double p[3] = { x[j], y[j], dim == 3 ? z[j] : 0.0 };
-		refDistance d;
-		if (memoDistance(memo, b1, b2, plus, p, cand[i].n0, NULL, out->scale, 0, &d) < 0) {
-			oom = 1;
-			break;
-		}
-		out->refined++;
-		scoreTake(out, j, &d);
-		if (d.accuracy > accMax)
-			accMax = d.accuracy;
-	}
-	if (out->worst >= 0) {
-		out->errorRel = out->errorAbs / out->scale;
-		out->accuracy = accMax / out->scale;
-	}
-	free(cand);
-	if (oom) {
-		memset(out, 0, sizeof *out);
-		out->worst = -1;
-		return -1;
-	}
-	return 0;
-}
-
-/* ---- the problem's condition ------------------------------------------- */
-
-void refSample_Params(int dim, int n, double *ux, double *uy, double *uz)
-{
-	if (dim == 2) {
-		for (int k = 0; k < n; ++k) {
-			ux[k] = cos(2.0 * MEAS_PI * k / n);
-			uy[k] = sin(2.0 * MEAS_PI * k / n);
-		}
-		return;
-	}
-	for (int i = 0; i < n; ++i)
-		for (int j = 0; j < n; ++j) {
-			double lon = 2.0 * MEAS_PI * i / n, col = MEAS_PI * j / (n - 1);
-			ux[i * n + j] = sin(col) * cos(lon);
-			uy[i * n + j] = sin(col) * sin(lon);
-			uz[i * n + j] = cos(col);
-		}
-}
-
-static uint64_t splitmix(uint64_t *s)
-{
-	uint64_t z = (*s += 0x9e3779b97f4a7c15u);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-	return z ^ (z >> 31);
-}
-
-static double ulpMove(double v, uint64_t *rng)
-{
-	return nextafter(v, (splitmix(rng) >> 63) ? INFINITY : -INFINITY);
-}
-
-/* Every input moved by one ulp, up or down at random. B2's translation only
- * matters for the plus set. */
-static refBody perturb(const refBody *b, uint64_t *rng, int withT)
-{
-	refBody r = *b;
-	int dim = b->s.dim;
-	for (int i = 0; i < dim; ++i)
-		r.s.a[i] = ulpMove(r.s.a[i], rng);
-	r.s.e1 = ulpMove(r.s.e1, rng);
-	if (dim == 3)
-		r.s.e2 = ulpMove(r.s.e2, rng);
-	for (int i = 0; i < dim; ++i)
-		for (int j = 0; j < dim; ++j)
-			r.M.m[i][j] = ulpMove(r.M.m[i][j], rng);
-	if (withT)
-		for (int i = 0; i < dim; ++i)
-			r.t[i] = ulpMove(r.t[i], rng);
-	return r;
-}
-
-int refSum_Condition(const refBody *b1, const refBody *b2, int plus,
-	int samples, int draws, uint64_t seed, refCondition *out)
-{
-	int dim = b1->s.dim;
-	if (!out)
-		return -1;
-	memset(out, 0, sizeof *out);
-	if (samples < 2 || draws < 1)
-		return -1;
-	int count = dim == 2 ? samples : samples * samples;
-	double *ud = malloc(sizeof(double) * 3 * (size_t)count);
-	if (!ud)
-		return -1;
-	refSample_Params(dim, samples, ud, ud + count, dim == 3 ? ud + 2 * count : NULL);
-	double S = refSum_Scale(b1, b2, plus);
-	refBody *p1 = malloc(sizeof(refBody) * 2 * (size_t)draws);
-	if (!p1) {
-		free(ud);
-		return -1;
-	}
-	refBody *p2 = p1 + draws;
-	uint64_t rng = seed;
-	for (int r = 0; r < draws; ++r) {
-		p1[r] = perturb(b1, &rng, 1);
-		p2[r] = perturb(b2, &rng, plus);
-	}
-	refVec u, x, n, xp, d;
-	mpfr_t h, hp;
-	refVec_Init(&u);
-	refVec_Init(&x);
-	refVec_Init(&n);
-	refVec_Init(&xp);
-	refVec_Init(&d);
-	mpfr_inits2(REF_PREC, h, hp, (mpfr_ptr)0);
-	for (int k = 0; k < count; ++k) {
-		double uk[3] = { ud[k], ud[count + k], dim == 3 ? ud[2 * count + k] : 0.0 };
-		refVec_FromD(&u, dim, uk);
-		refSum_Point(b1, b2, plus, 1, &u, &x, NULL, &n);
-		refSum_SupportValue(b1, b2, plus, &n, h);
-		/* floor: the exact point rounded to double, along the normal */
-		double xd[3] = { 0.0, 0.0, 0.0 };
-		refVec_ToD(&x, dim, xd);
-		refVec_FromD(&d, dim, xd);
-		for (int i = 0; i < dim; ++i)
-			mpfr_sub(d.c[i], d.c[i], x.c[i], RND);
-		refVec_Dot(hp, &d, &n, dim);
-		double fl = fabs(mpfr_get_d(hp, RND)) / S;
-		if (fl > out->floor)
-			out->floor = fl;
-		for (int r = 0; r < draws; ++r) {
-			refSum_SupportValue(&p1[r], &p2[r], plus, &n, hp);
-			mpfr_sub(hp, hp, h, RND);
-			double bd = fabs(mpfr_get_d(hp, RND)) / S;
-			if (bd > out->boundary)
-				out->boundary = bd;
-			refSum_Point(&p1[r], &p2[r], plus, 1, &u, &xp, NULL, NULL);
-			for (int i = 0; i < dim; ++i)
-				mpfr_sub(d.c[i], xp.c[i], x.c[i], RND);
-			double pt = refVec_NormD(&d, dim) / S;
-			if (pt > out->point)
-				out->point = pt;
-		}
-	}
-	out->value = out->boundary > out->floor ? out->boundary : out->floor;
-	mpfr_clears(h, hp, (mpfr_ptr)0);
-	refVec_Clear(&u);
-	refVec_Clear(&x);
-	refVec_Clear(&n);
-	refVec_Clear(&xp);
-	refVec_Clear(&d);
-	free(p1);
-	free(ud);
-	return 0;
-}

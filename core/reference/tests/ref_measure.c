@@ -23,7 +23,7 @@
  *  7. The memo of refSum_ScoreMemo: scores bit for bit those without it.
  * Tolerances: the rounding of p itself (2^-53 |p| per coordinate, so
  * 2^-52 sqrt(dim) |p| in all) plus four times the search's target (1e-5 of
- * the distance or 1e-21 of the scale, mink/mpref_measure.h). */
+ * the distance or 1e-21 of the size S, mink/mpref_measure.h). */
 #include <mink/mpref_measure.h>
 #include "reftest.h"
 
@@ -53,18 +53,34 @@ static refBody makeBody(int dim, double a, double b, double c, double e1, double
 	return r;
 }
 
-static void randomUnit(refRng *rng, int dim, double *u)
+/* x + delta n at 256 bits, rounded to double into p (dim entries). */
+static void movedPoint(const refVec *x, const refVec *n, int dim, double delta, double *p)
 {
-	double n;
-	do {
-		n = 0.0;
-		for (int i = 0; i < dim; ++i) {
-			u[i] = refRng_Uniform(rng, -1.0, 1.0);
-			n += u[i] * u[i];
-		}
-	} while (n < 1e-4 || n > 1.0);
-	for (int i = 0; i < dim; ++i)
-		u[i] /= sqrt(n);
+	for (int i = 0; i < dim; ++i) {
+		mpfr_t t;
+		mpfr_init2(t, REF_PREC);
+		mpfr_mul_d(t, n->c[i], delta, MPFR_RNDN);
+		mpfr_add(t, t, x->c[i], MPFR_RNDN);
+		p[i] = mpfr_get_d(t, MPFR_RNDN);
+		mpfr_clear(t);
+	}
+}
+
+/* The exact point of the surface parameter ud moved by delta along its
+ * exact normal, rounded to double into p (dim entries). */
+static void offNormal(const refBody *b1, const refBody *b2, int plus, const double *ud, double delta, double *p)
+{
+	int dim = b1->s.dim;
+	refVec u, xv, nv;
+	refVec_Init(&u);
+	refVec_Init(&xv);
+	refVec_Init(&nv);
+	refVec_FromD(&u, dim, ud);
+	refSum_Point(b1, b2, plus, 1, &u, &xv, NULL, &nv);
+	movedPoint(&xv, &nv, dim, delta, p);
+	refVec_Clear(&u);
+	refVec_Clear(&xv);
+	refVec_Clear(&nv);
 }
 
 static double dnorm(const double *v, int dim)
@@ -88,13 +104,13 @@ static void checkCircles(void)
 			 * orthogonal, and would make the discs ellipses at 1e-17 */
 			refBody b1 = makeBody(dim, 1.25, 1.25, 1.25, 1.0, 1.0, 0.0, t1);
 			refBody b2 = makeBody(dim, 0.5, 0.5, 0.5, 1.0, 1.0, 0.0, t2);
-			double c[3], R = 1.75, S = refSum_Scale(&b1, &b2, plus);
+			double c[3], R = 1.75, S = refSum_Size(&b1, &b2, plus);
 			for (int i = 0; i < 3; ++i)
 				c[i] = t1[i] + (plus ? t2[i] : 0.0);
 			for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k)
 				for (int trial = 0; trial < 3; ++trial) {
 					double u[3] = { 0.0, 0.0, 0.0 }, p[3] = { 0.0, 0.0, 0.0 };
-					randomUnit(&rng, dim, u);
+					refRng_Unit(&rng, dim, u);
 					for (int i = 0; i < dim; ++i)
 						p[i] = c[i] + (R + deltas[k]) * u[i];
 					/* the exact distance of the rounded p */
@@ -156,7 +172,7 @@ static void checkMoved(void)
 				double t1[3] = { 0.3, -0.2, 0.1 }, t2[3] = { -1.0, 2.0, 0.5 };
 				refBody b1 = makeBody(dim, 1.0, 0.4, 0.7, pairs[pi][0], pairs[pi][1], 0.4, t1);
 				refBody b2 = makeBody(dim, 0.6, 0.9, 0.3, pairs[pi][2], pairs[pi][3], 1.3, t2);
-				double S = refSum_Scale(&b1, &b2, plus);
+				double S = refSum_Size(&b1, &b2, plus);
 				int smooth = pairs[pi][0] >= 0.5 && pairs[pi][0] <= 1.5 && pairs[pi][2] >= 0.5 && pairs[pi][2] <= 1.5;
 				static const double rel[] = { 1e-6, 1e-13, -1e-9 };
 				for (int k = 0; k < 3; ++k) {
@@ -164,7 +180,7 @@ static void checkMoved(void)
 						continue; /* inside a corner the nearest boundary may be another face */
 					for (int trial = 0; trial < 3; ++trial) {
 						double nd[3] = { 0.0, 0.0, 0.0 }, p[3] = { 0.0, 0.0, 0.0 };
-						randomUnit(&rng, dim, nd);
+						refRng_Unit(&rng, dim, nd);
 						refVec n, x;
 						refVec_Init(&n);
 						refVec_Init(&x);
@@ -172,14 +188,7 @@ static void checkMoved(void)
 						refVec_Normalize(&n, dim);
 						refSum_Point(&b1, &b2, plus, 0, &n, &x, NULL, NULL);
 						double delta = rel[k] * S;
-						for (int i = 0; i < dim; ++i) {
-							mpfr_t t;
-							mpfr_init2(t, REF_PREC);
-							mpfr_mul_d(t, n.c[i], delta, MPFR_RNDN);
-							mpfr_add(t, t, x.c[i], MPFR_RNDN);
-							p[i] = mpfr_get_d(t, MPFR_RNDN);
-							mpfr_clear(t);
-						}
+						movedPoint(&x, &n, dim, delta, p);
 						refVec_Clear(&n);
 						refVec_Clear(&x);
 						/* rounding p moves it by at most 2^-53 |p_i| per coordinate;
@@ -210,7 +219,7 @@ static void checkFaces(void)
 			double t2[3] = { 0.0, 0.0, 0.0 };
 			refBody b1 = makeBody(dim, 1.0, 0.5, 0.8, 1e-6, 1e-6, 0.0, NULL);
 			refBody b2 = makeBody(dim, 0.7, 0.4, 0.5, 1e-6, 1e-6, 0.0, t2);
-			double S = refSum_Scale(&b1, &b2, plus);
+			double S = refSum_Size(&b1, &b2, plus);
 			for (int k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k) {
 				double p[3] = { 1.7 + deltas[k], 0.2, -0.3 };
 				/* p_x - 1.7, exactly (a difference of two doubles near each other) */
@@ -240,34 +249,18 @@ static void checkScore(void)
 		refBody b1 = makeBody(dim, 1.0, 0.4, 0.7, 0.5, 1.5, 0.4, t1);
 		refBody b2 = makeBody(dim, 0.6, 0.9, 0.3, 1.5, 0.5, 1.3, t2);
 		refSample_Params(dim, n, ux, uy, dim == 3 ? uz : NULL);
-		double S = refSum_Scale(&b1, &b2, 0);
+		double S = refSum_Size(&b1, &b2, 0);
 		int planted = 17;
 		for (int k = 0; k < count; ++k) {
-			refVec u, xv, nv;
-			refVec_Init(&u);
-			refVec_Init(&xv);
-			refVec_Init(&nv);
 			double ud[3] = { ux[k], uy[k], dim == 3 ? uz[k] : 0.0 };
-			refVec_FromD(&u, dim, ud);
-			refSum_Point(&b1, &b2, 0, 1, &u, &xv, NULL, &nv);
 			/* move by delta_k along the normal: -1e-10 S ... 1e-10 S, and
 			 * 3e-9 S at the planted index */
 			double delta = k == planted ? 3e-9 * S : 1e-10 * S * ((k % 7) - 3) / 3.0;
 			double p[3];
-			for (int i = 0; i < dim; ++i) {
-				mpfr_t t;
-				mpfr_init2(t, REF_PREC);
-				mpfr_mul_d(t, nv.c[i], delta, MPFR_RNDN);
-				mpfr_add(t, t, xv.c[i], MPFR_RNDN);
-				p[i] = mpfr_get_d(t, MPFR_RNDN);
-				mpfr_clear(t);
-			}
+			offNormal(&b1, &b2, 0, ud, delta, p);
 			x[k] = p[0];
 			y[k] = p[1];
 			z[k] = dim == 3 ? p[2] : 0.0;
-			refVec_Clear(&u);
-			refVec_Clear(&xv);
-			refVec_Clear(&nv);
 		}
 		x[5] = NAN;
 		y[40 % count] = INFINITY;
@@ -280,7 +273,7 @@ static void checkScore(void)
 			ENSURE_MSG(sc.worst == planted, "%dD hint %d: worst %d", dim, h, sc.worst);
 			ENSURE_LE(fabs(sc.errorRel - 3e-9), 1e-15, "%dD hint %d: error_rel %.17g", dim, h, sc.errorRel);
 			ENSURE(sc.worstDist > 0.0);
-			ENSURE(sc.scale == S);
+			ENSURE(sc.size == S);
 			printf("score %dD hint %d: error_rel %.6e (planted 3e-9), %ld of %ld points searched at 256 bits "
 				"(%ld by Nelder-Mead), accuracy %.1e\n", dim, h, sc.errorRel, sc.searched, sc.points, sc.refined,
 				sc.accuracy);
@@ -302,7 +295,7 @@ static void checkScore(void)
 		double t1[3] = { 0.3, -0.2, 0.1 };
 		refBody b1 = makeBody(3, 1.0, 0.4, 0.7, 1e-6, 1e-6, 0.4, t1);
 		refBody b2 = makeBody(3, 0.6, 0.9, 0.3, 1.0, 1.0, 1.3, NULL);
-		double S = refSum_Scale(&b1, &b2, 0), ux[12], uy[12], uz[12], x[12], y[12], z[12], pmax = 0.0;
+		double S = refSum_Size(&b1, &b2, 0), ux[12], uy[12], uz[12], x[12], y[12], z[12], pmax = 0.0;
 		int count = 12, planted = 7;
 		for (int k = 0; k < count; ++k) {
 			double a = 0.3 + 0.5 * k;
@@ -364,7 +357,7 @@ static void checkScore(void)
  * 2^-227 here, q <= 2e6 and |log| < 50); the powers one by one to a few
  * ulps of 2^-256 times the same amplification. 2^-200 of the point's size
  * leaves a margin of 2^27 over both and is still 1e-60: far below any
- * distance the searches resolve (1e-21 of the scale). */
+ * distance the searches resolve (1e-21 of the size S). */
 static void checkSupportByLogs(void)
 {
 	static const double eps[] = { 1e-6, 1e-3, 0.1, 0.5, 1.0, 1.5, 1.9, 1.999, 2.0 - 1e-6 };
@@ -389,7 +382,7 @@ static void checkSupportByLogs(void)
 					for (int c = 0; c < dim; ++c)
 						s.a[c] = axes[(k + c) % 4];
 					double u[3] = { 0.0, 0.0, 0.0 };
-					randomUnit(&rng, dim, u);
+					refRng_Unit(&rng, dim, u);
 					/* a zero component (k = 0, 1, 2) or a tiny one (k = 3, 4) */
 					if (k < dim)
 						u[k] = 0.0;
@@ -418,11 +411,11 @@ static void checkSupportByLogs(void)
  * outputs scored with and without it, twice in a row (the second time from
  * the memo alone), then another pair through the same memo (it must empty
  * itself, not answer from the first pair). Points: boundary points of each
- * pair moved by 1e-12 ... 1e-9 of the scale (near-box and ellipsoid edges
+ * pair moved by 1e-12 ... 1e-9 of the size S (near-box and ellipsoid edges
  * included, where the derivative-free stage runs). */
 static int scoreSame(const refScore *a, const refScore *b)
 {
-	return a->scale == b->scale && a->errorAbs == b->errorAbs && a->errorRel == b->errorRel
+	return a->size == b->size && a->errorAbs == b->errorAbs && a->errorRel == b->errorRel
 		&& a->accuracy == b->accuracy && a->worst == b->worst && a->worstDist == b->worstDist
 		&& a->points == b->points && a->nonfinite == b->nonfinite && a->searched == b->searched
 		&& a->refined == b->refined;
@@ -441,30 +434,14 @@ static void checkMemo(void)
 				int n = dim == 2 ? 24 : 5, count = dim == 2 ? n : n * n;
 				double ux[25], uy[25], uz[25], x[25], y[25], z[25];
 				refSample_Params(dim, n, ux, uy, dim == 3 ? uz : NULL);
-				double S = refSum_Scale(&b1, &b2, plus);
+				double S = refSum_Size(&b1, &b2, plus);
 				for (int k = 0; k < count; ++k) {
-					refVec u, xv, nv;
-					refVec_Init(&u);
-					refVec_Init(&xv);
-					refVec_Init(&nv);
 					double ud[3] = { ux[k], uy[k], dim == 3 ? uz[k] : 0.0 }, p[3] = { 0.0, 0.0, 0.0 };
-					refVec_FromD(&u, dim, ud);
-					refSum_Point(&b1, &b2, plus, 1, &u, &xv, NULL, &nv);
 					double delta = 1e-12 * S * (1 + k % 5) * (k % 2 ? 1.0 : -1.0) * (k == 3 ? 1000.0 : 1.0);
-					for (int i = 0; i < dim; ++i) {
-						mpfr_t t;
-						mpfr_init2(t, REF_PREC);
-						mpfr_mul_d(t, nv.c[i], delta, MPFR_RNDN);
-						mpfr_add(t, t, xv.c[i], MPFR_RNDN);
-						p[i] = mpfr_get_d(t, MPFR_RNDN);
-						mpfr_clear(t);
-					}
+					offNormal(&b1, &b2, plus, ud, delta, p);
 					x[k] = p[0];
 					y[k] = p[1];
 					z[k] = p[2];
-					refVec_Clear(&u);
-					refVec_Clear(&xv);
-					refVec_Clear(&nv);
 				}
 				for (int h = 0; h < 2; ++h) {
 					const double *hx = h ? ux : NULL, *hy = h ? uy : NULL, *hz = h && dim == 3 ? uz : NULL;
@@ -504,7 +481,7 @@ static void checkCondition(void)
 	double big = 1.5 * 0x1p30, t1[2] = { big, big };
 	refBody b1 = makeBody(2, 1.0, 1.0, 0.0, 1.0, 1.0, 0.0, t1);
 	refBody b2 = makeBody(2, 0.5, 0.5, 0.0, 1.0, 1.0, 0.0, NULL);
-	double S = refSum_Scale(&b1, &b2, 0);
+	double S = refSum_Size(&b1, &b2, 0);
 	refCondition c;
 	ENSURE(refSum_Condition(&b1, &b2, 0, 8, 4, 1234u, &c) == 0);
 	double expect = 0x1p-22 * sqrt(2.0);
@@ -534,7 +511,7 @@ static void checkCondition(void)
 		ENSURE_LE(fabs(cs.boundary - cl.boundary), 1e-9 * cs.boundary, "scaled boundary %g %g", cs.boundary, cl.boundary);
 		ENSURE_LE(fabs(cs.point - cl.point), 1e-9 * cs.point, "scaled point %g %g", cs.point, cl.point);
 		/* a one-ulp move of well-scaled inputs moves the boundary by a few
-		 * ulps of the scale, no more (eps 0.4 and 1.8 amplify by at most
+		 * ulps of the size S, no more (eps 0.4 and 1.8 amplify by at most
 		 * their exponent 1/(2 - 1.8) = 5) */
 		ENSURE(cs.boundary > 0.0);
 		ENSURE_LE(cs.boundary, 64.0 * REF_U, "boundary of a well-conditioned pair %g", cs.boundary);

@@ -29,20 +29,6 @@
 static const double epsList[] = { 1e-3, 0.01, 0.1, 0.5, 1.0, 1.5, 1.9, 1.99, 2.0 - 1e-3 };
 #define EPS_COUNT ((int)(sizeof epsList / sizeof epsList[0]))
 
-static void randomUnit(refRng *rng, int dim, double *u)
-{
-	double n;
-	do {
-		n = 0.0;
-		for (int i = 0; i < dim; ++i) {
-			u[i] = refRng_Uniform(rng, -1.0, 1.0);
-			n += u[i] * u[i];
-		}
-	} while (n < 1e-4 || n > 1.0);
-	for (int i = 0; i < dim; ++i)
-		u[i] /= sqrt(n);
-}
-
 /* Relative difference |x - y| / |y| in double (the difference is taken in
  * MPFR, so nothing cancels in double). */
 static double relDiff(const refVec *x, const refVec *y, int dim)
@@ -68,7 +54,7 @@ static void checkShape(refShape s, refRng *rng, refStat *stat)
 	mpfr_inits2(REF_PREC, psi, h, t, (mpfr_ptr)0);
 	for (int trial = 0; trial < 20; ++trial) {
 		double ud[3];
-		randomUnit(rng, s.dim, ud);
+		refRng_Unit(rng, s.dim, ud);
 		refVec_FromD(&u, s.dim, ud);
 		refShape_Point(s, &u, &f);
 		/* 1 */
@@ -89,7 +75,7 @@ static void checkShape(refShape s, refRng *rng, refStat *stat)
 		ENSURE_LE(e3, SELF_TOL, "f(g^-1(grad f)) dim %d eps %g,%g", s.dim, s.e1, s.e2);
 		refStat_Add(stat, e3);
 		/* 4 */
-		randomUnit(rng, s.dim, ud);
+		refRng_Unit(rng, s.dim, ud);
 		refVec_FromD(&d, s.dim, ud);
 		refShape_Support(s, &d, &x);
 		refShape_SupportValue(s, &d, h);
@@ -134,7 +120,7 @@ static void checkEllipse(refShape s, refRng *rng, refStat *stat)
 	mpfr_inits2(REF_PREC, n, t, (mpfr_ptr)0);
 	for (int trial = 0; trial < 20; ++trial) {
 		double ud[3];
-		randomUnit(rng, s.dim, ud);
+		refRng_Unit(rng, s.dim, ud);
 		refVec_FromD(&d, s.dim, ud);
 		refShape_Support(s, &d, &x);
 		mpfr_set_zero(n, 1);
@@ -176,7 +162,7 @@ static void checkSupportIsMax(refRng *rng)
 	for (int k = 0; k < 3; ++k) {
 		refShape s = { 2, { 3.0, 1.25, 0.0 }, eps[k], 0.0 };
 		double dd[2];
-		randomUnit(rng, 2, dd);
+		refRng_Unit(rng, 2, dd);
 		refVec_FromD(&d, 2, dd);
 		refShape_SupportValue(s, &d, h);
 		mpfr_set_inf(best, -1);

@@ -241,30 +241,6 @@ static void scaledParameters(void)
 
 int main(int argc, char **argv)
 {
-	int which = argc > 1 ? atoi(argv[1]) : 0;
-	if (argc > 2) {
-		floatio = strcmp(argv[2], "f32io") == 0;
-		int t = floatio ? MK_PRECISION_F32 : mkPrecision_Parse(argv[2]);
-		ENSURE(t >= 0);
-		if (t < 0)
-			return refTest_Result(argv[0]);
-		tier = (mkPrecision)t;
-	}
-	/* "all" as the third argument: evaluate the conditioning of every point
-	 * of group 4 too, for its statistics (twice the time; the test runs
-	 * without, its tolerances need it only where an error is large). */
-	int rangeAll = argc > 3 && strcmp(argv[3], "all") == 0;
-	if (which == 0 || which == 1)
-		validationDraws();
-	static const double E[] = { 1e-3, 0.01, 0.5, 1.0, 1.5, 1.99, 2.0 - 1e-3 };
-	/* the ends of the valid exponent range, where the powers' exponents
-	 * reach 5e-7 and 2e6 */
-	static const double R[] = { 1e-6, 1e-5, 1e-4, 1.0, 2.0 - 1e-4, 2.0 - 1e-5, 2.0 - 1e-6 };
-	if (which == 0 || which == 2)
-		extremes(E, "ref_sum3 extremes", 6202u, 1);
-	if (which == 0 || which == 4)
-		extremes(R, "ref_sum3 eps-range", 6204u, rangeAll);
-	if (which == 0 || which == 3)
-		scaledParameters();
-	return refTest_Result("ref_sum3");
+	static const refSumTests t = { "ref_sum3", 6200u, validationDraws, extremes, scaledParameters };
+	return refSum_Main(argc, argv, &t, &tier, &floatio);
 }

@@ -55,7 +55,10 @@
  * Points count as ill-conditioned in its statistics when (U1 + U2) / S > 1e-7. */
 #include "refcheck.h"
 
+#include <mink/mpref_measure.h>
+
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -303,6 +306,87 @@ static mkResult runCore(const refCase *c, const mkSumOptions *opt, int floatio, 
 		out[0], out[1], out[2], out[3], out[4], out[5]);
 }
 
+/* One kernel's run on one case: the bodies, the set, the parameterisation,
+ * S and the tolerances' parts (see refCheck_Case). */
+typedef struct refJudge {
+	refGroup *g;
+	const refBody *b1, *b2;
+	int dim, plus, surface;
+	mkImpl impl;
+	double S, base, unit, ucond, illCut;
+} refJudge;
+
+/* Judge point j (parameter u) of both forms, xs[f] and ks[f], against the
+ * reference p; Theorem 1 against Theorem 2 on the same input. */
+static void judgePoint(const refJudge *J, int j, const double *u, double xs[2][3], double ks[2][3], refPoint *p)
+{
+	for (int f = 0; f < 2; ++f) {
+		int finite = 1;
+		for (int i = 0; i < J->dim; ++i)
+			finite &= isfinite(xs[f][i]) && isfinite(ks[f][i]);
+		if (!finite) {
+			J->g->nonfinite++;
+			ENSURE_MSG(finite, "%s %s-form %s %s point %d u=(%.17g, %.17g, %.17g)",
+				mkImpl_Name(J->impl), f ? "gradient" : "normal", J->surface ? "surface" : "normal-param",
+				J->plus ? "plus" : "contact", j, u[0], u[1], u[2]);
+			continue;
+		}
+		double eA = refVec_DistD(&p->x, J->dim, xs[f]) / J->S;
+		double eK = refVec_DistD(&p->k, J->dim, ks[f]) / J->S;
+		refVec xv;
+		mpfr_t t;
+		refVec_Init(&xv);
+		mpfr_init2(t, REF_PREC);
+		refVec_FromD(&xv, J->dim, xs[f]);
+		refVec_Dot(t, &p->n, &xv, J->dim);
+		mpfr_sub(t, t, p->h, MPFR_RNDN);
+		double eB = fabs(mpfr_get_d(t, MPFR_RNDN)) / J->S;
+		refVec_Clear(&xv);
+		mpfr_clear(t);
+		if (!p->condDone && (J->g->conditionAll || eA > J->base || eK > J->base || eB > J->base))
+			conditioning(J->b1, J->b2, J->plus, J->surface, u, J->unit, p);
+		double tolA = J->base, tolK = J->base, tolB = J->base;
+		if (p->condDone) {
+			tolA += J->ucond * (p->U1 + p->U2) / J->S;
+			tolK += J->ucond * p->U1 / J->S;
+			tolB += (p->a1 * p->U1 + p->a2 * p->U2) / J->S;
+		}
+		const char *ctx = "%s %s-form %s %s point %d u=(%.17g, %.17g, %.17g)";
+		ENSURE_LE(eA, tolA, ctx, mkImpl_Name(J->impl), f ? "gradient" : "normal",
+			J->surface ? "surface" : "normal-param", J->plus ? "plus" : "contact", j, u[0], u[1], u[2]);
+		ENSURE_LE(eK, tolK, ctx, mkImpl_Name(J->impl), f ? "gradient" : "normal",
+			J->surface ? "surface" : "normal-param", J->plus ? "plus" : "contact", j, u[0], u[1], u[2]);
+		ENSURE_LE(eB, tolB, ctx, mkImpl_Name(J->impl), f ? "gradient" : "normal",
+			J->surface ? "surface" : "normal-param", J->plus ? "plus" : "contact", j, u[0], u[1], u[2]);
+		/* The distance to the ideal point means something only
+		 * where the problem is well-conditioned (see (i) above);
+		 * the distance from the boundary is quoted everywhere. */
+		int ill = p->condDone && (p->U1 + p->U2) / J->S > J->illCut;
+		if (!ill)
+			refStat_Add(&J->g->eA[J->impl][f], eA);
+		if (!(p->condDone && p->U1 / J->S > J->illCut))
+			refStat_Add(&J->g->eK[J->impl][f], eK);
+		refStat_Add(&J->g->eB[J->impl][f], eB);
+		if (!ill)
+			refStat_Add(&J->g->ratioA, eA / tolA);
+		refStat_Add(&J->g->ratioB, eB / tolB);
+	}
+	/* Theorem 1 against Theorem 2 on the same input. */
+	double d[3];
+	for (int i = 0; i < J->dim; ++i)
+		d[i] = xs[0][i] - xs[1][i];
+	double e12 = norm(d, J->dim) / J->S;
+	if (e12 > 2.0 * J->base && !p->condDone)
+		conditioning(J->b1, J->b2, J->plus, J->surface, u, J->unit, p);
+	double tol12 = 2.0 * (J->base + (p->condDone ? (p->U1 + p->U2) / J->S : 0.0));
+	/* the difference itself rounds by 2u S at most; inside K */
+	ENSURE_LE(e12, tol12, "Theorem 1 vs 2: %s %s %s point %d u=(%.17g, %.17g, %.17g)",
+		mkImpl_Name(J->impl), J->surface ? "surface" : "normal-param", J->plus ? "plus" : "contact",
+		j, u[0], u[1], u[2]);
+	if (isfinite(e12))
+		refStat_Add(&J->g->e12[J->impl], e12);
+}
+
 void refCheck_Case(const refCase *c, refGroup *g)
 {
 	/* The float-array entry points see the parameter vectors rounded to
@@ -363,10 +447,7 @@ void refCheck_Case(const refCase *c, refGroup *g)
 	}
 
 	for (int plus = 0; plus <= 1; ++plus) {
-		double S = norm(b1.t, dim) + frob(&b1.M, dim) * norm(b1.s.a, dim)
-			+ frob(&b2.M, dim) * norm(b2.s.a, dim);
-		if (plus)
-			S += norm(b2.t, dim);
+		double S = refSum_Size(&b1, &b2, plus);
 		for (int surface = 0; surface <= 1; ++surface) {
 			for (int j = 0; j < n; ++j) {
 				double u[3] = { c->ux[j], c->uy[j], dim == 3 ? c->uz[j] : 0.0 };
@@ -402,71 +483,8 @@ void refCheck_Case(const refCase *c, refGroup *g)
 							xs[f][i] = outs[f][i][j];
 							ks[f][i] = outs[f][3 + i][j];
 						}
-					for (int f = 0; f < 2; ++f) {
-						int finite = 1;
-						for (int i = 0; i < dim; ++i)
-							finite &= isfinite(xs[f][i]) && isfinite(ks[f][i]);
-						if (!finite) {
-							g->nonfinite++;
-							ENSURE_MSG(finite, "%s %s-form %s %s point %d u=(%.17g, %.17g, %.17g)",
-								mkImpl_Name(impl), f ? "gradient" : "normal", surface ? "surface" : "normal-param",
-								plus ? "plus" : "contact", j, u[0], u[1], u[2]);
-							continue;
-						}
-						double eA = refVec_DistD(&p->x, dim, xs[f]) / S;
-						double eK = refVec_DistD(&p->k, dim, ks[f]) / S;
-						refVec xv;
-						mpfr_t t;
-						refVec_Init(&xv);
-						mpfr_init2(t, REF_PREC);
-						refVec_FromD(&xv, dim, xs[f]);
-						refVec_Dot(t, &p->n, &xv, dim);
-						mpfr_sub(t, t, p->h, MPFR_RNDN);
-						double eB = fabs(mpfr_get_d(t, MPFR_RNDN)) / S;
-						refVec_Clear(&xv);
-						mpfr_clear(t);
-						if (!p->condDone && (g->conditionAll || eA > base || eK > base || eB > base))
-							conditioning(&b1, &b2, plus, surface, u, unit, p);
-						double tolA = base, tolK = base, tolB = base;
-						if (p->condDone) {
-							tolA += ucond * (p->U1 + p->U2) / S;
-							tolK += ucond * p->U1 / S;
-							tolB += (p->a1 * p->U1 + p->a2 * p->U2) / S;
-						}
-						const char *ctx = "%s %s-form %s %s point %d u=(%.17g, %.17g, %.17g)";
-						ENSURE_LE(eA, tolA, ctx, mkImpl_Name(impl), f ? "gradient" : "normal",
-							surface ? "surface" : "normal-param", plus ? "plus" : "contact", j, u[0], u[1], u[2]);
-						ENSURE_LE(eK, tolK, ctx, mkImpl_Name(impl), f ? "gradient" : "normal",
-							surface ? "surface" : "normal-param", plus ? "plus" : "contact", j, u[0], u[1], u[2]);
-						ENSURE_LE(eB, tolB, ctx, mkImpl_Name(impl), f ? "gradient" : "normal",
-							surface ? "surface" : "normal-param", plus ? "plus" : "contact", j, u[0], u[1], u[2]);
-						/* The distance to the ideal point means something only
-						 * where the problem is well-conditioned (see (i) above);
-						 * the distance from the boundary is quoted everywhere. */
-						int ill = p->condDone && (p->U1 + p->U2) / S > illCut;
-						if (!ill)
-							refStat_Add(&g->eA[impl][f], eA);
-						if (!(p->condDone && p->U1 / S > illCut))
-							refStat_Add(&g->eK[impl][f], eK);
-						refStat_Add(&g->eB[impl][f], eB);
-						if (!ill)
-							refStat_Add(&g->ratioA, eA / tolA);
-						refStat_Add(&g->ratioB, eB / tolB);
-					}
-					/* Theorem 1 against Theorem 2 on the same input. */
-					double d[3];
-					for (int i = 0; i < dim; ++i)
-						d[i] = xs[0][i] - xs[1][i];
-					double e12 = norm(d, dim) / S;
-					if (e12 > 2.0 * base && !p->condDone)
-						conditioning(&b1, &b2, plus, surface, u, unit, p);
-					double tol12 = 2.0 * (base + (p->condDone ? (p->U1 + p->U2) / S : 0.0));
-					/* the difference itself rounds by 2u S at most; inside K */
-					ENSURE_LE(e12, tol12, "Theorem 1 vs 2: %s %s %s point %d u=(%.17g, %.17g, %.17g)",
-						mkImpl_Name(impl), surface ? "surface" : "normal-param", plus ? "plus" : "contact",
-						j, u[0], u[1], u[2]);
-					if (isfinite(e12))
-						refStat_Add(&g->e12[impl], e12);
+					refJudge J = { g, &b1, &b2, dim, plus, surface, impl, S, base, unit, ucond, illCut };
+					judgePoint(&J, j, u, xs, ks, p);
 				}
 			}
 			for (int j = 0; j < n; ++j)
@@ -509,4 +527,39 @@ void refGroup_Print(const refGroup *g)
 		g->name, mkPrecision_Name(g->precision), g->floatio ? ", float arrays" : "", g->points, g->illConditioned, g->conditionAll ? "" : " found",
 		g->precision == MK_PRECISION_F32 ? 1e-7 : 1e-9, g->nonfinite,
 		g->ratioA.max, g->ratioB.max);
+}
+
+int refSum_Main(int argc, char **argv, const refSumTests *t, mkPrecision *tier, int *floatio)
+{
+	int which = argc > 1 ? atoi(argv[1]) : 0;
+	if (argc > 2) {
+		*floatio = strcmp(argv[2], "f32io") == 0;
+		int p = *floatio ? MK_PRECISION_F32 : mkPrecision_Parse(argv[2]);
+		ENSURE(p >= 0);
+		if (p < 0)
+			return refTest_Result(argv[0]);
+		*tier = (mkPrecision)p;
+	}
+	/* "all" as the third argument: evaluate the conditioning of every point
+	 * of group 4 too, for its statistics (twice the time; the test runs
+	 * without, its tolerances need it only where an error is large). */
+	int rangeAll = argc > 3 && strcmp(argv[3], "all") == 0;
+	if (which == 0 || which == 1)
+		t->validation();
+	static const double E[] = { 1e-3, 0.01, 0.5, 1.0, 1.5, 1.99, 2.0 - 1e-3 };
+	/* the ends of the valid exponent range, where the powers' exponents
+	 * reach 5e-7 and 2e6 */
+	static const double R[] = { 1e-6, 1e-5, 1e-4, 1.0, 2.0 - 1e-4, 2.0 - 1e-5, 2.0 - 1e-6 };
+	char name[64];
+	if (which == 0 || which == 2) {
+		snprintf(name, sizeof name, "%s extremes", t->name);
+		t->extremes(E, name, t->seed + 2, 1);
+	}
+	if (which == 0 || which == 4) {
+		snprintf(name, sizeof name, "%s eps-range", t->name);
+		t->extremes(R, name, t->seed + 4, rangeAll);
+	}
+	if (which == 0 || which == 3)
+		t->scaled();
+	return refTest_Result(t->name);
 }

@@ -2,7 +2,7 @@
  * every available kernel, form, parameterisation and set, and judges each
  * output point against the 256-bit MPFR reference (mpref.h).
  *
- * Three figures per point, all divided by the scale of the problem
+ * Three figures per point, all divided by the sum's size (mkSum2_Size)
  *   S = |t1| (+ |t2| for the plus set) + |M1|_F |a1| + |M2|_F |a2|
  * (|a| the Euclidean norm of the semi-axes, which bounds |f(u)|):
  *  eA = |x - x_ref| / S          distance to the exact point for the same input
@@ -57,6 +57,21 @@ typedef struct refGroup {
 void refCheck_Case(const refCase *c, refGroup *g);
 /* One summary line per kernel and form, and the Theorem 1 vs 2 line. */
 void refGroup_Print(const refGroup *g);
+
+/* The groups of ref_sum2 and ref_sum3 and their driver, refSum_Main: the
+ * command line "ref_sumN [group [tier [all]]]" sets *tier and *floatio, then
+ * the groups run (group 0: all): 1 the validation draws, 2 the extreme
+ * exponents (seed + 2), 4 the ends of the exponent range (seed + 4, its
+ * conditioning of every point only with "all"), 3 the scaled parameter
+ * vectors. Returns the test's exit status. */
+typedef struct refSumTests {
+	const char *name; /* "ref_sum2" */
+	uint64_t seed;
+	void (*validation)(void);
+	void (*extremes)(const double *E, const char *name, uint64_t seed, int all);
+	void (*scaled)(void);
+} refSumTests;
+int refSum_Main(int argc, char **argv, const refSumTests *t, mkPrecision *tier, int *floatio);
 
 /* The reference body of a core body. */
 refBody refBody_From2(mkBody2 b);

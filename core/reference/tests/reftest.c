@@ -39,3 +39,17 @@ double refStat_Mean(const refStat *s)
 {
 	return s->count ? s->sum / (double)s->count : 0.0;
 }
+
+void refRng_Unit(refRng *r, int dim, double *u)
+{
+	double n;
+	do {
+		n = 0.0;
+		for (int i = 0; i < dim; ++i) {
+			u[i] = refRng_Uniform(r, -1.0, 1.0);
+			n += u[i] * u[i];
+		}
+	} while (n < 1e-4 || n > 1.0);
+	for (int i = 0; i < dim; ++i)
+		u[i] /= sqrt(n);
+}

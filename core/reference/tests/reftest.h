@@ -55,6 +55,9 @@ typedef struct refRng { uint64_t state; } refRng;
 uint64_t refRng_Next(refRng *r);
 /* Uniform in [lo, hi). */
 double refRng_Uniform(refRng *r, double lo, double hi);
+/* A random unit vector of dimension dim (2 or 3), uniform in direction:
+ * drawn in the unit ball by rejection, then normalised. */
+void refRng_Unit(refRng *r, int dim, double *u);
 
 /* Running maximum and mean of nonnegative figures. */
 typedef struct refStat { double max, sum; long count; } refStat;

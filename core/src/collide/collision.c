@@ -35,7 +35,7 @@ mkVec3 mkBody3_SupportJacobian(mkBody3 b, mkVec3 n, mkMat3 *J)
 	return a.s;
 }
 
-double mkCollide3_Scale(mkBody3 b1, mkBody3 b2)
+double mkCollide3_PairSize(mkBody3 b1, mkBody3 b2)
 {
 	return mkScale(&b1, &b2);
 }

@@ -247,6 +247,37 @@ int mkSum3_TierHolds(mkBody3 b1, mkBody3 b2, const mkSumOptions *opt)
 	return mkKPlan3f_From(&f, &p);
 }
 
+/* ---- the sum's size ---------------------------------------------------------- */
+
+static double mkSum_Frob2(mkMat2 m)
+{
+	return sqrt(m.m[0][0] * m.m[0][0] + m.m[0][1] * m.m[0][1] + m.m[1][0] * m.m[1][0] + m.m[1][1] * m.m[1][1]);
+}
+
+static double mkSum_Frob3(mkMat3 m)
+{
+	double s = 0;
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) s += m.m[i][j] * m.m[i][j];
+	return sqrt(s);
+}
+
+double mkSum2_Size(mkBody2 b1, mkBody2 b2, mkSet set)
+{
+	double s = hypot(b1.t.x, b1.t.y) + mkSum_Frob2(b1.M) * hypot(b1.shape.a, b1.shape.b)
+		+ mkSum_Frob2(b2.M) * hypot(b2.shape.a, b2.shape.b);
+	if (set == MK_SET_PLUS) s += hypot(b2.t.x, b2.t.y);
+	return s;
+}
+
+double mkSum3_Size(mkBody3 b1, mkBody3 b2, mkSet set)
+{
+	double s = mkVec3_Length(b1.t) + mkSum_Frob3(b1.M) * mkVec3_Length(mkVec3_Make(b1.shape.a, b1.shape.b, b1.shape.c))
+		+ mkSum_Frob3(b2.M) * mkVec3_Length(mkVec3_Make(b2.shape.a, b2.shape.b, b2.shape.c));
+	if (set == MK_SET_PLUS) s += mkVec3_Length(b2.t);
+	return s;
+}
+
 /* ---- the published gradient formula (reference only) -------------------------- */
 
 /* Theorem 2 with Phi, eq. mink_sum_transform_2, as printed: B1's point and

@@ -26,9 +26,10 @@
  * the search predicts. Outside points are also bracketed rigorously by
  * [phi, |v|].
  *
- * Scale. S = |t1| (+ |t2| for plus) + |M1|_F |a1| + |M2|_F |a2|, |a| the
- * Euclidean norm of the semi-axes (it bounds |f(u)|): the scale every
- * relative error of the project is quoted in.
+ * Size. S = |t1| (+ |t2| for plus) + |M1|_F |a1| + |M2|_F |a2|, |a| the
+ * Euclidean norm of the semi-axes (it bounds |f(u)|): the sum's size, the
+ * unit every relative error of the sums is quoted in (the core's
+ * mkSum2_Size, computed here on its own).
  *
  * Nothing here calls the core; the inputs are the doubles the core receives. */
 #ifndef MINK_MPREF_MEASURE_H
@@ -37,8 +38,8 @@
 #include <stdint.h>
 #include <mink/mpref.h>
 
-/* The scale S of the pair (see above); plus selects the set. */
-double refSum_Scale(const refBody *b1, const refBody *b2, int plus);
+/* The sum's size S (see above); plus selects the set. */
+double refSum_Size(const refBody *b1, const refBody *b2, int plus);
 
 /* The result of one distance evaluation. */
 typedef struct refDistance {
@@ -61,7 +62,7 @@ int refSum_Distance(const refBody *b1, const refBody *b2, int plus,
 
 /* The score of one method's output on one pair. */
 typedef struct refScore {
-	double scale;     /* S */
+	double size;      /* S, the sum's size */
 	double errorAbs;  /* max over the finite points of |d(p)| */
 	double errorRel;  /* errorAbs / S */
 	double accuracy;  /* the largest refDistance.accuracy of the distances
