@@ -79,9 +79,8 @@ do for [fmt in formats] {
 			set title sprintf("%s, %dD", m, d) noenhanced
 			set xlabel (d == 2 ? "eps of body 1" : "eps1 of body 1")
 			set ylabel (d == 2 ? "eps of body 2" : "eps2 of body 1")
-			undefine CELLS_records
-			stats data using (pick(d, m) ? 1 : NaN) nooutput name "CELLS"
-			if (!exists("CELLS_records") || CELLS_records == 0) { set label 1 sprintf("no %dD rows\nfor this method", d) at 0, 0 center front }
+			stats data using (pick(d, m) ? 1 : 0) nooutput name "CELLS"
+			if (CELLS_sum == 0) { set label 1 sprintf("no %dD rows\nfor this method", d) at 0, 0 center front }
 			plot data using (pick(d, m) ? xof(d) : NaN):(yof(d)):(lerr(column("error_rel"))) \
 				with points pt 5 ps 2.2 palette, \
 				'' using (bad(d, m) ? xof(d) : NaN):(yof(d)) with points pt 2 ps 1.5 lc rgb "black"
