@@ -3,7 +3,7 @@
 #
 # Reads only the cobstacle driver's results: the timing rows <results> and
 # the Fig. 9 scene in the directory named like <results> without ".csv"
-# (fig9-obstacles.csv, fig9-robot.csv, fig9-slices.csv). Draws
+# (fig9-obstacles.csv.gz, fig9-robot.csv, fig9-slices.csv.gz). Draws
 #  (a) the obstacles in the workspace (black) with the robot (blue, enlarged
 #      5x in an inset-like corner so that its shape can be seen),
 #  (b) the C-obstacles of every obstacle in each drawn C-slice, stacked by
@@ -19,10 +19,11 @@
 
 if (!exists("results")) results = 'results/cobstacle.csv'
 if (!exists("outdir")) outdir = 'plots'
+load 'plots/gz.gp'
 geom = (strlen(results) > 4 && results[strlen(results)-3:] eq '.csv') ? results[1:strlen(results)-4] : results
-obstacles = geom . '/fig9-obstacles.csv'
+obstacles = gzdata(geom . '/fig9-obstacles.csv.gz')
 robotfile = geom . '/fig9-robot.csv'
-slices = geom . '/fig9-slices.csv'
+slices = gzdata(geom . '/fig9-slices.csv.gz')
 
 set datafile separator comma
 set datafile columnheaders

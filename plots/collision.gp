@@ -14,12 +14,14 @@
 # paper published times only (Table 3, no errors), so it has no point here.
 # Output: <outdir>/collision.pdf and <outdir>/collision.png.
 #
-#   gnuplot plots/collision.gp                       (results/collision.csv -> plots/)
-#   gnuplot -e "results='results/quick/collision.csv'; outdir='plots/quick'" plots/collision.gp
+#   gnuplot plots/collision.gp                       (results/collision.csv.gz -> plots/)
+#   gnuplot -e "results='results/quick/collision.csv.gz'; outdir='plots/quick'" plots/collision.gp
 #
 # Run from the top of the project.
 
-if (!exists("results")) results = 'results/collision.csv'
+if (!exists("results")) results = 'results/collision.csv.gz'
+load 'plots/gz.gp'
+data = gzdata(results)
 if (!exists("outdir")) outdir = 'plots'
 
 set datafile separator comma
@@ -29,7 +31,7 @@ set datafile columnheaders
 # (names must not contain "|").
 found = "|"
 add_method(s) = strstrt(found, "|" . s . "|") > 0 ? 0 : (found = found . s . "|", 1)
-stats results using (add_method(strcol("algorithm"))) nooutput
+stats data using (add_method(strcol("algorithm"))) nooutput
 nmeth = 0
 rest = found[2:]
 do for [i = 1:strlen(found)] {
@@ -55,7 +57,7 @@ kidx(s) = s eq "ellipsoids" ? 1 : s eq "superquadrics" ? 2 : s eq "near" ? 3 : s
 midx(s) = sum [i = 1:nmeth] (mnames[i] eq s ? i : 0)
 cells = "|"
 add_cell(c) = strstrt(cells, c) > 0 ? 0 : (cells = cells . c[2:], 1)
-stats results using (strcol("error") ne "" ? add_cell(sprintf("|%d:%d|", kidx(strcol("pair")), midx(strcol("algorithm")))) : NaN) nooutput
+stats data using (strcol("error") ne "" ? add_cell(sprintf("|%d:%d|", kidx(strcol("pair")), midx(strcol("algorithm")))) : NaN) nooutput
 
 # Per such cell: the median time (µs) and the median and largest error over
 # its rows with an error; one line "k m time median max" each into $P.
@@ -66,15 +68,15 @@ set print $P
 do for [k = 1:4] {
 	do for [m = 1:nmeth] {
 		if (strstrt(cells, sprintf("|%d:%d|", k, m)) > 0) {
-			stats results using (sel(k, m) ? 1e6 * column("seconds") : NaN) nooutput name "T"
-			stats results using (sel(k, m) ? floor_err(column("error")) : NaN) nooutput name "E"
+			stats data using (sel(k, m) ? 1e6 * column("seconds") : NaN) nooutput name "T"
+			stats data using (sel(k, m) ? floor_err(column("error")) : NaN) nooutput name "E"
 			print sprintf("%d %d %.6g %.6g %.6g", k, m, T_median, E_median, E_max)
 			nrows = nrows + 1
 		}
 	}
 }
 unset print
-stats results using (strcol("pair") eq "ellipsoids" && strcol("algorithm") eq mnames[1] ? 1 : NaN) nooutput
+stats data using (strcol("pair") eq "ellipsoids" && strcol("algorithm") eq mnames[1] ? 1 : NaN) nooutput
 ntrials = exists("STATS_records") ? STATS_records : 0
 
 set print "-"

@@ -11,11 +11,13 @@
 # marked with a black cross over their cell; a cell with no row is empty.
 # Writes <outdir>/extremes.pdf and extremes.png (`formats` changes that).
 #
-#   gnuplot -e "results='results/extremes.csv'; outdir='plots'" plots/extremes.gp
+#   gnuplot -e "results='results/extremes.csv.gz'; outdir='plots'" plots/extremes.gp
 #
 # Run from the top of the project. Reads only the CSV.
 
-if (!exists("results")) results = 'results/extremes.csv'
+if (!exists("results")) results = 'results/extremes.csv.gz'
+load 'plots/gz.gp'
+data = gzdata(results)
 if (!exists("outdir")) outdir = 'plots'
 if (!exists("formats")) formats = 'pdf png'
 if (!exists("heatset")) heatset = 'contact'
@@ -27,7 +29,7 @@ set datafile columnheaders
 # them in registry order): no list of names lives here.
 found = "|"
 add_method(s) = strstrt(found, "|" . s . "|") > 0 ? 0 : (found = found . s . "|", 1)
-stats results using (add_method(strcol("method"))) nooutput
+stats data using (add_method(strcol("method"))) nooutput
 nmeth = 0
 rest = found[2:]
 do for [i = 1:strlen(found)] {
@@ -50,7 +52,7 @@ bad(d, m) = pick(d, m) && (strcol("status") ne "ok")
 
 set xrange [-6.6:6.6]
 set yrange [-6.6:6.6]
-set xtics ("1e-6" -6, "1e-3" -3, "1" 0, "2-1e-3" 3, "2-1e-6" 6) font ",8"
+set xtics ("1e-6" -6, "1e-3" -3, "1" 0, "2-1e-3" 3, "2-1e-6" 6) font ",8" rotate by 35 right
 set ytics ("1e-6" -6, "1e-3" -3, "1" 0, "2-1e-3" 3, "2-1e-6" 6) font ",8"
 set cbrange [-17:0]
 set cblabel "log10 error_rel" noenhanced
@@ -70,16 +72,19 @@ do for [fmt in formats] {
 		}
 	}
 	set output outdir . '/extremes.' . fmt
-	set multiplot layout rows, 2 title sprintf("extremes: log10 error_rel on the exponent grid (%s set)", heatset) noenhanced
+	set multiplot layout rows, 2 title sprintf("extremes: log10 error_rel on the exponent grid (%s set); x: a cell whose status is not ok", heatset) noenhanced
 	do for [i = 1:rows] {
 		m = nmeth > 0 ? mnames[i] : "none"
 		do for [d = 2:3] {
 			set title sprintf("%s, %dD", m, d) noenhanced
-			set xlabel (d == 2 ? "eps of body 1" : "eps1")
-			set ylabel (d == 2 ? "eps of body 2" : "eps2")
-			plot results using (pick(d, m) ? xof(d) : NaN):(yof(d)):(lerr(column("error_rel"))) \
+			set xlabel (d == 2 ? "eps of body 1" : "eps1 of body 1")
+			set ylabel (d == 2 ? "eps of body 2" : "eps2 of body 1")
+			stats data using (pick(d, m) ? 1 : 0) nooutput name "CELLS"
+			if (CELLS_sum == 0) { set label 1 sprintf("no %dD rows\nfor this method", d) at 0, 0 center front }
+			plot data using (pick(d, m) ? xof(d) : NaN):(yof(d)):(lerr(column("error_rel"))) \
 				with points pt 5 ps 2.2 palette, \
 				'' using (bad(d, m) ? xof(d) : NaN):(yof(d)) with points pt 2 ps 1.5 lc rgb "black"
+			unset label 1
 		}
 	}
 	unset multiplot

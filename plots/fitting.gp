@@ -1,7 +1,7 @@
 # fitting.gp - the fitting errors of paper Sec. 6.2, from the raw rows of
-# results/fitting.csv (written by the `fitting` driver); nothing is run.
-#   gnuplot plots/fitting.gp                      (results/fitting.csv -> plots/)
-#   gnuplot -e "results='results/quick/fitting.csv'; outdir='plots/quick'" plots/fitting.gp
+# results/fitting.csv.gz (written by the `fitting` driver); nothing is run.
+#   gnuplot plots/fitting.gp                      (results/fitting.csv.gz -> plots/)
+#   gnuplot -e "results='results/quick/fitting.csv.gz'; outdir='plots/quick'" plots/fitting.gp
 # Run from the top of the project.
 # Left: case 2, mean e_volume of the polyhedron against the number of grid
 # points, for both samplings, with the paper's three published means.
@@ -9,9 +9,10 @@
 # Error bars are one standard error of the mean (sample std / sqrt(trials)).
 # Writes <outdir>/fitting.pdf and <outdir>/fitting.png.
 
-if (!exists("results")) results = "results/fitting.csv"
+if (!exists("results")) results = "results/fitting.csv.gz"
 if (!exists("outdir")) outdir = "plots"
-datafile = results
+load 'plots/gz.gp'
+datafile = gzdata(results)
 outbase = outdir . "/fitting"
 
 set datafile separator comma

@@ -10,12 +10,14 @@
 # below), keyed by its name. Writes <outdir>/timing.pdf and timing.png
 # (`formats`, a space-separated choice of pdf, png and svg, changes that).
 #
-#   gnuplot plots/timing.gp                          (results/timing.csv -> plots/)
-#   gnuplot -e "results='results/quick/timing.csv'; outdir='plots/quick'" plots/timing.gp
+#   gnuplot plots/timing.gp                          (results/timing.csv.gz -> plots/)
+#   gnuplot -e "results='results/quick/timing.csv.gz'; outdir='plots/quick'" plots/timing.gp
 #
 # Run from the top of the project. Reads only the CSV.
 
-if (!exists("results")) results = 'results/timing.csv'
+if (!exists("results")) results = 'results/timing.csv.gz'
+load 'plots/gz.gp'
+data = gzdata(results)
 if (!exists("outdir")) outdir = 'plots'
 if (!exists("formats")) formats = 'pdf png'
 
@@ -33,7 +35,7 @@ set datafile columnheaders
 # cycle through ten.
 found = "|"
 add_method(s) = strstrt(found, "|" . s . "|") > 0 ? 0 : (found = found . s . "|", 1)
-stats results using (add_method(strcol("method"))) nooutput
+stats data using (add_method(strcol("method"))) nooutput
 nmeth = 0
 rest = found[2:]
 do for [i = 1:strlen(found)] {
@@ -71,11 +73,11 @@ rowkey = 'key(column("dim"), cidx(strcol("case")), midx(strcol("method")), colum
 set format x "%.15g"
 set format y "%.15e"
 set table $M
-plot results using (@rowkey):(column("seconds")) smooth unique
+plot data using (@rowkey):(column("seconds")) smooth unique
 set table $S
-plot results using (@rowkey):(column("seconds") ** 2) smooth unique
+plot data using (@rowkey):(column("seconds") ** 2) smooth unique
 set table $C
-plot results using (@rowkey):(column("trials_run") < column("trials_planned") ? 1 : 0) smooth unique
+plot data using (@rowkey):(column("trials_run") < column("trials_planned") ? 1 : 0) smooth unique
 unset table
 # $D below is plain whitespace-separated data without a header.
 set datafile nocolumnheaders

@@ -8,16 +8,17 @@
 # come from plots/tradeoff.awk; levels with a non-finite error are left out.
 # Writes <outdir>/tradeoff.pdf and tradeoff.png (`formats` changes that).
 #
-#   gnuplot plots/tradeoff.gp                       (results/tradeoff.csv -> plots/)
-#   gnuplot -e "results='results/quick/tradeoff.csv'; outdir='plots/quick'" plots/tradeoff.gp
+#   gnuplot plots/tradeoff.gp                       (results/tradeoff.csv.gz -> plots/)
+#   gnuplot -e "results='results/quick/tradeoff.csv.gz'; outdir='plots/quick'" plots/tradeoff.gp
 #
 # Run from the top of the project. Reads only the CSV.
 
-if (!exists("results")) results = 'results/tradeoff.csv'
+if (!exists("results")) results = 'results/tradeoff.csv.gz'
+load 'plots/gz.gp'
 if (!exists("outdir")) outdir = 'plots'
 if (!exists("formats")) formats = 'pdf png'
 
-awk(mode) = sprintf("awk -F, -v mode=%s -f plots/tradeoff.awk '%s'", mode, results)
+awk(mode) = sprintf("%s | awk -F, -v mode=%s -f plots/tradeoff.awk", gzcat(results), mode)
 names = system(awk("names"))
 nmeth = words(names)
 set print $P

@@ -650,7 +650,7 @@ static int mkFigure_Obstacles(mkRun *run, const mkFig9Scene *s, const mkCObstacl
 {
 	static const char *const cols[] = { "obstacle", "k", "x", "y" };
 	mkCsv csv;
-	if (mkRun_OpenSibling(run, "fig9-obstacles.csv", cols, MK_COUNT(cols), &csv) != 0)
+	if (mkRun_OpenSibling(run, "fig9-obstacles.csv.gz", cols, MK_COUNT(cols), &csv) != 0)
 		return -1;
 	for (long j = 0; j < s->nobs; ++j)
 		mkWriteOutline(&csv, s->obs[j], w, 1, j, 0, 0.0);
@@ -688,7 +688,7 @@ static int mkFigure_Slices(mkRun *run, const mkCObstacleOptions *o, const mkFig9
 	int n = (int)w->n;
 	mkVec2 origin = { 0.0, 0.0 };
 	mkSumOptions opt = mkCObstacle_SumOptions(o);
-	if (mkRun_OpenSibling(run, "fig9-slices.csv", cols, MK_COUNT(cols), &csv) != 0)
+	if (mkRun_OpenSibling(run, "fig9-slices.csv.gz", cols, MK_COUNT(cols), &csv) != 0)
 		return -1;
 	for (long i = 0; i < o->fig_slices; ++i) {
 		double heading;

@@ -152,10 +152,11 @@ void mkCObstacle_Describe(mkMeta *meta, const mkCObstacleOptions *o, long begin,
 /* Fig. 9: a robot and o->fig_obstacles obstacles drawn as in the 2D
  * experiment, from their own stream; four files beside the result, each
  * with its sidecar:
- *   fig9-scene.csv      one row per body (the robot first): its parameters
- *   fig9-obstacles.csv  each obstacle's outline in the workspace
- *   fig9-robot.csv      the robot's outline at each drawn heading
- *   fig9-slices.csv     every obstacle's C-obstacle at each drawn heading
+ *   fig9-scene.csv         one row per body (the robot first): its parameters
+ *   fig9-obstacles.csv.gz  each obstacle's outline in the workspace
+ *   fig9-robot.csv         the robot's outline at each drawn heading
+ *   fig9-slices.csv.gz     every obstacle's C-obstacle at each drawn heading
+ * (the two large ones gzip-compressed, mink_exp/outfile.h).
  * Outlines are closed (k = n repeats k = 0) and end in two blank lines,
  * gnuplot's separator of data blocks. Returns 0, or -1 after printing why. */
 int mkCObstacle_Figure9(mkRun *run, const mkCObstacleOptions *o, const mkCObstacleWork *w2);

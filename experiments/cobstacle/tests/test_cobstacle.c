@@ -137,13 +137,13 @@ static void checkFigure(const char *dir)
 	snprintf(path, sizeof path, "%s/fig9-scene.csv", dir);
 	mkTable_Load(&scene, path);
 	ENSURE(scene.present);
-	snprintf(path, sizeof path, "%s/fig9-obstacles.csv", dir);
+	snprintf(path, sizeof path, "%s/fig9-obstacles.csv.gz", dir);
 	mkTable_LoadBlocks(&obst, path, &blank);
 	ENSURE(obst.present);
 	snprintf(path, sizeof path, "%s/fig9-robot.csv", dir);
 	mkTable_LoadBlocks(&robot, path, &blank);
 	ENSURE(robot.present);
-	snprintf(path, sizeof path, "%s/fig9-slices.csv", dir);
+	snprintf(path, sizeof path, "%s/fig9-slices.csv.gz", dir);
 	mkTable_LoadBlocks(&slices, path, &blank);
 	ENSURE(slices.present);
 	if (scene.rows < 2 || slices.rows == 0)

@@ -217,8 +217,9 @@ int mkResult_Load(const char *dir, const char *file, mkTable *t, mkMeta *m, char
 	snprintf(path, pathlen, "%s/%s", dir, file);
 	mkTable_Load(t, path);
 	mkMeta_InitEmpty(m);
-	char side[MK_PATH_MAX], msg[512];
-	snprintf(side, sizeof side, "%s.meta", path);
+	char stored[MK_PATH_MAX], side[MK_PATH_MAX + 8], msg[512];
+	mkPath_Stored(path, stored, sizeof stored);
+	snprintf(side, sizeof side, "%s.meta", stored);
 	if (t->present && mkMeta_ReadFile(m, side, msg, sizeof msg) != 0)
 		fprintf(stderr, "%s\n", msg);
 	return t->present;

@@ -270,8 +270,11 @@ int mkRun_End(mkRun *run, int failed)
 void mkPath_Sibling(const char *out, const char *name, char *buf, size_t len)
 {
 	size_t n = strlen(out);
-	int cut = n > 4 && strcmp(out + n - 4, ".csv") == 0;
-	snprintf(buf, len, "%.*s/%s", (int)(cut ? n - 4 : n), out, name);
+	if (n > 7 && strcmp(out + n - 7, ".csv.gz") == 0)
+		n -= 7;
+	else if (n > 4 && strcmp(out + n - 4, ".csv") == 0)
+		n -= 4;
+	snprintf(buf, len, "%.*s/%s", (int)n, out, name);
 }
 
 int mkRun_OpenSibling(const mkRun *run, const char *name, const char *const *columns, int count, mkCsv *csv)

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
+#include <zlib.h>
 
 /* The registry. A slot is published by writing its path first and then
  * setting `used` behind a signal fence, so the handler never reads a half
@@ -100,10 +101,31 @@ static void mkMessage(char *msg, size_t msglen, const char *what, const char *pa
 		snprintf(msg, msglen, "%s %s: %s", what, path, strerror(err));
 }
 
+int mkPath_IsGz(const char *path)
+{
+	size_t n = strlen(path);
+	return n > 3 && strcmp(path + n - 3, ".gz") == 0;
+}
+
+/* A gz result's plain text: a scratch file beside it, unlinked at once so
+ * that nothing is left behind whatever ends the process. Returns its fd or
+ * -1. Called with the cleaning signals held. */
+static int mkScratch_Open(const char *path)
+{
+	char name[MK_PATH_MAX];
+	snprintf(name, sizeof name, "%s.tmp.XXXXXX", path);
+	int fd = mkstemp(name);
+	if (fd >= 0)
+		unlink(name);
+	return fd;
+}
+
 int mkOutFile_Open(mkOutFile *f, const char *path, char *msg, size_t msglen)
 {
 	f->fp = NULL;
 	f->slot = -1;
+	f->gz = mkPath_IsGz(path);
+	f->fd = -1;
 	f->path[0] = '\0';
 	f->temp[0] = '\0';
 	size_t len = strlen(path);
@@ -136,26 +158,32 @@ int mkOutFile_Open(mkOutFile *f, const char *path, char *msg, size_t msglen)
 			return -1;
 		}
 	}
+	int text = fd >= 0 && f->gz ? mkScratch_Open(path) : fd;
+	int text_err = errno;
 	sigprocmask(SIG_SETMASK, &old, NULL);
 	if (fd < 0) {
 		mkMessage(msg, msglen, "cannot create a temporary file beside", path, err);
 		return -1;
 	}
+	if (f->gz)
+		f->fd = fd;
 
 	/* mkstemp makes the file 0600; give it the mode fopen would. */
 	mode_t mask = umask(0);
 	umask(mask);
-	if (fchmod(fd, 0666 & ~mask) != 0) {
-		err = errno;
-		close(fd);
+	if (text < 0 || fchmod(fd, 0666 & ~mask) != 0) {
+		err = text < 0 ? text_err : errno;
+		if (text >= 0)
+			close(text); /* fd itself when not gz; else f->fd is closed below */
 		mkOutFile_Discard(f);
-		mkMessage(msg, msglen, "cannot set the mode of", f->temp, err);
+		mkMessage(msg, msglen, text < 0 ? "cannot create a scratch file beside" : "cannot set the mode of",
+			text < 0 ? path : f->temp, err);
 		return -1;
 	}
-	f->fp = fdopen(fd, "w");
+	f->fp = fdopen(text, f->gz ? "w+" : "w");
 	if (!f->fp) {
 		err = errno;
-		close(fd);
+		close(text);
 		mkOutFile_Discard(f);
 		mkMessage(msg, msglen, "cannot open", f->temp, err);
 		return -1;
@@ -168,6 +196,10 @@ void mkOutFile_Discard(mkOutFile *f)
 	if (f->fp) {
 		fclose(f->fp);
 		f->fp = NULL;
+	}
+	if (f->fd >= 0) {
+		close(f->fd);
+		f->fd = -1;
 	}
 	if (f->slot >= 0) {
 		unlink(f->temp);
@@ -198,6 +230,60 @@ static void mkSyncParent(const char *path)
 	}
 }
 
+/* Deflate the plain text `in` (from its start) into `out` as gzip: zlib's
+ * default header (no name, time 0), level MK_GZ_LEVEL. Returns 0, or -1
+ * (errno set, EIO when zlib failed). */
+static int mkGz_Deflate(FILE *in, FILE *out)
+{
+	unsigned char src[1 << 15], dst[1 << 15];
+	z_stream z;
+	memset(&z, 0, sizeof z);
+	if (fseek(in, 0, SEEK_SET) != 0)
+		return -1;
+	if (deflateInit2(&z, MK_GZ_LEVEL, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
+		errno = ENOMEM;
+		return -1;
+	}
+	int flush = Z_NO_FLUSH, ok = 1;
+	while (ok && flush != Z_FINISH) {
+		z.avail_in = (uInt)fread(src, 1, sizeof src, in);
+		z.next_in = src;
+		ok = !ferror(in);
+		flush = feof(in) ? Z_FINISH : Z_NO_FLUSH;
+		do {
+			z.avail_out = sizeof dst;
+			z.next_out = dst;
+			int rc = deflate(&z, flush);
+			size_t have = sizeof dst - z.avail_out;
+			ok = ok && rc != Z_STREAM_ERROR && fwrite(dst, 1, have, out) == have;
+		} while (ok && z.avail_out == 0);
+	}
+	deflateEnd(&z);
+	if (ok)
+		return 0;
+	if (errno == 0)
+		errno = EIO;
+	return -1;
+}
+
+/* A gz result: the plain text compressed into the temporary file, which
+ * then becomes f->fp (the scratch file is closed, and so gone). */
+static int mkOutFile_Compress(mkOutFile *f)
+{
+	if (ferror(f->fp) || fflush(f->fp) != 0)
+		return -1;
+	FILE *out = fdopen(f->fd, "w");
+	if (!out)
+		return -1;
+	f->fd = -1;
+	int bad = mkGz_Deflate(f->fp, out) != 0;
+	int err = errno;
+	fclose(f->fp);
+	f->fp = out;
+	errno = err;
+	return bad ? -1 : 0;
+}
+
 /* Flush, sync and close; on failure remove the temporary file. */
 static int mkOutFile_Finish(mkOutFile *f, char *msg, size_t msglen)
 {
@@ -206,7 +292,8 @@ static int mkOutFile_Finish(mkOutFile *f, char *msg, size_t msglen)
 			snprintf(msg, msglen, "commit of a result file that is not open");
 		return -1;
 	}
-	int bad = ferror(f->fp) || fflush(f->fp) != 0;
+	errno = 0;
+	int bad = (f->gz && mkOutFile_Compress(f) != 0) || ferror(f->fp) || fflush(f->fp) != 0;
 	int err = errno;
 	if (!bad && fsync(fileno(f->fp)) != 0) {
 		bad = 1;

@@ -5,7 +5,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
+#include <sys/stat.h>
+#include <zlib.h>
 
 /* Split buf (RFC 4180: fields may be quoted, "" is a quote) into fields in
  * place; *out_cells (allocated) receives them row by row and *out_cols the
@@ -75,18 +76,36 @@ static long mkCsvSplit(char *buf, char ***out_cells, int *out_cols)
 	return count;
 }
 
-/* The whole file into a NUL-terminated buffer (NULL when missing or out
- * of memory, the latter reported). */
+void mkPath_Stored(const char *path, char *buf, size_t len)
+{
+	struct stat st;
+	char gz[4096];
+	snprintf(gz, sizeof gz, "%s.gz", path);
+	int use_gz = stat(path, &st) != 0 && stat(gz, &st) == 0;
+	snprintf(buf, len, "%s", use_gz ? gz : path);
+}
+
+/* The whole file into a NUL-terminated buffer, gunzipped when it is gzip
+ * (zlib reads any other file as it is); NULL when missing, unreadable or
+ * out of memory (the last two reported). */
 static char *mkReadAll(const char *path)
 {
-	FILE *fp = fopen(path, "rb");
-	if (!fp)
+	char stored[4096];
+	mkPath_Stored(path, stored, sizeof stored);
+	gzFile in = gzopen(stored, "rb");
+	if (!in)
 		return NULL;
+	gzbuffer(in, 1 << 17);
 	size_t cap = 1 << 20, len = 0;
 	char *buf = malloc(cap + 1);
+	int bad = 0;
 	while (buf) {
-		size_t got = fread(buf + len, 1, cap - len, fp);
-		len += got;
+		int got = gzread(in, buf + len, (unsigned)(cap - len));
+		if (got < 0) {
+			bad = 1;
+			break;
+		}
+		len += (size_t)got;
 		if (len < cap)
 			break;
 		cap *= 2;
@@ -95,9 +114,15 @@ static char *mkReadAll(const char *path)
 			free(buf);
 		buf = grown;
 	}
-	fclose(fp);
-	if (!buf) {
-		fprintf(stderr, "%s: out of memory\n", path);
+	int errnum = 0;
+	const char *why = bad ? gzerror(in, &errnum) : NULL;
+	if (bad)
+		fprintf(stderr, "%s: %s\n", stored, why ? why : "read error");
+	gzclose(in);
+	if (!buf || bad) {
+		if (!buf)
+			fprintf(stderr, "%s: out of memory\n", stored);
+		free(buf);
 		return NULL;
 	}
 	buf[len] = '\0';

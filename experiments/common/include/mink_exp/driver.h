@@ -172,8 +172,8 @@ void mkRun_Fail(const mkRun *run, const char *fmt, ...);
 int mkRun_End(mkRun *run, int failed);
 
 /* The path of a further file of a driver that writes more than one:
- * "<out without .csv>/<name>" (results/demos.csv, "fig3.csv" ->
- * results/demos/fig3.csv). */
+ * "<out without .csv or .csv.gz>/<name>" (results/demos.csv, "fig3.csv" ->
+ * results/demos/fig3.csv; name it "*.csv.gz" to store it compressed). */
 void mkPath_Sibling(const char *out, const char *name, char *buf, size_t len);
 /* Open such a file as CSV (its folder made first). Returns 0, or -1 after
  * printing "<driver>: <why>". */

@@ -4,9 +4,17 @@
  * RFC 4180 as mink_exp/csv.h writes it: fields may be quoted ("" is a
  * quote), rows end in "\n" or "\r\n", every row has the header's number of
  * fields. Blank lines (gnuplot's block separators in the geometry files)
- * are not rows: such files are read with mkTable_LoadBlocks. */
+ * are not rows: such files are read with mkTable_LoadBlocks.
+ *
+ * Compressed results. A result "x.csv" may be stored as "x.csv.gz" (large
+ * raw results are; Makefile.paper names them): the loaders read gzip files
+ * transparently, and a path "x.csv" that does not exist is read from
+ * "x.csv.gz" when that does (mkPath_Stored), so a caller names a result by
+ * its CSV name whichever way it is stored. */
 #ifndef MINK_EXP_TABLE_H
 #define MINK_EXP_TABLE_H
+
+#include <stddef.h>
 
 /* cells[r * cols + c] point into buf (unquoted, NUL-terminated); row 0 of
  * the file is the header (names). */
@@ -18,6 +26,11 @@ typedef struct mkTable {
 	char *buf;
 	int present;      /* 0: missing or malformed (then reported on stderr) */
 } mkTable;
+
+/* The file that stores the result `path` into buf: path itself when it
+ * exists, else path".gz" when that exists, else path. Its sidecar is
+ * "<that file>.meta". */
+void mkPath_Stored(const char *path, char *buf, size_t len);
 
 /* Load path into t. A missing file leaves t->present = 0 silently; a
  * malformed one is reported on stderr and treated as missing. */
