@@ -20,7 +20,7 @@ function(mk_shard_test name exe args shards)
   add_test(NAME ${name}
     COMMAND ${CMAKE_COMMAND} -DEXE=${exe} -DWORK=${CMAKE_CURRENT_BINARY_DIR}/${name}.work
       "-DARGS=${args}" -DSHARDS=${shards} "-DDROP=${drop}" -P ${MINK_EXP_TESTING_DIR}/shard_concat.cmake)
-  set_tests_properties(${name} PROPERTIES TIMEOUT 120)
+  set_tests_properties(${name} PROPERTIES TIMEOUT ${MINK_T120})
 endfunction()
 
 # mk_expect_usage_errors(TARGET NAME ARGS REGEX [NAME ARGS REGEX ...]): one

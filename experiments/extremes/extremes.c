@@ -284,6 +284,7 @@ static void *mkExtremes_Worker(void *arg)
 		pthread_cond_broadcast(&p->ready);
 	}
 	pthread_mutex_unlock(&p->lock);
+	refThread_Release();
 	return NULL;
 }
 

@@ -794,3 +794,8 @@ void refSum_SupportValue(const refBody *b1, const refBody *b2, int plus,
 	mpfr_clear(t);
 	refVec_Clear(&d);
 }
+
+void refThread_Release(void)
+{
+	mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
+}

@@ -116,4 +116,11 @@ void refSum_Point(const refBody *b1, const refBody *b2, int plus, int surface,
 void refSum_SupportValue(const refBody *b1, const refBody *b2, int plus,
 	const refVec *n, mpfr_t h);
 
+/* ---- threads ----------------------------------------------------------- */
+/* Frees the calling thread's MPFR caches (the constants such as pi and
+ * log 2 that MPFR keeps per thread once computed). A thread that used the
+ * reference calls it before it returns: the caches live in thread-local
+ * storage, so nothing else can free them once the thread has ended. */
+void refThread_Release(void);
+
 #endif
