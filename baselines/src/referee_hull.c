@@ -10,6 +10,7 @@
 
 #include <mink/baselines.h>
 #include <mink/referee.h>
+#include <mink/registry.h>
 
 #include "referee_cgal.h"
 
