@@ -83,20 +83,18 @@ static void faces_path(const char *out, char *buf, size_t len)
 typedef struct ObstacleSum {
 	long points;
 	double error, model_error, seconds;
-	char model[128];
 } ObstacleSum;
 
-/* The run: the scene, its options and the open output files. */
+/* The run: the scene, its options, the prepared scene and the open output files. */
 typedef struct SceneRun {
 	const char *file, *out, *report;
-	double tol;
-	int outer;
 	mkScene scene;
 	mkCSpaceOptions o;
+	mkCSpace *cs;
 	mkOutFile f[3];   /* points, faces (3D), report */
 	int open[3];
 	ObstacleSum *sum;
-	int short_of_tol;
+	long short_of_tol;
 } SceneRun;
 
 /* Parse the scene file and, for 3D, its rotations file (relative to the
@@ -128,20 +126,16 @@ static int load_scene(SceneRun *s)
 	return 0;
 }
 
-/* Check the models (a tolerance too small for a box) on no orientation,
- * before any file exists, and take their names for the report. */
-static int check_models(SceneRun *s)
+/* Prepare the scene (its models: a tolerance too small for a box fails
+ * here), before any file exists. */
+static int prepare(SceneRun *s)
 {
 	char msg[2048];
-	mkCSpaceResult res;
-	if (mkCSpace_Run(&s->scene, &s->o, 0, 0, &res, msg, sizeof msg) != MK_OK) {
+	if (mkCSpace_Create(&s->scene, &s->o, &s->cs, msg, sizeof msg) != MK_OK) {
 		fprintf(stderr, "mink scene: %s: %s\n", s->file, msg);
 		return 2;
 	}
 	s->sum = calloc((size_t)s->scene.obstacle_count + 1, sizeof *s->sum);
-	for (int i = 0; s->sum && i < s->scene.obstacle_count; ++i)
-		snprintf(s->sum[i].model, sizeof s->sum[i].model, "%s", res.model_name[i]);
-	mkCSpaceResult_Free(&res);
 	if (!s->sum) { fprintf(stderr, "mink scene: out of memory\n"); return 1; }
 	return 0;
 }
@@ -166,72 +160,43 @@ static int open_outputs(SceneRun *s)
 	return 0;
 }
 
-/* The rows of one computed chunk of orientations starting at c0. */
-static void write_chunk(SceneRun *s, const mkCSpaceResult *res, long c0)
+/* The rows of one computed chunk. */
+static void write_chunk(SceneRun *s, const mkCSpaceResult *res)
 {
 	static const char *const kinds[] = {"inner", "outer"};
 	int nob = s->scene.obstacle_count;
 	FILE *fo = s->f[0].fp, *ff = s->open[1] ? s->f[1].fp : NULL;
-	for (int orel = 0; orel < res->orientations; ++orel)
+	for (int ori = res->orientation_begin; ori < res->orientation_begin + res->orientations; ++ori)
 		for (int i = 0; i < nob; ++i)
 			for (int k = 0; k < res->bounds; ++k) {
-				long b = ((long)orel * nob + i) * res->bounds + k, ori = c0 + orel;
-				for (int j = 0; j < res->count[b]; ++j) {
-					long q = res->first[b] + j;
+				mkCSpaceBoundary b = mkCSpaceResult_Boundary(res, ori, i, (mkBound)k);
+				for (int j = 0; j < b.count; ++j) {
+					long q = (long)j * b.stride;
 					if (s->scene.dim == 2)
-						fprintf(fo, "%d,%ld,%s,%d,%.17g,%.17g\n", i, ori, kinds[k], j, res->x[q], res->y[q]);
+						fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g\n", i, ori, kinds[k], j, b.x[q], b.y[q]);
 					else
-						fprintf(fo, "%d,%ld,%s,%d,%.17g,%.17g,%.17g\n", i, ori, kinds[k], j, res->x[q], res->y[q],
-							res->z[q]);
+						fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g,%.17g\n", i, ori, kinds[k], j, b.x[q], b.y[q], b.z[q]);
 				}
-				for (long f = ff ? res->face_first[b] : 0; ff && f < res->face_first[b + 1]; ++f)
-					fprintf(ff, "%d,%ld,%s,%ld,%d,%d,%d\n", i, ori, kinds[k], f - res->face_first[b],
-						res->faces[3 * f], res->faces[3 * f + 1], res->faces[3 * f + 2]);
+				for (int f = 0; ff && f < b.face_count; ++f)
+					fprintf(ff, "%d,%d,%s,%d,%d,%d,%d\n", i, ori, kinds[k], f, b.faces[3 * f], b.faces[3 * f + 1],
+						b.faces[3 * f + 2]);
 				ObstacleSum *sum = &s->sum[i];
-				sum->points += res->count[b];
-				sum->error = fmax(sum->error, res->error[b]);
-				sum->model_error = fmax(sum->model_error, res->model_error[b]);
-				sum->seconds += res->seconds[b];
-				if (!(res->error[b] <= s->tol))
-					++s->short_of_tol;
+				sum->points += b.count;
+				sum->error = fmax(sum->error, b.error);
+				sum->model_error = fmax(sum->model_error, b.model_error);
+				sum->seconds += b.seconds;
 			}
-}
-
-/* The robot's model(s) as text for the report. */
-static void robot_model(const SceneRun *s, int k, char *buf, size_t len)
-{
-	char msg[512];
-	double e = 0.0;
-	const mkSceneBody *robot = &s->scene.robot;
-	if (robot->kind == MK_SCENE_SMOOTH) {
-		snprintf(buf, len, "%s", mkSceneBody_KindName(robot));
-	} else if (s->scene.dim == 2) {
-		mkBody2 m;
-		mkSceneBody2_Model(robot, 0.25 * s->tol, (mkBound)k, &m, &e, msg, sizeof msg);
-		snprintf(buf, len, "%s eps=%.6g", mkShape2_IsEllipse(m.shape) ? "ellipse" : "superellipse", m.shape.eps);
-	} else {
-		mkBody3 m;
-		mkSceneBody3_Model(robot, 0.25 * s->tol, (mkBound)k, &m, &e, msg, sizeof msg);
-		snprintf(buf, len, "%s eps1=%.6g eps2=%.6g", mkShape3_IsEllipsoid(m.shape) ? "ellipsoid" : "superquadric",
-			m.shape.eps1, m.shape.eps2);
-	}
+	s->short_of_tol += mkCSpaceResult_OverTolerance(res);
 }
 
 static void write_report(const SceneRun *s)
 {
 	FILE *fr = s->f[2].fp;
-	char rm[2][96], both[256];
-	for (int k = 0; k < 1 + s->outer; ++k)
-		robot_model(s, k, rm[k], sizeof rm[k]);
 	fprintf(fr, "obstacle,declared,model,model_error,points,certified_error,seconds\n");
-	if (s->outer && s->scene.robot.kind != MK_SCENE_SMOOTH)
-		snprintf(both, sizeof both, "inner %s; outer %s", rm[0], rm[1]);
-	else
-		snprintf(both, sizeof both, "%s", rm[0]);
-	fprintf(fr, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&s->scene.robot), both);
+	fprintf(fr, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&s->scene.robot), mkCSpace_ModelName(s->cs, -1));
 	for (int i = 0; i < s->scene.obstacle_count; ++i)
 		fprintf(fr, "%d,%s,\"%s\",%.6g,%ld,%.6g,%.6f\n", i, mkSceneBody_KindName(&s->scene.obstacles[i]),
-			s->sum[i].model, s->sum[i].model_error, s->sum[i].points, s->sum[i].error, s->sum[i].seconds);
+			mkCSpace_ModelName(s->cs, i), s->sum[i].model_error, s->sum[i].points, s->sum[i].error, s->sum[i].seconds);
 }
 
 /* Compute the orientations [begin, end) in chunks, so that memory stays
@@ -248,11 +213,11 @@ static int compute(SceneRun *s, long begin, long end)
 	for (long c0 = begin; c0 < end; c0 += chunk) {
 		long c1 = c0 + chunk < end ? c0 + chunk : end;
 		mkCSpaceResult res;
-		if (mkCSpace_Run(&s->scene, &s->o, (int)c0, (int)c1, &res, msg, sizeof msg) != MK_OK) {
+		if (mkCSpace_Run(s->cs, (int)c0, (int)c1, &res, msg, sizeof msg) != MK_OK) {
 			fprintf(stderr, "mink scene: %s\n", msg);
 			return 1;
 		}
-		write_chunk(s, &res, c0);
+		write_chunk(s, &res);
 		mkCSpaceResult_Free(&res);
 	}
 	if (s->open[2])
@@ -275,6 +240,8 @@ int mkCmd_Scene(int argc, char **argv)
 {
 	SceneRun s;
 	memset(&s, 0, sizeof s);
+	s.o = mkCSpaceOptions_Default();
+	s.o.interleaved = 1; /* the rows' order */
 	for (int k = 0; k < 3; ++k)
 		s.f[k].slot = -1;
 	long threads = 1;
@@ -284,13 +251,13 @@ int mkCmd_Scene(int argc, char **argv)
 	int first = argc > 1 && strncmp(argv[1], "--", 2) != 0 && strcmp(argv[1], "-h") != 0;
 	s.file = first ? argv[1] : NULL;
 	mkFlag flags[] = {
-		MK_FLAG_DOUBLE("--tol", "T", "the tolerance, in the scene's length unit (required)", &s.tol, 1e-12, 1e12),
+		MK_FLAG_DOUBLE("--tol", "T", "the tolerance, in the scene's length unit (required)", &s.o.tol, 1e-12, 1e12),
 		MK_FLAG_PATH("--out", "PATH", "CSV obstacle,orientation,kind,k,x,y[,z] (kind inner or outer; 2D\n"
 			"counter-clockwise); 3D faces go to PATH with .csv replaced by .faces.csv:\n"
 			"obstacle,orientation,kind,f,i,j,k. Written atomically (required)", &s.out),
 		MK_FLAG_PATH("--report", "PATH", "CSV per obstacle: model, model error, points, certified error,\n"
 			"seconds (and a robot row)", &s.report),
-		MK_FLAG_SWITCH("--outer", "also the outer boundaries", &s.outer),
+		MK_FLAG_SWITCH("--outer", "also the outer boundaries", &s.o.outer),
 		MK_FLAG_LONG("--threads", "K", "worker threads (default 1); the output does not depend on K", &threads, 1,
 			THREADS_MAX),
 		MK_FLAG_TEXT("--shard", "I/N", "only block I (0-based) of N of the orientations; the shards'\n"
@@ -305,28 +272,26 @@ int mkCmd_Scene(int argc, char **argv)
 		return rc;
 	rc = load_scene(&s);
 	if (rc == 0) {
-		s.o = mkCSpaceOptions_Default();
-		s.o.tol = s.tol;
-		s.o.outer = s.outer;
 		s.o.threads = (int)threads;
 		s.o.impl = (mkImpl)impl;
 		long begin, end;
 		mkShard_Range(shard, s.scene.orientation_count, &begin, &end);
-		rc = check_models(&s);
+		rc = prepare(&s);
 		if (rc == 0)
 			rc = open_outputs(&s);
 		if (rc == 0)
 			rc = compute(&s, begin, end);
 	}
 	if (rc == 0 && s.short_of_tol) {
-		fprintf(stderr, "mink scene: warning: %d boundaries are not certified within --tol %g (point cap or "
-			"normals closer than 1e-12 rad): see their certified_error in the report\n", s.short_of_tol, s.tol);
+		fprintf(stderr, "mink scene: warning: %ld boundaries are not certified within --tol %g (point cap or "
+			"normals closer than 1e-12 rad): see their certified_error in the report\n", s.short_of_tol, s.o.tol);
 		rc = 1;
 	}
 	for (int k = 0; k < 3; ++k)
 		if (s.open[k])
 			mkOutFile_Discard(&s.f[k]);
 	free(s.sum);
+	mkCSpace_Destroy(s.cs);
 	mkScene_Free(&s.scene);
 	return rc;
 }
