@@ -187,7 +187,7 @@ MK_API mkResult mkCSpace2_Certify(mkBody2 b1, mkBody2 b2, mkBound bound, const d
 	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
 /* Certify given normals in 3D: n normals (any nonzero vectors) and ntri
  * triangles of them (3 indices each, counter-clockwise from outside) that
- * partition the sphere; *error is Proof 3's bound for the convex hull of
+ * partition the sphere; *error is Proof 4's bound for the convex hull of
  * their points (inner) and for the intersection of their tangent
  * half-spaces (outer), or +inf when some triangle is not positively
  * oriented or the triangles' areas do not sum to 4 pi (not a partition).

@@ -265,7 +265,7 @@ mkResult mkCSpace3_Certify(mkBody3 b1, mkBody3 b2, const double *nx, const doubl
 		w.n[0][k] = u.x; w.n[1][k] = u.y; w.n[2][k] = u.z;
 	}
 	if ((r = mkContact3_Points(b1, b2, impl, w.n[0], w.n[1], w.n[2], n, w.p[0], w.p[1], w.p[2])) != MK_OK) goto done;
-	/* Proof 3 needs the triangles to partition the sphere: every one
+	/* Proof 4 needs the triangles to partition the sphere: every one
 	 * positively oriented and their areas summing to 4 pi */
 	double area = 0.0, err = 0.0;
 	for (int t = 0; t < ntri; ++t) {

@@ -8,28 +8,33 @@
 #include <stdlib.h>
 #include <string.h>
 
-int mkGrow_Doubles(double **p, int *cap, int need)
+/* Grow *p to at least `need` elements of `elem` bytes (doubling from 64). */
+static int mkGrow_Elements(void **p, int *cap, int need, size_t elem)
 {
 	if (need <= *cap) return 1;
 	int nc = *cap > 0 ? *cap : 64;
 	while (nc < need) nc *= 2;
-	double *q = realloc(*p, (size_t)nc * sizeof **p);
+	void *q = realloc(*p, (size_t)nc * elem);
 	if (!q) return 0;
 	*p = q;
 	*cap = nc;
 	return 1;
 }
 
+int mkGrow_Doubles(double **p, int *cap, int need)
+{
+	void *q = *p;
+	int ok = mkGrow_Elements(&q, cap, need, sizeof **p);
+	*p = q;
+	return ok;
+}
+
 int mkGrow_Ints(int **p, int *cap, int need)
 {
-	if (need <= *cap) return 1;
-	int nc = *cap > 0 ? *cap : 64;
-	while (nc < need) nc *= 2;
-	int *q = realloc(*p, (size_t)nc * sizeof **p);
-	if (!q) return 0;
+	void *q = *p;
+	int ok = mkGrow_Elements(&q, cap, need, sizeof **p);
 	*p = q;
-	*cap = nc;
-	return 1;
+	return ok;
 }
 
 void mkCSpaceWork_Free(mkCSpaceWork *w)
