@@ -18,7 +18,7 @@
 #define SCENE_FILE_MAX (1L << 30)
 #define THREADS_MAX 256
 
-static void help(FILE *fp)
+static void mkSceneCmd_Help(FILE *fp)
 {
 	fprintf(fp,
 		"usage: mink scene FILE --tol T --out PATH [options]\n"
@@ -44,7 +44,7 @@ static void help(FILE *fp)
 		"is the body with map R M.\n\n");
 }
 
-static char *read_file(const char *path, long *len, char *msg, size_t msglen)
+static char *mkSceneCmd_ReadFile(const char *path, long *len, char *msg, size_t msglen)
 {
 	FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
 	if (!f) {
@@ -73,37 +73,37 @@ static char *read_file(const char *path, long *len, char *msg, size_t msglen)
 }
 
 /* PATH with .csv replaced by .faces.csv (or .faces.csv appended). */
-static void faces_path(const char *out, char *buf, size_t len)
+static void mkSceneCmd_FacesPath(const char *out, char *buf, size_t len)
 {
 	size_t n = strlen(out);
 	if (n > 4 && strcmp(out + n - 4, ".csv") == 0) snprintf(buf, len, "%.*s.faces.csv", (int)(n - 4), out);
 	else snprintf(buf, len, "%s.faces.csv", out);
 }
 
-typedef struct ObstacleSum {
+typedef struct mkSceneCmdSum {
 	long points;
 	double error, model_error, seconds;
-} ObstacleSum;
+} mkSceneCmdSum;
 
 /* The run: the scene, its options, the prepared scene and the open output files. */
-typedef struct SceneRun {
+typedef struct mkSceneCmd {
 	const char *file, *out, *report;
 	mkScene scene;
 	mkCSpaceOptions o;
 	mkCSpace *cs;
 	mkOutFile f[3];   /* points, faces (3D), report */
 	int open[3];
-	ObstacleSum *sum;
+	mkSceneCmdSum *sum;
 	long short_of_tol;
-} SceneRun;
+} mkSceneCmd;
 
 /* Parse the scene file and, for 3D, its rotations file (relative to the
  * scene's folder). Returns 0, or 2 after printing why. */
-static int load_scene(SceneRun *s)
+static int mkSceneCmd_Load(mkSceneCmd *s)
 {
 	char msg[2048];
 	long len = 0;
-	char *text = read_file(s->file, &len, msg, sizeof msg);
+	char *text = mkSceneCmd_ReadFile(s->file, &len, msg, sizeof msg);
 	if (!text) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
 	mkResult r = mkScene_Parse(text, &s->scene, msg, sizeof msg);
 	free(text);
@@ -116,7 +116,7 @@ static int load_scene(SceneRun *s)
 		snprintf(path, sizeof path, "%.*s/%s", (int)(slash - s->file), s->file, s->scene.rotations_file);
 	else
 		snprintf(path, sizeof path, "%s", s->scene.rotations_file);
-	char *rt = read_file(path, &len, msg, sizeof msg);
+	char *rt = mkSceneCmd_ReadFile(path, &len, msg, sizeof msg);
 	r = rt ? mkScene_SetRotations(&s->scene, rt, path, msg, sizeof msg) : MK_ERR_ARGUMENT;
 	free(rt);
 	if (r != MK_OK) {
@@ -128,7 +128,7 @@ static int load_scene(SceneRun *s)
 
 /* Prepare the scene (its models: a tolerance too small for a box fails
  * here), before any file exists. */
-static int prepare(SceneRun *s)
+static int mkSceneCmd_Prepare(mkSceneCmd *s)
 {
 	char msg[2048];
 	if (mkCSpace_Create(&s->scene, &s->o, &s->cs, msg, sizeof msg) != MK_OK) {
@@ -140,10 +140,10 @@ static int prepare(SceneRun *s)
 	return 0;
 }
 
-static int open_outputs(SceneRun *s)
+static int mkSceneCmd_OpenOutputs(mkSceneCmd *s)
 {
 	char msg[2048], fpath[MK_PATH_MAX];
-	faces_path(s->out, fpath, sizeof fpath);
+	mkSceneCmd_FacesPath(s->out, fpath, sizeof fpath);
 	const char *paths[3] = { s->out, s->scene.dim == 3 ? fpath : NULL, s->report };
 	for (int k = 0; k < 3; ++k) {
 		if (!paths[k])
@@ -161,7 +161,7 @@ static int open_outputs(SceneRun *s)
 }
 
 /* The rows of one computed chunk. */
-static void write_chunk(SceneRun *s, const mkCSpaceResult *res)
+static void mkSceneCmd_WriteChunk(mkSceneCmd *s, const mkCSpaceResult *res)
 {
 	static const char *const kinds[] = {"inner", "outer"};
 	int nob = s->scene.obstacle_count;
@@ -180,7 +180,7 @@ static void write_chunk(SceneRun *s, const mkCSpaceResult *res)
 				for (int f = 0; ff && f < b.face_count; ++f)
 					fprintf(ff, "%d,%d,%s,%d,%d,%d,%d\n", i, ori, kinds[k], f, b.faces[3 * f], b.faces[3 * f + 1],
 						b.faces[3 * f + 2]);
-				ObstacleSum *sum = &s->sum[i];
+				mkSceneCmdSum *sum = &s->sum[i];
 				sum->points += b.count;
 				sum->error = fmax(sum->error, b.error);
 				sum->model_error = fmax(sum->model_error, b.model_error);
@@ -189,7 +189,7 @@ static void write_chunk(SceneRun *s, const mkCSpaceResult *res)
 	s->short_of_tol += mkCSpaceResult_OverTolerance(res);
 }
 
-static void write_report(const SceneRun *s)
+static void mkSceneCmd_WriteReport(const mkSceneCmd *s)
 {
 	FILE *fr = s->f[2].fp;
 	fprintf(fr, "obstacle,declared,model,model_error,points,certified_error,seconds\n");
@@ -202,7 +202,7 @@ static void write_report(const SceneRun *s)
 /* Compute the orientations [begin, end) in chunks, so that memory stays
  * bounded (every boundary is computed alone: the chunking changes nothing
  * in the output), and write everything. Returns 0, or 1 after printing. */
-static int compute(SceneRun *s, long begin, long end)
+static int mkSceneCmd_Compute(mkSceneCmd *s, long begin, long end)
 {
 	char msg[2048];
 	int nob = s->scene.obstacle_count;
@@ -217,11 +217,11 @@ static int compute(SceneRun *s, long begin, long end)
 			fprintf(stderr, "mink scene: %s\n", msg);
 			return 1;
 		}
-		write_chunk(s, &res);
+		mkSceneCmd_WriteChunk(s, &res);
 		mkCSpaceResult_Free(&res);
 	}
 	if (s->open[2])
-		write_report(s);
+		mkSceneCmd_WriteReport(s);
 	mkOutFile *all[3];
 	int na = 0;
 	for (int k = 0; k < 3; ++k)
@@ -238,7 +238,7 @@ static int compute(SceneRun *s, long begin, long end)
 
 int mkCmd_Scene(int argc, char **argv)
 {
-	SceneRun s;
+	mkSceneCmd s;
 	memset(&s, 0, sizeof s);
 	s.o = mkCSpaceOptions_Default();
 	s.o.interleaved = 1; /* the rows' order */
@@ -264,23 +264,23 @@ int mkCmd_Scene(int argc, char **argv)
 			"rows concatenated in order (one header) equal the whole run's", &shard, mkShard_ParseFlag),
 		MK_FLAG_IMPL("--impl", "kernel (default auto)", &impl),
 	};
-	int rc = mkCli_Parse("scene", flags, MK_COUNT(flags), argc - first, argv + first, help);
+	int rc = mkCli_Parse("scene", flags, MK_COUNT(flags), argc - first, argv + first, mkSceneCmd_Help);
 	if (rc != MK_CLI_GO)
 		return rc;
 	if (!s.file) { fprintf(stderr, "mink scene: no scene FILE given (usage: mink scene FILE --tol T --out PATH)\n"); return 2; }
 	if ((rc = mkCli_Require("scene", &flags[0])) != MK_CLI_GO || (rc = mkCli_Require("scene", &flags[1])) != MK_CLI_GO)
 		return rc;
-	rc = load_scene(&s);
+	rc = mkSceneCmd_Load(&s);
 	if (rc == 0) {
 		s.o.threads = (int)threads;
 		s.o.impl = (mkImpl)impl;
 		long begin, end;
 		mkShard_Range(shard, s.scene.orientation_count, &begin, &end);
-		rc = prepare(&s);
+		rc = mkSceneCmd_Prepare(&s);
 		if (rc == 0)
-			rc = open_outputs(&s);
+			rc = mkSceneCmd_OpenOutputs(&s);
 		if (rc == 0)
-			rc = compute(&s, begin, end);
+			rc = mkSceneCmd_Compute(&s, begin, end);
 	}
 	if (rc == 0 && s.short_of_tol) {
 		fprintf(stderr, "mink scene: warning: %ld boundaries are not certified within --tol %g (point cap or "

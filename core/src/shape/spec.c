@@ -15,14 +15,14 @@
 
 #define SPEC_MAX_LEN 4096
 
-static const char *const kind_names[] = {"circle", "ellipse", "superellipse", "sphere", "ellipsoid", "superquadric"};
+static const char *const mkSpec_KindNames[] = {"circle", "ellipse", "superellipse", "sphere", "ellipsoid", "superquadric"};
 
 const char *mkKind_Name(mkKind k)
 {
-	return (int)k >= 0 && k <= MK_KIND_SUPERQUADRIC ? kind_names[k] : "?";
+	return (int)k >= 0 && k <= MK_KIND_SUPERQUADRIC ? mkSpec_KindNames[k] : "?";
 }
 
-static const char *const key_names[MK_SPEC_KEY_COUNT] = {"a", "b", "c", "eps", "eps1", "eps2", "size", "r", "h",
+static const char *const mkSpec_KeyNames[MK_SPEC_KEY_COUNT] = {"a", "b", "c", "eps", "eps1", "eps2", "size", "r", "h",
 	"rot", "quat", "shear", "M", "at"};
 
 unsigned mkSpecKeys_Pose(int dim)
@@ -31,7 +31,7 @@ unsigned mkSpecKeys_Pose(int dim)
 		: MK_SPEC_BIT(MK_SPEC_QUAT) | MK_SPEC_BIT(MK_SPEC_M) | MK_SPEC_BIT(MK_SPEC_AT);
 }
 
-static unsigned allowed_keys(mkKind k)
+static unsigned mkSpec_AllowedKeys(mkKind k)
 {
 	const unsigned a = MK_SPEC_BIT(MK_SPEC_A), b = MK_SPEC_BIT(MK_SPEC_B), c = MK_SPEC_BIT(MK_SPEC_C);
 	switch (k) {
@@ -45,7 +45,7 @@ static unsigned allowed_keys(mkKind k)
 	return 0;
 }
 
-static const unsigned shape_keys = MK_SPEC_BIT(MK_SPEC_A) | MK_SPEC_BIT(MK_SPEC_B) | MK_SPEC_BIT(MK_SPEC_C)
+static const unsigned mkSpec_ShapeKeys = MK_SPEC_BIT(MK_SPEC_A) | MK_SPEC_BIT(MK_SPEC_B) | MK_SPEC_BIT(MK_SPEC_C)
 	| MK_SPEC_BIT(MK_SPEC_EPS) | MK_SPEC_BIT(MK_SPEC_EPS1) | MK_SPEC_BIT(MK_SPEC_EPS2);
 
 void mkSpecKeys_List(unsigned mask, char *buf, size_t len)
@@ -54,12 +54,12 @@ void mkSpecKeys_List(unsigned mask, char *buf, size_t len)
 	for (int i = 0; i < MK_SPEC_KEY_COUNT; ++i) {
 		if (!(mask & 1u << i)) continue;
 		size_t n = strlen(buf);
-		snprintf(buf + n, len - n, "%s%s", n ? ", " : "", key_names[i]);
+		snprintf(buf + n, len - n, "%s%s", n ? ", " : "", mkSpec_KeyNames[i]);
 	}
 }
 
 /* Parse a comma-separated list of exactly `count` finite numbers. */
-static int parse_numbers(const char *s, size_t len, int count, double *out, int *got)
+static int mkSpec_ParseNumbers(const char *s, size_t len, int count, double *out, int *got)
 {
 	char buf[SPEC_MAX_LEN];
 	if (len >= sizeof buf) return 0;
@@ -82,7 +82,7 @@ static int parse_numbers(const char *s, size_t len, int count, double *out, int 
 }
 
 /* How many numbers key takes. */
-static int key_count(int key, int dim)
+static int mkSpecKeys_Count(int key, int dim)
 {
 	if (key == MK_SPEC_QUAT) return 4;
 	if (key == MK_SPEC_M) return dim * dim;
@@ -109,26 +109,26 @@ mkResult mkSpecKeys_Parse(const char *text, int dim, const char *what, const cha
 		size_t nl = (size_t)(eq - ts);
 		int key = -1;
 		for (int i = 0; i < MK_SPEC_KEY_COUNT; ++i)
-			if (strlen(key_names[i]) == nl && strncmp(key_names[i], ts, nl) == 0) key = i;
+			if (strlen(mkSpec_KeyNames[i]) == nl && strncmp(mkSpec_KeyNames[i], ts, nl) == 0) key = i;
 		if (key < 0 || !(allow & 1u << key)) {
 			mkSpecKeys_List(allow, keys, sizeof keys);
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
 				what, (int)(nl > 32 ? 32 : nl), ts, kind, keys);
 		}
 		if (v->seen & 1u << key)
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key_names[key]);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, mkSpec_KeyNames[key]);
 		v->seen |= 1u << key;
-		int want = key_count(key, dim);
+		int want = mkSpecKeys_Count(key, dim);
 		size_t vl = tl - nl - 1;
 		if (vl == 0)
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key_names[key]);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, mkSpec_KeyNames[key]);
 		int got = 0;
-		if (!parse_numbers(eq + 1, vl, want, v->val[key], &got)) {
+		if (!mkSpec_ParseNumbers(eq + 1, vl, want, v->val[key], &got)) {
 			if (got < 0)
-				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key_names[key],
+				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, mkSpec_KeyNames[key],
 					(int)(vl > 64 ? 64 : vl), eq + 1, want > 1 ? " list" : "");
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
-				key_names[key], want, want > 1 ? "s" : "", got);
+				mkSpec_KeyNames[key], want, want > 1 ? "s" : "", got);
 		}
 	}
 	return MK_OK;
@@ -186,7 +186,7 @@ mkResult mkSpecKeys_Pose3(const mkSpecValues *v, const char *what, mkMat3 *M, mk
 }
 
 /* The kind at the start of text (*rest: what follows it), or -1 with a message. */
-static int spec_kind(const char *text, int dim, const char *what, const char **rest, char *msg, size_t msglen)
+static int mkSpec_Kind(const char *text, int dim, const char *what, const char **rest, char *msg, size_t msglen)
 {
 	const char *p = text;
 	while (isspace((unsigned char)*p)) ++p;
@@ -199,14 +199,14 @@ static int spec_kind(const char *text, int dim, const char *what, const char **r
 			"circle, ellipse, superellipse (2D), sphere, ellipsoid, superquadric (3D)", what), -1;
 	int kind = -1;
 	for (int i = 0; i < 6; ++i)
-		if (strlen(kind_names[i]) == klen && strncmp(kind_names[i], ks, klen) == 0) kind = i;
+		if (strlen(mkSpec_KindNames[i]) == klen && strncmp(mkSpec_KindNames[i], ks, klen) == 0) kind = i;
 	if (kind < 0)
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: unknown kind '%.*s': must be one of circle, ellipse, "
 			"superellipse (2D), sphere, ellipsoid, superquadric (3D)", what, (int)(klen > 64 ? 64 : klen), ks), -1;
 	int kdim = kind <= MK_KIND_SUPERELLIPSE ? 2 : 3;
 	if (kdim != dim)
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind '%s' is %dD but the problem is %dD: use %s", what,
-			kind_names[kind], kdim, dim, dim == 2 ? "circle, ellipse or superellipse" : "sphere, ellipsoid or superquadric"), -1;
+			mkSpec_KindNames[kind], kdim, dim, dim == 2 ? "circle, ellipse or superellipse" : "sphere, ellipsoid or superquadric"), -1;
 	return kind;
 }
 
@@ -220,17 +220,17 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 	if (tlen > SPEC_MAX_LEN)
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, SPEC_MAX_LEN);
 	const char *p;
-	int kind = spec_kind(text, dim, what, &p, msg, msglen);
+	int kind = mkSpec_Kind(text, dim, what, &p, msg, msglen);
 	if (kind < 0) return MK_ERR_ARGUMENT;
-	unsigned allow = allowed_keys((mkKind)kind);
+	unsigned allow = mkSpec_AllowedKeys((mkKind)kind);
 	mkSpecValues v;
-	mkResult r = mkSpecKeys_Parse(p, dim, what, kind_names[kind], allow, &v, msg, msglen);
+	mkResult r = mkSpecKeys_Parse(p, dim, what, mkSpec_KindNames[kind], allow, &v, msg, msglen);
 	if (r != MK_OK) return r;
-	unsigned need = allow & shape_keys;
+	unsigned need = allow & mkSpec_ShapeKeys;
 	if ((need & v.seen) != need) {
 		char keys[128];
 		mkSpecKeys_List(need & ~v.seen, keys, sizeof keys);
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: %s needs %s", what, kind_names[kind], keys);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: %s needs %s", what, mkSpec_KindNames[kind], keys);
 	}
 	out->dim = dim;
 	out->kind = (mkKind)kind;
