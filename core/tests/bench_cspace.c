@@ -119,7 +119,12 @@ int main(int argc, char **argv)
 			o.threads = th;
 			mkCSpaceResult r;
 			double t0 = now_s(), c0 = cpu_s(), l0 = loadavg();
-			if (mkCSpace_Run(&s, &o, 0, nor, &r, msg, sizeof msg) != MK_OK) { fprintf(stderr, "%s\n", msg); return 1; }
+			mkCSpace *prep = NULL;
+			if (mkCSpace_Create(&s, &o, &prep, msg, sizeof msg) != MK_OK || mkCSpace_Run(prep, 0, nor, &r, msg, sizeof msg) != MK_OK) {
+				fprintf(stderr, "%s\n", msg);
+				return 1;
+			}
+			mkCSpace_Destroy(prep);
 			t[rep][th - 1] = now_s() - t0;
 			c[rep][th - 1] = cpu_s() - c0;
 			double cs = 0.0;

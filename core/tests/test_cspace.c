@@ -362,21 +362,36 @@ static void test_models(void)
 	ENSURE(strstr(msg, "too small") != NULL);
 }
 
+/* Prepare the scene, run orientations [begin, end), release the prepared scene. */
+static mkResult run_scene(const mkScene *s, const mkCSpaceOptions *o, int begin, int end, mkCSpaceResult *r,
+	char *msg, size_t msglen)
+{
+	mkCSpace *cs = NULL;
+	mkResult rc = mkCSpace_Create(s, o, &cs, msg, msglen);
+	if (rc == MK_OK) rc = mkCSpace_Run(cs, begin, end, r, msg, msglen);
+	mkCSpace_Destroy(cs);
+	return rc;
+}
+
+/* The boundaries of b, from its first orientation on, equal a's there (in
+ * either's layout). */
 static int results_equal(const mkCSpaceResult *a, const mkCSpaceResult *b)
 {
-	long nb = (long)a->obstacles * a->orientations * a->bounds;
-	if (nb != (long)b->obstacles * b->orientations * b->bounds) return 0;
-	if (memcmp(a->count, b->count, (size_t)nb * sizeof(int)) || memcmp(a->error, b->error, (size_t)nb * sizeof(double))
-		|| memcmp(a->checksum, b->checksum, (size_t)nb * sizeof(double)))
-		return 0;
-	long np = a->first ? a->first[nb] : 0;
-	if (np && (memcmp(a->x, b->x, (size_t)np * sizeof(double)) || memcmp(a->y, b->y, (size_t)np * sizeof(double))))
-		return 0;
-	if (a->dim == 3 && np) {
-		if (memcmp(a->z, b->z, (size_t)np * sizeof(double))) return 0;
-		long nf = a->face_first[nb];
-		if (nf != b->face_first[nb] || memcmp(a->faces, b->faces, (size_t)nf * 3 * sizeof(int))) return 0;
-	}
+	if (a->obstacles != b->obstacles || a->bounds != b->bounds || a->dim != b->dim) return 0;
+	for (int o = b->orientation_begin; o < b->orientation_begin + b->orientations; ++o)
+		for (int i = 0; i < a->obstacles; ++i)
+			for (int k = 0; k < a->bounds; ++k) {
+				mkCSpaceBoundary u = mkCSpaceResult_Boundary(a, o, i, (mkBound)k);
+				mkCSpaceBoundary v = mkCSpaceResult_Boundary(b, o, i, (mkBound)k);
+				if (u.count != v.count || memcmp(&u.error, &v.error, sizeof u.error)
+					|| memcmp(&u.checksum, &v.checksum, sizeof u.checksum) || u.face_count != v.face_count)
+					return 0;
+				for (long j = 0; j < u.count; ++j)
+					if (u.x[j * u.stride] != v.x[j * v.stride] || u.y[j * u.stride] != v.y[j * v.stride]
+						|| (a->dim == 3 && u.z[j * u.stride] != v.z[j * v.stride]))
+						return 0;
+				if (u.face_count && memcmp(u.faces, v.faces, (size_t)u.face_count * 3 * sizeof(int))) return 0;
+			}
 	return 1;
 }
 
@@ -391,9 +406,9 @@ static void test_scene2(void)
 		o.tol = tols[ti];
 		o.outer = 1;
 		mkCSpaceResult r1, r2;
-		ENSURE(mkCSpace_Run(&s, &o, 0, s.orientation_count, &r1, msg, sizeof msg) == MK_OK);
+		ENSURE(run_scene(&s, &o, 0, s.orientation_count, &r1, msg, sizeof msg) == MK_OK);
 		o.threads = 2;
-		ENSURE(mkCSpace_Run(&s, &o, 0, s.orientation_count, &r2, msg, sizeof msg) == MK_OK);
+		ENSURE(run_scene(&s, &o, 0, s.orientation_count, &r2, msg, sizeof msg) == MK_OK);
 		ENSURE(results_equal(&r1, &r2)); /* the thread count changes nothing */
 		ENSURE(mkCSpaceResult_MaxError(&r1) <= o.tol);
 		double worst = 0.0;
@@ -401,10 +416,9 @@ static void test_scene2(void)
 		for (int orel = 0; orel < r1.orientations; ++orel)
 			for (int i = 0; i < r1.obstacles; ++i)
 				for (int k = 0; k < 2; ++k) {
-					long b = ((long)orel * r1.obstacles + i) * 2 + k;
-					long f = r1.first[b];
-					points += r1.count[b];
-					double w = referee2(&s, i, orel, (mkBound)k, r1.x + f, r1.y + f, r1.count[b], o.tol, r1.error[b]);
+					mkCSpaceBoundary v = mkCSpaceResult_Boundary(&r1, orel, i, (mkBound)k);
+					points += v.count;
+					double w = referee2(&s, i, orel, (mkBound)k, v.x, v.y, v.count, o.tol, v.error);
 					worst = fmax(worst, w);
 				}
 		printf("2D scene, T = %g: %ld points in %d boundaries, certified max %.3g, referee's worst gap %.3g\n",
@@ -412,12 +426,23 @@ static void test_scene2(void)
 		/* orientations in two pieces give the same boundaries (what --shard relies on) */
 		mkCSpaceResult a, b;
 		o.threads = 1;
-		ENSURE(mkCSpace_Run(&s, &o, 0, 5, &a, msg, sizeof msg) == MK_OK);
-		ENSURE(mkCSpace_Run(&s, &o, 5, s.orientation_count, &b, msg, sizeof msg) == MK_OK);
-		long na = (long)a.obstacles * a.orientations * 2;
-		ENSURE(memcmp(a.count, r1.count, (size_t)na * sizeof(int)) == 0);
-		ENSURE(memcmp(b.count, r1.count + na, (size_t)(r1.obstacles * r1.orientations * 2 - na) * sizeof(int)) == 0);
-		ENSURE(memcmp(b.x, r1.x + a.first[na], (size_t)b.first[r1.obstacles * b.orientations * 2] * sizeof(double)) == 0);
+		ENSURE(run_scene(&s, &o, 0, 5, &a, msg, sizeof msg) == MK_OK);
+		ENSURE(run_scene(&s, &o, 5, s.orientation_count, &b, msg, sizeof msg) == MK_OK);
+		ENSURE(results_equal(&r1, &a));
+		ENSURE(results_equal(&r1, &b));
+		mkCSpaceResult_Free(&a);
+		mkCSpaceResult_Free(&b);
+		/* the interleaved layout holds the same points; one prepared scene runs any range */
+		o.interleaved = 1;
+		mkCSpace *cs = NULL;
+		ENSURE(mkCSpace_Create(&s, &o, &cs, msg, sizeof msg) == MK_OK);
+		ENSURE(mkCSpace_Run(cs, 0, s.orientation_count, &a, msg, sizeof msg) == MK_OK);
+		ENSURE(mkCSpace_Run(cs, 3, 7, &b, msg, sizeof msg) == MK_OK);
+		ENSURE(a.interleaved && mkCSpaceResult_Boundary(&a, 0, 0, MK_BOUND_INNER).stride == 2);
+		ENSURE(results_equal(&r1, &a));
+		ENSURE(results_equal(&r1, &b));
+		ENSURE(mkCSpaceResult_OverTolerance(&a) == 0);
+		mkCSpace_Destroy(cs);
 		mkCSpaceResult_Free(&a);
 		mkCSpaceResult_Free(&b);
 		mkCSpaceResult_Free(&r1);
@@ -454,7 +479,7 @@ static double cert_uniform(const void *ctx, int n)
 	const Pair *p = ctx;
 	double *x = NULL, *y = NULL, err = INFINITY;
 	int cap = 0, cnt = 0;
-	mkCObstacle2_Uniform(p->ob, p->rob, MK_BOUND_INNER, n, MK_IMPL_AUTO, &x, &y, &cap, &cnt, &err);
+	mkCSpace2_Uniform(p->ob, p->rob, MK_BOUND_INNER, n, MK_IMPL_AUTO, &x, &y, &cap, &cnt, &err);
 	free(x); free(y);
 	return err;
 }
@@ -477,7 +502,7 @@ static double cert_paper(const void *ctx, int n)
 	}
 	double *x = NULL, *y = NULL, err = INFINITY;
 	int cap = 0, cnt = 0;
-	mkCObstacle2_Certify(p->ob, p->rob, MK_BOUND_INNER, nx, ny, n, MK_IMPL_AUTO, &x, &y, &cap, &cnt, &err);
+	mkCSpace2_Certify(p->ob, p->rob, MK_BOUND_INNER, nx, ny, n, MK_IMPL_AUTO, &x, &y, &cap, &cnt, &err);
 	free(x); free(y); free(ux); free(uy); free(nx); free(ny);
 	return err;
 }
@@ -486,7 +511,7 @@ static double cert_paper(const void *ctx, int n)
  * boundary the smallest n of each sampling whose certified error is at most
  * the adaptive boundary's (all certified by the same bounds, the agreed
  * meaning of "equal certified error"). The uniform counts come from
- * mkCObstacle2_Uniform / mkCObstacle2_Certify, which certify fixed normals
+ * mkCSpace2_Uniform / mkCSpace2_Certify, which certify fixed normals
  * and share nothing with the adaptive walk but the per-arc certificate; the
  * adaptive boundaries' certified errors are checked against the referee
  * first (an understated error would make the uniform target too tight, an
@@ -500,15 +525,15 @@ static void test_points_factor2(void)
 	mkCSpaceOptions o = mkCSpaceOptions_Default();
 	o.tol = 0.01;
 	mkCSpaceResult ad;
-	ENSURE(mkCSpace_Run(&s, &o, 0, s.orientation_count, &ad, msg, sizeof msg) == MK_OK);
+	ENSURE(run_scene(&s, &o, 0, s.orientation_count, &ad, msg, sizeof msg) == MK_OK);
 	long pa = 0, pu = 0, pp = 0;
 	double worst = 0.0;
 	for (int orel = 0; orel < 3; ++orel) /* three headings keep the test fast */
 		for (int i = 0; i < ad.obstacles; ++i) {
 			long b = (long)orel * ad.obstacles + i;
 			pa += ad.count[b];
-			long f = ad.first[b];
-			worst = fmax(worst, referee2(&s, i, orel, MK_BOUND_INNER, ad.x + f, ad.y + f, ad.count[b], o.tol, ad.error[b]));
+			mkCSpaceBoundary v = mkCSpaceResult_Boundary(&ad, orel, i, MK_BOUND_INNER);
+			worst = fmax(worst, referee2(&s, i, orel, MK_BOUND_INNER, v.x, v.y, v.count, o.tol, v.error));
 			Pair pr;
 			double e1, e2;
 			mkSceneBody2_Model(&s.obstacles[i], 0.25 * o.tol, MK_BOUND_INNER, &pr.ob, &e1, msg, sizeof msg);
@@ -562,7 +587,7 @@ static double cert_paper3(const Pair3 *p, int n, int *points)
 		}
 #undef VID
 	double err = INFINITY;
-	mkCObstacle3_Certify(p->ob, p->rob, nx, ny, nz, nv, tri, nt, MK_IMPL_AUTO, &err);
+	mkCSpace3_Certify(p->ob, p->rob, nx, ny, nz, nv, tri, nt, MK_IMPL_AUTO, &err);
 	free(ux); free(uy); free(uz); free(nx); free(ny); free(nz); free(tri);
 	*points = nv;
 	return err;
@@ -577,9 +602,9 @@ static void test_scene3(void)
 	o.tol = 0.05;
 	o.outer = 1;
 	mkCSpaceResult r1, r2;
-	ENSURE(mkCSpace_Run(&s, &o, 0, s.orientation_count, &r1, msg, sizeof msg) == MK_OK);
+	ENSURE(run_scene(&s, &o, 0, s.orientation_count, &r1, msg, sizeof msg) == MK_OK);
 	o.threads = 2;
-	ENSURE(mkCSpace_Run(&s, &o, 0, s.orientation_count, &r2, msg, sizeof msg) == MK_OK);
+	ENSURE(run_scene(&s, &o, 0, s.orientation_count, &r2, msg, sizeof msg) == MK_OK);
 	ENSURE(results_equal(&r1, &r2));
 	ENSURE(mkCSpaceResult_MaxError(&r1) <= o.tol);
 	double worst[2] = {0.0, 0.0};
@@ -587,11 +612,10 @@ static void test_scene3(void)
 	for (int orel = 0; orel < r1.orientations; ++orel)
 		for (int i = 0; i < r1.obstacles; ++i)
 			for (int k = 0; k < 2; ++k) {
-				long b = ((long)orel * r1.obstacles + i) * 2 + k;
-				long f = r1.first[b], ff = r1.face_first[b];
-				points[k] += r1.count[b];
-				worst[k] = fmax(worst[k], referee3(&s, i, orel, (mkBound)k, r1.x + f, r1.y + f, r1.z + f, r1.count[b],
-					r1.faces + 3 * ff, (int)(r1.face_first[b + 1] - ff), o.tol, r1.error[b]));
+				mkCSpaceBoundary v = mkCSpaceResult_Boundary(&r1, orel, i, (mkBound)k);
+				points[k] += v.count;
+				worst[k] = fmax(worst[k], referee3(&s, i, orel, (mkBound)k, v.x, v.y, v.z, v.count, v.faces,
+					v.face_count, o.tol, v.error));
 			}
 	printf("3D scene, T = %g: inner %ld points, outer %ld vertices in %d boundaries each, certified max %.3g, "
 		"referee's worst gap inner %.3g, outer %.3g; largest fold of an inner surface %.3g\n", o.tol, points[0], points[1],
@@ -614,7 +638,7 @@ static void test_scene3(void)
 		double *x = NULL, *y = NULL, *z = NULL, err = INFINITY;
 		int cap = 0, n = 0;
 		for (int sp = 0; sp <= 8; ++sp) {
-			mkCObstacle3_Uniform(ob, rob, MK_BOUND_INNER, sp, MK_IMPL_AUTO, &x, &y, &z, &cap, NULL, NULL, &n, NULL, &err);
+			mkCSpace3_Uniform(ob, rob, MK_BOUND_INNER, sp, MK_IMPL_AUTO, &x, &y, &z, &cap, NULL, NULL, &n, NULL, &err);
 			if (err <= target) break;
 		}
 		pu += n;
@@ -648,25 +672,25 @@ static void test_circles(void)
 	mkBody2 c1 = mkBody2_Make((mkShape2){1, 1, 1}, mkMat2_Identity(), mkVec2_Make(0, 0));
 	double *x = NULL, *y = NULL, err;
 	int cap = 0, n = 0;
-	ENSURE(mkCObstacle2_Uniform(c3, c1, MK_BOUND_INNER, 16, MK_IMPL_SCALAR, &x, &y, &cap, &n, &err) == MK_OK);
+	ENSURE(mkCSpace2_Uniform(c3, c1, MK_BOUND_INNER, 16, MK_IMPL_SCALAR, &x, &y, &cap, &n, &err) == MK_OK);
 	ENSURE(n == 16);
 	ENSURE_NEAR(err, 4 * (1 - cos(MK_PI / 16)), 1e-10);
 	ENSURE_NEAR(hypot(x[5] - 1, y[5] - 2), 4.0, 1e-13);
-	ENSURE(mkCObstacle2_Uniform(c3, c1, MK_BOUND_OUTER, 16, MK_IMPL_SCALAR, &x, &y, &cap, &n, &err) == MK_OK);
+	ENSURE(mkCSpace2_Uniform(c3, c1, MK_BOUND_OUTER, 16, MK_IMPL_SCALAR, &x, &y, &cap, &n, &err) == MK_OK);
 	/* the certificate: distance to conv{x_i, x(m), x_j}, here the vertex's
 	 * distance to the chord from x_i to x(m): 4 (1/cos(a) - cos(a)) ... at
 	 * least the true 4 (1/cos(pi/16) - 1) */
 	ENSURE(err >= 4 * (1 / cos(MK_PI / 16) - 1) - 1e-12);
 	ENSURE_NEAR(hypot(x[0] - 1, y[0] - 2), 4.0 / cos(MK_PI / 16), 1e-12);
 	/* adaptive: the uniform count a circle needs, within a factor */
-	ENSURE(mkCObstacle2_Adaptive(c3, c1, MK_BOUND_INNER, 1e-4, 1000000, MK_IMPL_AUTO, &x, &y, &cap, &n, &err) == MK_OK);
+	ENSURE(mkCSpace2_Adaptive(c3, c1, MK_BOUND_INNER, 1e-4, 1000000, MK_IMPL_AUTO, &x, &y, &cap, &n, &err) == MK_OK);
 	ENSURE(err <= 1e-4);
 	double nmin = MK_PI / acos(1 - 1e-4 / 4); /* fewest uniform normals with gap <= 1e-4 */
 	ENSURE(n >= nmin && n <= 2.1 * nmin);
 	/* a point cap below what the tolerance needs: at most that many points,
 	 * and the reported error above tol and at least the polygon's true gap
 	 * (radius 4 minus the least distance from the centre to an edge) */
-	ENSURE(mkCObstacle2_Adaptive(c3, c1, MK_BOUND_INNER, 1e-4, 8, MK_IMPL_AUTO, &x, &y, &cap, &n, &err) == MK_OK);
+	ENSURE(mkCSpace2_Adaptive(c3, c1, MK_BOUND_INNER, 1e-4, 8, MK_IMPL_AUTO, &x, &y, &cap, &n, &err) == MK_OK);
 	ENSURE(n >= 4 && n <= 8);
 	double gap = 0.0;
 	for (int k = 0; k < n; ++k) {
@@ -685,10 +709,10 @@ static void test_circles(void)
 	int *faces = NULL, fcap = 0, nf = 0;
 	x = y = NULL;
 	cap = 0;
-	ENSURE(mkCObstacle3_Uniform(s3, s1, MK_BOUND_INNER, 2, MK_IMPL_AUTO, &x, &y, &z, &cap, &faces, &fcap, &n, &nf, &err) == MK_OK);
+	ENSURE(mkCSpace3_Uniform(s3, s1, MK_BOUND_INNER, 2, MK_IMPL_AUTO, &x, &y, &z, &cap, &faces, &fcap, &n, &nf, &err) == MK_OK);
 	ENSURE(n == 66 && nf == 128); /* 4^2 * 8 triangles, 4 * 16 + 2 vertices */
 	for (int k = 0; k < n; ++k) ENSURE_NEAR(sqrt(x[k] * x[k] + y[k] * y[k] + z[k] * z[k]), 4.0, 1e-13);
-	/* the same octahedron normals through mkCObstacle3_Certify: the same
+	/* the same octahedron normals through mkCSpace3_Certify: the same
 	 * bound; the triangles reversed are no partition: +inf */
 	double e2 = 0.0;
 	int tri[8 * 3], t = 0;
@@ -698,14 +722,14 @@ static void test_circles(void)
 		int neg = ((sg & 1) != 0) + ((sg & 2) != 0) + ((sg & 4) != 0);
 		tri[t++] = a; tri[t++] = neg % 2 ? c : b; tri[t++] = neg % 2 ? b : c;
 	}
-	ENSURE(mkCObstacle3_Uniform(s3, s1, MK_BOUND_INNER, 0, MK_IMPL_AUTO, &x, &y, &z, &cap, NULL, NULL, &n, NULL, &err) == MK_OK);
-	ENSURE(mkCObstacle3_Certify(s3, s1, ox, oy, oz, 6, tri, 8, MK_IMPL_AUTO, &e2) == MK_OK);
+	ENSURE(mkCSpace3_Uniform(s3, s1, MK_BOUND_INNER, 0, MK_IMPL_AUTO, &x, &y, &z, &cap, NULL, NULL, &n, NULL, &err) == MK_OK);
+	ENSURE(mkCSpace3_Certify(s3, s1, ox, oy, oz, 6, tri, 8, MK_IMPL_AUTO, &e2) == MK_OK);
 	ENSURE_NEAR(e2, err, 1e-15);
 	/* Proof 3 on an octant of the radius-4 sphere: c = 4 |e_i - e_j|^2 = 8,
 	 * d0 = 1/sqrt(3): 8 sqrt(3) / 3, plus the rounding allowance */
 	ENSURE_NEAR(err, 8.0 * sqrt(3.0) / 3.0, 1e-10);
 	for (int k = 0; k < 8; ++k) { int tmp = tri[3 * k + 1]; tri[3 * k + 1] = tri[3 * k + 2]; tri[3 * k + 2] = tmp; }
-	ENSURE(mkCObstacle3_Certify(s3, s1, ox, oy, oz, 6, tri, 8, MK_IMPL_AUTO, &e2) == MK_OK);
+	ENSURE(mkCSpace3_Certify(s3, s1, ox, oy, oz, 6, tri, 8, MK_IMPL_AUTO, &e2) == MK_OK);
 	ENSURE(isinf(e2));
 	free(x); free(y); free(z); free(faces);
 }

@@ -60,9 +60,12 @@ static void check(const mkScene *s, int side, mkImpl impl, mkForm form, int thre
 	o.store = 1;
 	o.form = form;
 	o.impl = impl;
+	o.interleaved = threads > 1; /* both layouts */
 	mkCSpaceResult r;
 	char msg[512];
-	ENSURE(mkCSpace_Run(s, &o, 0, s->orientation_count, &r, msg, sizeof msg) == MK_OK);
+	mkCSpace *cs = NULL;
+	ENSURE(mkCSpace_Create(s, &o, &cs, msg, sizeof msg) == MK_OK);
+	ENSURE(mkCSpace_Run(cs, 0, s->orientation_count, &r, msg, sizeof msg) == MK_OK);
 	double *u[3], *q[3];
 	for (int d = 0; d < 3; ++d) {
 		u[d] = malloc((size_t)n * sizeof(double));
@@ -89,10 +92,11 @@ static void check(const mkScene *s, int side, mkImpl impl, mkForm form, int thre
 					NULL, NULL, NULL) == MK_OK);
 			}
 			double sum = 0.0;
-			int same = r.count[b] == n;
+			mkCSpaceBoundary v = mkCSpaceResult_Boundary(&r, or, i, MK_BOUND_INNER);
+			int same = v.count == n;
 			for (int j = 0; j < n && same; ++j) {
-				long k = r.first[b] + j;
-				same = r.x[k] == q[0][j] && r.y[k] == q[1][j] && (dim == 2 || r.z[k] == q[2][j]);
+				long k = (long)j * v.stride;
+				same = v.x[k] == q[0][j] && v.y[k] == q[1][j] && (dim == 2 || v.z[k] == q[2][j]);
 				sum += q[0][j] + q[1][j] + (dim == 3 ? q[2][j] : 0.0);
 			}
 			bad += !same;
@@ -110,17 +114,20 @@ static void check(const mkScene *s, int side, mkImpl impl, mkForm form, int thre
 	for (int piece = 0; piece < 2; ++piece) {
 		mkCSpaceResult h;
 		int b0 = piece ? cut : 0, b1 = piece ? s->orientation_count : cut;
-		ENSURE(mkCSpace_Run(s, &o, b0, b1, &h, msg, sizeof msg) == MK_OK);
-		long off = (long)b0 * s->obstacle_count;
-		for (long b = 0; b < (long)(b1 - b0) * s->obstacle_count; ++b) {
-			diff += h.count[b] != r.count[off + b] || h.checksum[b] != r.checksum[off + b];
-			for (int j = 0; j < h.count[b] && j < r.count[off + b]; ++j) {
-				long k = h.first[b] + j, kr = r.first[off + b] + j;
-				diff += h.x[k] != r.x[kr] || h.y[k] != r.y[kr] || (dim == 3 && h.z[k] != r.z[kr]);
+		ENSURE(mkCSpace_Run(cs, b0, b1, &h, msg, sizeof msg) == MK_OK);
+		for (int or = b0; or < b1; ++or)
+			for (int i = 0; i < s->obstacle_count; ++i) {
+				mkCSpaceBoundary vh = mkCSpaceResult_Boundary(&h, or, i, MK_BOUND_INNER);
+				mkCSpaceBoundary vr = mkCSpaceResult_Boundary(&r, or, i, MK_BOUND_INNER);
+				diff += vh.count != vr.count || vh.checksum != vr.checksum;
+				for (long j = 0; j < vh.count && j < vr.count; ++j) {
+					long k = j * vh.stride, kr = j * vr.stride;
+					diff += vh.x[k] != vr.x[kr] || vh.y[k] != vr.y[kr] || (dim == 3 && vh.z[k] != vr.z[kr]);
+				}
 			}
-		}
 		mkCSpaceResult_Free(&h);
 	}
+	mkCSpace_Destroy(cs);
 	ENSURE(diff == 0);
 	for (int d = 0; d < 3; ++d) { free(u[d]); free(q[d]); }
 	mkCSpaceResult_Free(&r);

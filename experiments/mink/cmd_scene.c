@@ -18,7 +18,7 @@
 #define SCENE_FILE_MAX (1L << 30)
 #define THREADS_MAX 256
 
-static void help(FILE *fp)
+static void mkSceneCmd_Help(FILE *fp)
 {
 	fprintf(fp,
 		"usage: mink scene FILE --tol T --out PATH [options]\n"
@@ -44,7 +44,7 @@ static void help(FILE *fp)
 		"is the body with map R M.\n\n");
 }
 
-static char *read_file(const char *path, long *len, char *msg, size_t msglen)
+static char *mkSceneCmd_ReadFile(const char *path, long *len, char *msg, size_t msglen)
 {
 	FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
 	if (!f) {
@@ -73,39 +73,37 @@ static char *read_file(const char *path, long *len, char *msg, size_t msglen)
 }
 
 /* PATH with .csv replaced by .faces.csv (or .faces.csv appended). */
-static void faces_path(const char *out, char *buf, size_t len)
+static void mkSceneCmd_FacesPath(const char *out, char *buf, size_t len)
 {
 	size_t n = strlen(out);
 	if (n > 4 && strcmp(out + n - 4, ".csv") == 0) snprintf(buf, len, "%.*s.faces.csv", (int)(n - 4), out);
 	else snprintf(buf, len, "%s.faces.csv", out);
 }
 
-typedef struct ObstacleSum {
+typedef struct mkSceneCmdSum {
 	long points;
 	double error, model_error, seconds;
-	char model[128];
-} ObstacleSum;
+} mkSceneCmdSum;
 
-/* The run: the scene, its options and the open output files. */
-typedef struct SceneRun {
+/* The run: the scene, its options, the prepared scene and the open output files. */
+typedef struct mkSceneCmd {
 	const char *file, *out, *report;
-	double tol;
-	int outer;
 	mkScene scene;
 	mkCSpaceOptions o;
+	mkCSpace *cs;
 	mkOutFile f[3];   /* points, faces (3D), report */
 	int open[3];
-	ObstacleSum *sum;
-	int short_of_tol;
-} SceneRun;
+	mkSceneCmdSum *sum;
+	long short_of_tol;
+} mkSceneCmd;
 
 /* Parse the scene file and, for 3D, its rotations file (relative to the
  * scene's folder). Returns 0, or 2 after printing why. */
-static int load_scene(SceneRun *s)
+static int mkSceneCmd_Load(mkSceneCmd *s)
 {
 	char msg[2048];
 	long len = 0;
-	char *text = read_file(s->file, &len, msg, sizeof msg);
+	char *text = mkSceneCmd_ReadFile(s->file, &len, msg, sizeof msg);
 	if (!text) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
 	mkResult r = mkScene_Parse(text, &s->scene, msg, sizeof msg);
 	free(text);
@@ -118,7 +116,7 @@ static int load_scene(SceneRun *s)
 		snprintf(path, sizeof path, "%.*s/%s", (int)(slash - s->file), s->file, s->scene.rotations_file);
 	else
 		snprintf(path, sizeof path, "%s", s->scene.rotations_file);
-	char *rt = read_file(path, &len, msg, sizeof msg);
+	char *rt = mkSceneCmd_ReadFile(path, &len, msg, sizeof msg);
 	r = rt ? mkScene_SetRotations(&s->scene, rt, path, msg, sizeof msg) : MK_ERR_ARGUMENT;
 	free(rt);
 	if (r != MK_OK) {
@@ -128,28 +126,24 @@ static int load_scene(SceneRun *s)
 	return 0;
 }
 
-/* Check the models (a tolerance too small for a box) on no orientation,
- * before any file exists, and take their names for the report. */
-static int check_models(SceneRun *s)
+/* Prepare the scene (its models: a tolerance too small for a box fails
+ * here), before any file exists. */
+static int mkSceneCmd_Prepare(mkSceneCmd *s)
 {
 	char msg[2048];
-	mkCSpaceResult res;
-	if (mkCSpace_Run(&s->scene, &s->o, 0, 0, &res, msg, sizeof msg) != MK_OK) {
+	if (mkCSpace_Create(&s->scene, &s->o, &s->cs, msg, sizeof msg) != MK_OK) {
 		fprintf(stderr, "mink scene: %s: %s\n", s->file, msg);
 		return 2;
 	}
 	s->sum = calloc((size_t)s->scene.obstacle_count + 1, sizeof *s->sum);
-	for (int i = 0; s->sum && i < s->scene.obstacle_count; ++i)
-		snprintf(s->sum[i].model, sizeof s->sum[i].model, "%s", res.model_name[i]);
-	mkCSpaceResult_Free(&res);
 	if (!s->sum) { fprintf(stderr, "mink scene: out of memory\n"); return 1; }
 	return 0;
 }
 
-static int open_outputs(SceneRun *s)
+static int mkSceneCmd_OpenOutputs(mkSceneCmd *s)
 {
 	char msg[2048], fpath[MK_PATH_MAX];
-	faces_path(s->out, fpath, sizeof fpath);
+	mkSceneCmd_FacesPath(s->out, fpath, sizeof fpath);
 	const char *paths[3] = { s->out, s->scene.dim == 3 ? fpath : NULL, s->report };
 	for (int k = 0; k < 3; ++k) {
 		if (!paths[k])
@@ -166,78 +160,49 @@ static int open_outputs(SceneRun *s)
 	return 0;
 }
 
-/* The rows of one computed chunk of orientations starting at c0. */
-static void write_chunk(SceneRun *s, const mkCSpaceResult *res, long c0)
+/* The rows of one computed chunk. */
+static void mkSceneCmd_WriteChunk(mkSceneCmd *s, const mkCSpaceResult *res)
 {
 	static const char *const kinds[] = {"inner", "outer"};
 	int nob = s->scene.obstacle_count;
 	FILE *fo = s->f[0].fp, *ff = s->open[1] ? s->f[1].fp : NULL;
-	for (int orel = 0; orel < res->orientations; ++orel)
+	for (int ori = res->orientation_begin; ori < res->orientation_begin + res->orientations; ++ori)
 		for (int i = 0; i < nob; ++i)
 			for (int k = 0; k < res->bounds; ++k) {
-				long b = ((long)orel * nob + i) * res->bounds + k, ori = c0 + orel;
-				for (int j = 0; j < res->count[b]; ++j) {
-					long q = res->first[b] + j;
+				mkCSpaceBoundary b = mkCSpaceResult_Boundary(res, ori, i, (mkBound)k);
+				for (int j = 0; j < b.count; ++j) {
+					long q = (long)j * b.stride;
 					if (s->scene.dim == 2)
-						fprintf(fo, "%d,%ld,%s,%d,%.17g,%.17g\n", i, ori, kinds[k], j, res->x[q], res->y[q]);
+						fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g\n", i, ori, kinds[k], j, b.x[q], b.y[q]);
 					else
-						fprintf(fo, "%d,%ld,%s,%d,%.17g,%.17g,%.17g\n", i, ori, kinds[k], j, res->x[q], res->y[q],
-							res->z[q]);
+						fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g,%.17g\n", i, ori, kinds[k], j, b.x[q], b.y[q], b.z[q]);
 				}
-				for (long f = ff ? res->face_first[b] : 0; ff && f < res->face_first[b + 1]; ++f)
-					fprintf(ff, "%d,%ld,%s,%ld,%d,%d,%d\n", i, ori, kinds[k], f - res->face_first[b],
-						res->faces[3 * f], res->faces[3 * f + 1], res->faces[3 * f + 2]);
-				ObstacleSum *sum = &s->sum[i];
-				sum->points += res->count[b];
-				sum->error = fmax(sum->error, res->error[b]);
-				sum->model_error = fmax(sum->model_error, res->model_error[b]);
-				sum->seconds += res->seconds[b];
-				if (!(res->error[b] <= s->tol))
-					++s->short_of_tol;
+				for (int f = 0; ff && f < b.face_count; ++f)
+					fprintf(ff, "%d,%d,%s,%d,%d,%d,%d\n", i, ori, kinds[k], f, b.faces[3 * f], b.faces[3 * f + 1],
+						b.faces[3 * f + 2]);
+				mkSceneCmdSum *sum = &s->sum[i];
+				sum->points += b.count;
+				sum->error = fmax(sum->error, b.error);
+				sum->model_error = fmax(sum->model_error, b.model_error);
+				sum->seconds += b.seconds;
 			}
+	s->short_of_tol += mkCSpaceResult_OverTolerance(res);
 }
 
-/* The robot's model(s) as text for the report. */
-static void robot_model(const SceneRun *s, int k, char *buf, size_t len)
-{
-	char msg[512];
-	double e = 0.0;
-	const mkSceneBody *robot = &s->scene.robot;
-	if (robot->kind == MK_SCENE_SMOOTH) {
-		snprintf(buf, len, "%s", mkSceneBody_KindName(robot));
-	} else if (s->scene.dim == 2) {
-		mkBody2 m;
-		mkSceneBody2_Model(robot, 0.25 * s->tol, (mkBound)k, &m, &e, msg, sizeof msg);
-		snprintf(buf, len, "%s eps=%.6g", mkShape2_IsEllipse(m.shape) ? "ellipse" : "superellipse", m.shape.eps);
-	} else {
-		mkBody3 m;
-		mkSceneBody3_Model(robot, 0.25 * s->tol, (mkBound)k, &m, &e, msg, sizeof msg);
-		snprintf(buf, len, "%s eps1=%.6g eps2=%.6g", mkShape3_IsEllipsoid(m.shape) ? "ellipsoid" : "superquadric",
-			m.shape.eps1, m.shape.eps2);
-	}
-}
-
-static void write_report(const SceneRun *s)
+static void mkSceneCmd_WriteReport(const mkSceneCmd *s)
 {
 	FILE *fr = s->f[2].fp;
-	char rm[2][96], both[256];
-	for (int k = 0; k < 1 + s->outer; ++k)
-		robot_model(s, k, rm[k], sizeof rm[k]);
 	fprintf(fr, "obstacle,declared,model,model_error,points,certified_error,seconds\n");
-	if (s->outer && s->scene.robot.kind != MK_SCENE_SMOOTH)
-		snprintf(both, sizeof both, "inner %s; outer %s", rm[0], rm[1]);
-	else
-		snprintf(both, sizeof both, "%s", rm[0]);
-	fprintf(fr, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&s->scene.robot), both);
+	fprintf(fr, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&s->scene.robot), mkCSpace_ModelName(s->cs, -1));
 	for (int i = 0; i < s->scene.obstacle_count; ++i)
 		fprintf(fr, "%d,%s,\"%s\",%.6g,%ld,%.6g,%.6f\n", i, mkSceneBody_KindName(&s->scene.obstacles[i]),
-			s->sum[i].model, s->sum[i].model_error, s->sum[i].points, s->sum[i].error, s->sum[i].seconds);
+			mkCSpace_ModelName(s->cs, i), s->sum[i].model_error, s->sum[i].points, s->sum[i].error, s->sum[i].seconds);
 }
 
 /* Compute the orientations [begin, end) in chunks, so that memory stays
  * bounded (every boundary is computed alone: the chunking changes nothing
  * in the output), and write everything. Returns 0, or 1 after printing. */
-static int compute(SceneRun *s, long begin, long end)
+static int mkSceneCmd_Compute(mkSceneCmd *s, long begin, long end)
 {
 	char msg[2048];
 	int nob = s->scene.obstacle_count;
@@ -248,15 +213,15 @@ static int compute(SceneRun *s, long begin, long end)
 	for (long c0 = begin; c0 < end; c0 += chunk) {
 		long c1 = c0 + chunk < end ? c0 + chunk : end;
 		mkCSpaceResult res;
-		if (mkCSpace_Run(&s->scene, &s->o, (int)c0, (int)c1, &res, msg, sizeof msg) != MK_OK) {
+		if (mkCSpace_Run(s->cs, (int)c0, (int)c1, &res, msg, sizeof msg) != MK_OK) {
 			fprintf(stderr, "mink scene: %s\n", msg);
 			return 1;
 		}
-		write_chunk(s, &res, c0);
+		mkSceneCmd_WriteChunk(s, &res);
 		mkCSpaceResult_Free(&res);
 	}
 	if (s->open[2])
-		write_report(s);
+		mkSceneCmd_WriteReport(s);
 	mkOutFile *all[3];
 	int na = 0;
 	for (int k = 0; k < 3; ++k)
@@ -273,8 +238,10 @@ static int compute(SceneRun *s, long begin, long end)
 
 int mkCmd_Scene(int argc, char **argv)
 {
-	SceneRun s;
+	mkSceneCmd s;
 	memset(&s, 0, sizeof s);
+	s.o = mkCSpaceOptions_Default();
+	s.o.interleaved = 1; /* the rows' order */
 	for (int k = 0; k < 3; ++k)
 		s.f[k].slot = -1;
 	long threads = 1;
@@ -284,49 +251,47 @@ int mkCmd_Scene(int argc, char **argv)
 	int first = argc > 1 && strncmp(argv[1], "--", 2) != 0 && strcmp(argv[1], "-h") != 0;
 	s.file = first ? argv[1] : NULL;
 	mkFlag flags[] = {
-		MK_FLAG_DOUBLE("--tol", "T", "the tolerance, in the scene's length unit (required)", &s.tol, 1e-12, 1e12),
+		MK_FLAG_DOUBLE("--tol", "T", "the tolerance, in the scene's length unit (required)", &s.o.tol, 1e-12, 1e12),
 		MK_FLAG_PATH("--out", "PATH", "CSV obstacle,orientation,kind,k,x,y[,z] (kind inner or outer; 2D\n"
 			"counter-clockwise); 3D faces go to PATH with .csv replaced by .faces.csv:\n"
 			"obstacle,orientation,kind,f,i,j,k. Written atomically (required)", &s.out),
 		MK_FLAG_PATH("--report", "PATH", "CSV per obstacle: model, model error, points, certified error,\n"
 			"seconds (and a robot row)", &s.report),
-		MK_FLAG_SWITCH("--outer", "also the outer boundaries", &s.outer),
+		MK_FLAG_SWITCH("--outer", "also the outer boundaries", &s.o.outer),
 		MK_FLAG_LONG("--threads", "K", "worker threads (default 1); the output does not depend on K", &threads, 1,
 			THREADS_MAX),
 		MK_FLAG_TEXT("--shard", "I/N", "only block I (0-based) of N of the orientations; the shards'\n"
 			"rows concatenated in order (one header) equal the whole run's", &shard, mkShard_ParseFlag),
 		MK_FLAG_IMPL("--impl", "kernel (default auto)", &impl),
 	};
-	int rc = mkCli_Parse("scene", flags, MK_COUNT(flags), argc - first, argv + first, help);
+	int rc = mkCli_Parse("scene", flags, MK_COUNT(flags), argc - first, argv + first, mkSceneCmd_Help);
 	if (rc != MK_CLI_GO)
 		return rc;
 	if (!s.file) { fprintf(stderr, "mink scene: no scene FILE given (usage: mink scene FILE --tol T --out PATH)\n"); return 2; }
 	if ((rc = mkCli_Require("scene", &flags[0])) != MK_CLI_GO || (rc = mkCli_Require("scene", &flags[1])) != MK_CLI_GO)
 		return rc;
-	rc = load_scene(&s);
+	rc = mkSceneCmd_Load(&s);
 	if (rc == 0) {
-		s.o = mkCSpaceOptions_Default();
-		s.o.tol = s.tol;
-		s.o.outer = s.outer;
 		s.o.threads = (int)threads;
 		s.o.impl = (mkImpl)impl;
 		long begin, end;
 		mkShard_Range(shard, s.scene.orientation_count, &begin, &end);
-		rc = check_models(&s);
+		rc = mkSceneCmd_Prepare(&s);
 		if (rc == 0)
-			rc = open_outputs(&s);
+			rc = mkSceneCmd_OpenOutputs(&s);
 		if (rc == 0)
-			rc = compute(&s, begin, end);
+			rc = mkSceneCmd_Compute(&s, begin, end);
 	}
 	if (rc == 0 && s.short_of_tol) {
-		fprintf(stderr, "mink scene: warning: %d boundaries are not certified within --tol %g (point cap or "
-			"normals closer than 1e-12 rad): see their certified_error in the report\n", s.short_of_tol, s.tol);
+		fprintf(stderr, "mink scene: warning: %ld boundaries are not certified within --tol %g (point cap or "
+			"normals closer than 1e-12 rad): see their certified_error in the report\n", s.short_of_tol, s.o.tol);
 		rc = 1;
 	}
 	for (int k = 0; k < 3; ++k)
 		if (s.open[k])
 			mkOutFile_Discard(&s.f[k]);
 	free(s.sum);
+	mkCSpace_Destroy(s.cs);
 	mkScene_Free(&s.scene);
 	return rc;
 }

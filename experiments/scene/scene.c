@@ -141,7 +141,7 @@ static double mkCpuNow(void)
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-/* One whole-scene run of mkCSpace_Run, store = 0. */
+/* One whole-scene run (mkCSpace_Create, mkCSpace_Run), store = 0. */
 typedef struct mkSceneXRun {
 	int param;
 	double error, seconds, cpu, checksum;
@@ -162,7 +162,11 @@ static mkResult mkSceneX_RunPart(const mkScene *s, const mkCSpaceOptions *o, int
 		one.obstacle_count = 1;
 	}
 	double t0 = mkClock_Wall(), c0 = mkCpuNow();
-	mkResult rc = mkCSpace_Run(&one, o, begin, end, &r, msg, msglen);
+	mkCSpace *cs = NULL;
+	mkResult rc = mkCSpace_Create(&one, o, &cs, msg, msglen);
+	if (rc == MK_OK)
+		rc = mkCSpace_Run(cs, begin, end, &r, msg, msglen);
+	mkCSpace_Destroy(cs);
 	out->seconds = mkClock_Wall() - t0;
 	out->cpu = mkCpuNow() - c0;
 	if (rc != MK_OK)
@@ -384,7 +388,11 @@ int mkSceneX_Figure9(mkRun *run, uint64_t seed, long obstacles, double tol)
 	o.tol = tol;
 	o.outer = 1;
 	mkCSpaceResult r;
-	mkResult rc = mkCSpace_Run(&s, &o, 0, 1, &r, msg, sizeof msg);
+	mkCSpace *cs = NULL;
+	mkResult rc = mkCSpace_Create(&s, &o, &cs, msg, sizeof msg);
+	if (rc == MK_OK)
+		rc = mkCSpace_Run(cs, 0, 1, &r, msg, sizeof msg);
+	mkCSpace_Destroy(cs);
 	mkScene_Free(&s);
 	if (rc != MK_OK) {
 		mkRun_Fail(run, "figure: %s", msg);
@@ -396,12 +404,13 @@ int mkSceneX_Figure9(mkRun *run, uint64_t seed, long obstacles, double tol)
 		return -1;
 	}
 	for (long b = 0; b < (long)r.obstacles * r.bounds; ++b) {
-		for (long p = r.first[b]; p <= r.first[b + 1]; ++p) { /* closed: the first point again */
-			long q = p < r.first[b + 1] ? p : r.first[b];
+		mkCSpaceBoundary v = mkCSpaceResult_Boundary(&r, 0, (int)(b / r.bounds), (mkBound)(b % r.bounds));
+		for (int p = 0; p <= v.count; ++p) { /* closed: the first point again */
+			long q = (long)(p < v.count ? p : 0) * v.stride;
 			mkCsv_Int(&csv, b / r.bounds);
 			mkCsv_Str(&csv, b % r.bounds ? "outer" : "inner");
-			mkCsv_Double(&csv, r.x[q]);
-			mkCsv_Double(&csv, r.y[q]);
+			mkCsv_Double(&csv, v.x[q]);
+			mkCsv_Double(&csv, v.y[q]);
 			mkCsv_EndRow(&csv);
 		}
 		fputs("\n\n", csv.file.fp); /* gnuplot's separator of data blocks */

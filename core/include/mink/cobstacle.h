@@ -26,13 +26,25 @@
  * reported error (model + sampling) bounds the distance to the C-obstacle of
  * the declared shapes.
  *
+ * Use: mkCSpace_Create prepares a scene once (each body's model, its name
+ * and error, the robot's model, the tolerance); mkCSpace_Run computes any
+ * range of orientations into an mkCSpaceResult; mkCSpaceResult_Boundary
+ * reads one boundary in the layout the options chose (one array per
+ * coordinate, or interleaved).
+ *
+ * Names: one prefix, mkCSpace, for scene runs and single boundaries alike
+ * (mkCSpace2_Adaptive, ...): the library is libmink_cspace, and a
+ * C-obstacle is a part of the C-space; mkCObstacle names the driver of
+ * the paper's C-obstacle experiment.
+ *
  * Threads: the (orientation, obstacle) pairs are independent tasks, shared
  * out to `threads` POSIX threads; every task is computed the same way
  * whichever thread runs it, so the result does not depend on the thread
  * count.
  *
- * Memory: mkCSpace_Run allocates the result; mkCSpaceResult_Free releases
- * it. Nothing else here allocates. */
+ * Memory: mkCSpace_Create allocates the prepared scene (mkCSpace_Destroy
+ * releases it), mkCSpace_Run the result (mkCSpaceResult_Free), the
+ * single-boundary functions grow the caller's buffers. */
 #ifndef MINK_COBSTACLE_H
 #define MINK_COBSTACLE_H
 
@@ -68,48 +80,80 @@ typedef struct mkCSpaceOptions {
 	int max_points;     /* cap per boundary (adaptive); reaching it leaves the error above T */
 	mkForm form;        /* PAPER only (MK_FORM_NORMAL or MK_FORM_GRADIENT) */
 	mkImpl impl;        /* the kernel of every batch call */
+	int interleaved;    /* store = 1: 1 keeps each boundary's points as x, y[, z] per point; 0 as one array per coordinate */
 } mkCSpaceOptions;
 
 /* tol 1e-3, inner only, adaptive, 1 thread, store, max_points 1000000,
- * gradient form (paper mode), AUTO kernel. */
+ * gradient form (paper mode), AUTO kernel, one array per coordinate. */
 MK_API mkCSpaceOptions mkCSpaceOptions_Default(void);
 
-/* Boundary index of (orientation o relative to the run's first, obstacle i,
- * bound k): (o * obstacles + i) * bounds + k; bounds is 1 (inner) or 2
- * (inner, outer). This is also the order of the command's output rows. */
+/* A scene prepared for runs: its options and the models of its bodies. */
+typedef struct mkCSpace mkCSpace;
+
+/* Prepare the scene for runs with these options (copied): every body is
+ * modelled once for the tolerance. The scene must stay alive and unchanged
+ * until mkCSpace_Destroy. Fails with MK_ERR_ARGUMENT on bad options (message
+ * says which), MK_ERR_RANGE when a model cannot meet the tolerance (e.g. T
+ * too small for a box; message "robot: ..." or "obstacle I: ..."),
+ * MK_ERR_UNSUPPORTED (outer bounds in paper mode, a kernel not built),
+ * MK_ERR_MEMORY. On failure *out is NULL. */
+MK_API mkResult mkCSpace_Create(const mkScene *scene, const mkCSpaceOptions *opt, mkCSpace **out,
+	char *msg, size_t msglen);
+MK_API void mkCSpace_Destroy(mkCSpace *cs);
+MK_API const mkCSpaceOptions *mkCSpace_Options(const mkCSpace *cs);
+/* The model of a body as text for reports: body -1 the robot, 0 ..
+ * obstacles - 1 an obstacle. A SMOOTH body is its kind ("ellipse"); a box
+ * or cylinder its model ("superellipse eps=0.0834"), as "inner M1; outer
+ * M2" when the options ask for outer bounds. */
+MK_API const char *mkCSpace_ModelName(const mkCSpace *cs, int body);
+
+/* The boundaries of a run, (orientation o, obstacle i, bound k) at index
+ * ((o - orientation_begin) * obstacles + i) * bounds + k; bounds is 1
+ * (inner) or 2 (inner, outer). Read them with mkCSpaceResult_Boundary. */
 typedef struct mkCSpaceResult {
 	int dim, obstacles, orientations, bounds;
-	int orientation_begin;   /* the scene orientation of o = 0 */
+	int orientation_begin;   /* the scene orientation of the run's first */
+	double tol;              /* the options' tolerance */
 	int *count;              /* points of each boundary */
 	double *error;           /* certified Hausdorff bound incl. model error (NaN: paper mode) */
 	double *model_error;     /* the model part of it (robot's + obstacle's) */
 	double *seconds;         /* wall time of each (orientation, obstacle) task, on its bound 0 entry
 	                          * (paper mode: a task's time shared equally by its orientations) */
 	double *checksum;        /* sum of every coordinate of the boundary (also with store = 0) */
-	/* store = 1: the points of boundary b are first[b] .. first[b+1]-1 */
-	long *first;
-	double *x, *y, *z;       /* z: 3D */
-	/* store = 1, 3D: triangles of boundary b are face_first[b] .. face_first[b+1]-1,
-	 * three vertex numbers (0-based within the boundary) each, counter-clockwise
-	 * seen from outside */
-	long *face_first;
-	int *faces;
-	/* per obstacle: the models used (inner; outer when bounds = 2) */
-	char (*model_name)[128];
+	/* store = 1: each boundary's points (layout: interleaved) and 3D faces */
+	int interleaved;
+	double **points;
+	int **faces;
+	int *face_count;
 } mkCSpaceResult;
 
-/* Compute the orientations [begin, end) of the scene for every obstacle.
- * Fails with MK_ERR_ARGUMENT on bad options or range (message says which),
- * MK_ERR_RANGE when a model cannot meet the tolerance (e.g. T too small for
- * a box), MK_ERR_UNSUPPORTED (outer bounds in paper mode), MK_ERR_MEMORY. On
- * failure *out is empty. A boundary whose error exceeds T (max_points
- * reached, or normals closer than 1e-12 rad) is not a failure: check
- * mkCSpaceResult_MaxError. */
-MK_API mkResult mkCSpace_Run(const mkScene *scene, const mkCSpaceOptions *opt, int begin, int end,
-	mkCSpaceResult *out, char *msg, size_t msglen);
+/* One boundary of a result: point j is (x[j * stride], y[j * stride][,
+ * z[j * stride]]); stride is 1 for one array per coordinate, dim for the
+ * interleaved layout (then x is the whole x, y[, z] array). No points
+ * (NULL) when the run did not store them. */
+typedef struct mkCSpaceBoundary {
+	int count, stride;
+	const double *x, *y, *z;   /* z: 3D */
+	int face_count;            /* 3D: triangles, three vertex numbers each (0-based within the */
+	const int *faces;          /* boundary), counter-clockwise seen from outside */
+	double error, model_error, seconds, checksum;
+	int within_tol;            /* error <= tol: certified within the tolerance */
+} mkCSpaceBoundary;
 
+/* Compute the orientations [begin, end) of the prepared scene for every
+ * obstacle. Fails with MK_ERR_ARGUMENT on a bad range (message says which)
+ * or MK_ERR_MEMORY; then *out is empty. A boundary whose error exceeds T
+ * (max_points reached, or normals closer than 1e-12 rad) is not a failure:
+ * see mkCSpaceBoundary.within_tol and mkCSpaceResult_OverTolerance. */
+MK_API mkResult mkCSpace_Run(const mkCSpace *cs, int begin, int end, mkCSpaceResult *out, char *msg, size_t msglen);
+
+/* The boundary of scene orientation o (orientation_begin <= o <
+ * orientation_begin + orientations), obstacle i and bound k. */
+MK_API mkCSpaceBoundary mkCSpaceResult_Boundary(const mkCSpaceResult *r, int o, int i, mkBound k);
 /* Largest error of the result (NaN if any is NaN). */
 MK_API double mkCSpaceResult_MaxError(const mkCSpaceResult *r);
+/* How many boundaries are not certified within the tolerance. */
+MK_API long mkCSpaceResult_OverTolerance(const mkCSpaceResult *r);
 MK_API void mkCSpaceResult_Free(mkCSpaceResult *r);
 
 /* ---- single boundaries, for callers with their own bodies ----------------
@@ -119,19 +163,19 @@ MK_API void mkCSpaceResult_Free(mkCSpaceResult *r);
  * Writes the count and the certified bound (plus a rounding allowance of
  * 1e-13 times the coordinates' size). Returns MK_ERR_MEMORY or
  * MK_ERR_ARGUMENT (tol <= 0). */
-MK_API mkResult mkCObstacle2_Adaptive(mkBody2 b1, mkBody2 b2, mkBound bound, double tol, int max_points,
+MK_API mkResult mkCSpace2_Adaptive(mkBody2 b1, mkBody2 b2, mkBound bound, double tol, int max_points,
 	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
 /* 3D: points and triangles (3 ints each, *faces grown likewise; faces may
  * be NULL when only the points are wanted), inner
  * (a closed surface through boundary points of K) or outer (the polytope of
  * the tangent planes, see Proof 5 of docs/scene.md). */
-MK_API mkResult mkCObstacle3_Adaptive(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int max_points, mkImpl impl,
+MK_API mkResult mkCSpace3_Adaptive(mkBody3 b1, mkBody3 b2, mkBound bound, double tol, int max_points, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error);
 /* The same with a fixed set of normals (mode UNIFORM): n normals (2D, n >= 4)
  * or `splits` uniform splits of the octahedron (3D, 0..10). 2D n >= 4 keeps
  * every normal step at most 90 degrees, which the certificate needs. */
-MK_API mkResult mkCObstacle2_Uniform(mkBody2 b1, mkBody2 b2, mkBound bound, int n, mkImpl impl,
+MK_API mkResult mkCSpace2_Uniform(mkBody2 b1, mkBody2 b2, mkBound bound, int n, mkImpl impl,
 	double **x, double **y, int *cap, int *count, double *error);
 /* Certify given normals (any nonzero vectors, n >= 3, in counter-clockwise
  * order around the circle): the polygon of their points (inner) or tangent
@@ -139,18 +183,18 @@ MK_API mkResult mkCObstacle2_Uniform(mkBody2 b1, mkBody2 b2, mkBound bound, int 
  * 90 degrees get the weaker bound of Proof 3, steps of 180 degrees or more
  * an infinite one. Used to certify another sampling, e.g. the paper's (the
  * normals of an obstacle's surface samples). */
-MK_API mkResult mkCObstacle2_Certify(mkBody2 b1, mkBody2 b2, mkBound bound, const double *nx, const double *ny, int n,
+MK_API mkResult mkCSpace2_Certify(mkBody2 b1, mkBody2 b2, mkBound bound, const double *nx, const double *ny, int n,
 	mkImpl impl, double **x, double **y, int *cap, int *count, double *error);
 /* Certify given normals in 3D: n normals (any nonzero vectors) and ntri
  * triangles of them (3 indices each, counter-clockwise from outside) that
- * partition the sphere; *error is Proof 3's bound for the convex hull of
+ * partition the sphere; *error is Proof 4's bound for the convex hull of
  * their points (inner) and for the intersection of their tangent
  * half-spaces (outer), or +inf when some triangle is not positively
  * oriented or the triangles' areas do not sum to 4 pi (not a partition).
  * Used to certify another sampling, e.g. the paper's grid. */
-MK_API mkResult mkCObstacle3_Certify(mkBody3 b1, mkBody3 b2, const double *nx, const double *ny, const double *nz, int n,
+MK_API mkResult mkCSpace3_Certify(mkBody3 b1, mkBody3 b2, const double *nx, const double *ny, const double *nz, int n,
 	const int *tris, int ntri, mkImpl impl, double *error);
-MK_API mkResult mkCObstacle3_Uniform(mkBody3 b1, mkBody3 b2, mkBound bound, int splits, mkImpl impl,
+MK_API mkResult mkCSpace3_Uniform(mkBody3 b1, mkBody3 b2, mkBound bound, int splits, mkImpl impl,
 	double **x, double **y, double **z, int *cap, int **faces, int *face_cap, int *count, int *face_count,
 	double *error);
 

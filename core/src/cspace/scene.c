@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "base/message.h"
+#include "shape/spec_keys.h"
 
 const char *mkSceneBody_KindName(const mkSceneBody *b)
 {
@@ -23,7 +24,7 @@ const char *mkSceneBody_KindName(const mkSceneBody *b)
 
 /* A comma-separated list of numbers; returns how many (at most max), -1 on a
  * malformed list. */
-static int number_list(const char *s, size_t len, double *out, int max)
+static int mkScene_NumberList(const char *s, size_t len, double *out, int max)
 {
 	char buf[512];
 	if (len == 0 || len >= sizeof buf) return -1;
@@ -43,6 +44,53 @@ static int number_list(const char *s, size_t len, double *out, int max)
 	return n;
 }
 
+
+/* Box and cylinder: the shape keys' ranges, then the pose on a unit body
+ * (its shape fields unused), validated as every SPEC's. */
+static mkResult mkSceneBody_ParseSolid(const char *text, int dim, const char *what, int box, mkSceneBody *out,
+	char *msg, size_t msglen)
+{
+	const char *kind = box ? "box" : "cylinder";
+	unsigned shape = box ? MK_SPEC_BIT(MK_SPEC_SIZE) : MK_SPEC_BIT(MK_SPEC_R) | MK_SPEC_BIT(MK_SPEC_H);
+	mkSpecValues v;
+	mkResult r = mkSpecKeys_Parse(text, dim, what, kind, shape | mkSpecKeys_Pose(dim), &v, msg, msglen);
+	if (r != MK_OK) return r;
+	if (box && !(v.seen & MK_SPEC_BIT(MK_SPEC_SIZE)))
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: box needs size=%s (full side lengths)", what,
+			dim == 2 ? "l,w" : "l,w,h");
+	if (!box && (v.seen & shape) != shape)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: cylinder needs %s", what,
+			!(v.seen & MK_SPEC_BIT(MK_SPEC_R)) ? "r (the radius)" : "h (the full height)");
+	/* box: size[0..dim); cylinder: size[0] the radius, size[1] the height */
+	int n = box ? dim : 2;
+	for (int i = 0; i < n; ++i) {
+		int key = box ? MK_SPEC_SIZE : (i == 0 ? MK_SPEC_R : MK_SPEC_H);
+		double val = v.val[key][box ? i : 0];
+		double lo = key == MK_SPEC_R ? MK_AXIS_MIN : MK_SCENE_SIZE_MIN, hi = key == MK_SPEC_R ? MK_AXIS_MAX : MK_SCENE_SIZE_MAX;
+		if (!(isfinite(val) && val >= lo && val <= hi)) {
+			char field[32];
+			if (box) snprintf(field, sizeof field, "size[%d]", i + 1);
+			else snprintf(field, sizeof field, "%s", key == MK_SPEC_R ? "r" : "h");
+			return mkFail(MK_ERR_RANGE, msg, msglen, "%s.%s = %.17g is out of range: must be a finite "
+				"number in [%.10g, %.10g]", what, field, val, lo, hi);
+		}
+		out->size[i] = val;
+	}
+	out->kind = box ? MK_SCENE_BOX : MK_SCENE_CYLINDER;
+	out->spec.dim = dim;
+	if (dim == 2) {
+		mkBody2 *b = &out->spec.body2;
+		out->spec.kind = MK_KIND_ELLIPSE;
+		b->shape = (mkShape2){1.0, 1.0, 1.0};
+		if ((r = mkSpecKeys_Pose2(&v, what, &b->M, &b->t, msg, msglen)) != MK_OK) return r;
+		return mkBody2_IsValid(*b, what, msg, msglen) ? MK_OK : MK_ERR_RANGE;
+	}
+	mkBody3 *b = &out->spec.body3;
+	out->spec.kind = MK_KIND_ELLIPSOID;
+	b->shape = (mkShape3){1.0, 1.0, 1.0, 1.0, 1.0};
+	if ((r = mkSpecKeys_Pose3(&v, what, &b->M, &b->t, msg, msglen)) != MK_OK) return r;
+	return mkBody3_IsValid(*b, what, msg, msglen) ? MK_OK : MK_ERR_RANGE;
+}
 
 mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneBody *out,
 	char *msg, size_t msglen)
@@ -70,81 +118,15 @@ mkResult mkSceneBody_Parse(const char *text, int dim, const char *what, mkSceneB
 	if (cyl && dim != 3)
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind 'cylinder' is 3D but the scene is 2D: use circle, "
 			"ellipse, superellipse or box", what);
-	out->kind = box ? MK_SCENE_BOX : MK_SCENE_CYLINDER;
-	/* Shape keys here; the pose keys go to mkSpec_Parse behind a unit body,
-	 * which validates them with the same messages as every SPEC. */
-	char pose[4096];
-	int pn = snprintf(pose, sizeof pose, "%s", dim == 2 ? "ellipse a=1 b=1" : "ellipsoid a=1 b=1 c=1");
-	const char *allowed = box ? (dim == 2 ? "size, rot, shear, M, at" : "size, quat, M, at") : "r, h, quat, M, at";
-	int have_size = 0, have_r = 0, have_h = 0;
-	while (*p) {
-		while (isspace((unsigned char)*p)) ++p;
-		if (!*p) break;
-		const char *ts = p;
-		while (*p && !isspace((unsigned char)*p)) ++p;
-		size_t tl = (size_t)(p - ts);
-		const char *eq = memchr(ts, '=', tl);
-		if (!eq)
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: '%.*s' is not of the form key=value", what,
-				(int)(tl > 64 ? 64 : tl), ts);
-		size_t nl = (size_t)(eq - ts), vl = tl - nl - 1;
-		const char *v = eq + 1;
-#define KEY_IS(s) (nl == strlen(s) && strncmp(ts, s, nl) == 0)
-		if ((box && KEY_IS("size")) || (cyl && (KEY_IS("r") || KEY_IS("h")))) {
-			const char *key = box ? "size" : (KEY_IS("r") ? "r" : "h");
-			int *seen = box ? &have_size : (KEY_IS("r") ? &have_r : &have_h);
-			if (*seen) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key);
-			*seen = 1;
-			if (vl == 0) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key);
-			double vals[3];
-			int want = box ? dim : 1;
-			int got = number_list(v, vl, vals, 3);
-			if (got < 0)
-				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key,
-					(int)(vl > 64 ? 64 : vl), v, want > 1 ? " list" : "");
-			if (got != want)
-				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
-					key, want, want > 1 ? "s" : "", got);
-			for (int i = 0; i < want; ++i) {
-				double lo = MK_SCENE_SIZE_MIN, hi = MK_SCENE_SIZE_MAX;
-				if (cyl && KEY_IS("r")) { lo = MK_AXIS_MIN; hi = MK_AXIS_MAX; }
-				if (!(isfinite(vals[i]) && vals[i] >= lo && vals[i] <= hi)) {
-					char field[32];
-					if (want > 1) snprintf(field, sizeof field, "%s[%d]", key, i + 1);
-					else snprintf(field, sizeof field, "%s", key);
-					return mkFail(MK_ERR_RANGE, msg, msglen, "%s.%s = %.17g is out of range: must be a finite "
-						"number in [%.10g, %.10g]", what, field, vals[i], lo, hi);
-				}
-			}
-			if (box) for (int i = 0; i < dim; ++i) out->size[i] = vals[i];
-			else if (KEY_IS("r")) out->size[0] = vals[0];
-			else out->size[1] = vals[0];
-			continue;
-		}
-		int pose_key = KEY_IS("M") || KEY_IS("at") || (dim == 2 && (KEY_IS("rot") || KEY_IS("shear")))
-			|| (dim == 3 && KEY_IS("quat"));
-		if (!pose_key)
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
-				what, (int)(nl > 32 ? 32 : nl), ts, box ? "box" : "cylinder", allowed);
-#undef KEY_IS
-		if (pn + 1 + (int)tl >= (int)sizeof pose)
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, (int)sizeof pose);
-		pn += snprintf(pose + pn, sizeof pose - (size_t)pn, " %.*s", (int)tl, ts);
-	}
-	if (box && !have_size)
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: box needs size=%s (full side lengths)", what,
-			dim == 2 ? "l,w" : "l,w,h");
-	if (cyl && (!have_r || !have_h))
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: cylinder needs %s", what, !have_r ? "r (the radius)" : "h (the full height)");
-	mkResult r = mkSpec_Parse(pose, dim, what, &out->spec, msg, msglen);
-	if (r != MK_OK) return r;
-	return MK_OK;
+	if (strlen(p) > 4096)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, 4096);
+	return mkSceneBody_ParseSolid(p, dim, what, box, out, msg, msglen);
 }
 
 /* ---- models -------------------------------------------------------------------- */
 
 /* Largest eigenvalue of a symmetric 2x2 [p r; r q]. */
-static double eig2_max(double p, double q, double r)
+static double mkSym2_MaxEigen(double p, double q, double r)
 {
 	return 0.5 * (p + q) + sqrt(0.25 * (p - q) * (p - q) + r * r);
 }
@@ -152,7 +134,7 @@ static double eig2_max(double p, double q, double r)
 /* The largest |M x| over the placed shape's points x (the support radius
  * about its centre), exact for boxes, an upper bound (exact for rigid maps)
  * for cylinders. */
-static double reach2(mkMat2 M, double a, double b)
+static double mkBox2_Reach(mkMat2 M, double a, double b)
 {
 	double best = 0.0;
 	for (int s = 0; s < 4; ++s) {
@@ -163,7 +145,7 @@ static double reach2(mkMat2 M, double a, double b)
 	return best;
 }
 
-static double reach3_box(mkMat3 M, double a, double b, double c)
+static double mkBox3_Reach(mkMat3 M, double a, double b, double c)
 {
 	double best = 0.0;
 	for (int s = 0; s < 8; ++s) {
@@ -176,11 +158,11 @@ static double reach3_box(mkMat3 M, double a, double b, double c)
 
 /* Rim points R M12 w +- c M e3 (|w| = 1): |.|^2 <= R^2 s^2 + 2 R c |M12^T M e3| + c^2 |M e3|^2
  * with s the largest singular value of the first two columns M12. */
-static double reach3_cyl(mkMat3 M, double R, double c)
+static double mkCylinder3_Reach(mkMat3 M, double R, double c)
 {
 	mkVec3 c1 = {M.m[0][0], M.m[1][0], M.m[2][0]}, c2 = {M.m[0][1], M.m[1][1], M.m[2][1]};
 	mkVec3 c3 = {M.m[0][2], M.m[1][2], M.m[2][2]};
-	double s2 = eig2_max(mkVec3_Dot(c1, c1), mkVec3_Dot(c2, c2), mkVec3_Dot(c1, c2));
+	double s2 = mkSym2_MaxEigen(mkVec3_Dot(c1, c1), mkVec3_Dot(c2, c2), mkVec3_Dot(c1, c2));
 	double cr = hypot(mkVec3_Dot(c1, c3), mkVec3_Dot(c2, c3));
 	return sqrt(R * R * s2 + 2.0 * R * c * cr + c * c * mkVec3_Dot(c3, c3));
 }
@@ -190,7 +172,7 @@ static double reach3_cyl(mkMat3 M, double R, double c)
  * box3D). Inner: the deviation is D (1 - terms^(-1/p)); outer (scaled by
  * terms^(1/p)): at most D (terms^(1/p) - 1). Capped at 1 (the ellipse),
  * which the closed forms treat exactly and cheaply. */
-static double model_eps(double f, int terms, mkBound side)
+static double mkModel_Exponent(double f, int terms, mkBound side)
 {
 	double lt = log((double)terms);
 	double inv_p = side == MK_BOUND_INNER ? (f >= 1.0 ? INFINITY : -log1p(-f) / lt) : log1p(f) / lt;
@@ -199,7 +181,7 @@ static double model_eps(double f, int terms, mkBound side)
 	return eps > 1.0 ? 1.0 : eps;
 }
 
-static double model_error(double D, double eps, int terms, mkBound side)
+static double mkModel_Error(double D, double eps, int terms, mkBound side)
 {
 	double e = pow((double)terms, 0.5 * eps); /* terms^(1/p) */
 	return side == MK_BOUND_INNER ? D * (1.0 - 1.0 / e) : D * (e - 1.0);
@@ -213,15 +195,15 @@ mkResult mkSceneBody2_Model(const mkSceneBody *b, double delta, mkBound side, mk
 	if (!(delta > 0.0) || !isfinite(delta)) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model: tolerance %g must be positive", delta);
 	double a = 0.5 * b->size[0], bb = 0.5 * b->size[1];
 	mkMat2 M = b->spec.body2.M;
-	double D = reach2(M, a, bb);
-	double eps = model_eps(delta / D, 2, side);
+	double D = mkBox2_Reach(M, a, bb);
+	double eps = mkModel_Exponent(delta / D, 2, side);
 	if (!(eps >= MK_EPS_MIN))
 		return mkFail(MK_ERR_RANGE, msg, msglen, "box model: tolerance %g is too small for a box of reach %g: "
 			"the model exponent would be %g, below %g", delta, D, eps, MK_EPS_MIN);
 	double s = side == MK_BOUND_INNER ? 1.0 : pow(2.0, 0.5 * eps);
 	mkShape2 sh = {s * a, s * bb, eps};
 	*out = mkBody2_Make(sh, M, b->spec.body2.t);
-	*error = model_error(D, eps, 2, side);
+	*error = mkModel_Error(D, eps, 2, side);
 	return MK_OK;
 }
 
@@ -236,14 +218,14 @@ mkResult mkSceneBody3_Model(const mkSceneBody *b, double delta, mkBound side, mk
 	double a, bb, c, D;
 	if (b->kind == MK_SCENE_BOX) {
 		a = 0.5 * b->size[0]; bb = 0.5 * b->size[1]; c = 0.5 * b->size[2];
-		D = reach3_box(M, a, bb, c);
+		D = mkBox3_Reach(M, a, bb, c);
 		terms = 3;
 	} else {
 		a = bb = b->size[0]; c = 0.5 * b->size[1];
-		D = reach3_cyl(M, a, c);
+		D = mkCylinder3_Reach(M, a, c);
 		terms = 2;
 	}
-	double eps = model_eps(delta / D, terms, side);
+	double eps = mkModel_Exponent(delta / D, terms, side);
 	if (!(eps >= MK_EPS_MIN))
 		return mkFail(MK_ERR_RANGE, msg, msglen, "%s model: tolerance %g is too small for a body of reach %g: "
 			"the model exponent would be %g, below %g", mkSceneBody_KindName(b), delta, D, eps, MK_EPS_MIN);
@@ -252,7 +234,7 @@ mkResult mkSceneBody3_Model(const mkSceneBody *b, double delta, mkBound side, mk
 	 * round cross-section eps2 = 1 with rho^p + |z/c|^p (eps1 = eps). */
 	mkShape3 sh = {s * a, s * bb, s * c, eps, b->kind == MK_SCENE_BOX ? eps : 1.0};
 	*out = mkBody3_Make(sh, M, b->spec.body3.t);
-	*error = model_error(D, eps, terms, side);
+	*error = mkModel_Error(D, eps, terms, side);
 	return MK_OK;
 }
 
@@ -272,7 +254,7 @@ mkMat3 mkScene3_Orientation(const mkScene *s, int o) { return s->rotations[o]; }
 
 /* The next line of text (without its newline and comment), trimmed;
  * returns 0 at the end. */
-static int next_line(const char **cursor, char *buf, size_t len, int *too_long)
+static int mkScene_NextLine(const char **cursor, char *buf, size_t len, int *too_long)
 {
 	const char *p = *cursor;
 	if (!*p) return 0;
@@ -292,7 +274,7 @@ static int next_line(const char **cursor, char *buf, size_t len, int *too_long)
 	return 1;
 }
 
-static int grow(void **arr, int *cap, int need, size_t elem)
+static int mkScene_Grow(void **arr, int *cap, int need, size_t elem)
 {
 	if (need <= *cap) return 1;
 	int nc = *cap ? *cap * 2 : 16;
@@ -304,7 +286,7 @@ static int grow(void **arr, int *cap, int need, size_t elem)
 	return 1;
 }
 
-static int is_rotation(mkMat3 R)
+static int mkScene_IsRotation(mkMat3 R)
 {
 	for (int i = 0; i < 3; ++i)
 		for (int j = 0; j < 3; ++j) {
@@ -316,12 +298,73 @@ static int is_rotation(mkMat3 R)
 }
 
 /* A quaternion "w,x,y,z" (4 numbers already parsed) into *R; 0 if zero or not finite. */
-static int quat_rotation(const double *q, mkMat3 *R)
+static int mkScene_QuatRotation(const double *q, mkMat3 *R)
 {
 	for (int i = 0; i < 4; ++i)
 		if (!isfinite(q[i]) || fabs(q[i]) > 1e150) return 0;
 	*R = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
 	return mkMat3_IsFinite(*R);
+}
+
+/* `headings N` or `headings a1,a2,...` into s; a failure's message in err. */
+static mkResult mkScene_ParseHeadings(mkScene *s, int *hcap, const char *arg, char *err, size_t errlen)
+{
+	if (!strchr(arg, ',') && !strchr(arg, '.') && !strchr(arg, 'e') && !strchr(arg, 'E')) {
+		char *end;
+		errno = 0;
+		long n = strtol(arg, &end, 10);
+		if (*end || end == arg || errno || n < 1 || n > MK_SCENE_HEADINGS_MAX)
+			return mkFail(MK_ERR_RANGE, err, errlen, "headings = '%.40s' is out of range: must be an integer N in "
+				"[1, %d] or a comma-separated list of angles in radians", arg, MK_SCENE_HEADINGS_MAX);
+		if (!mkScene_Grow((void **)&s->headings, hcap, (int)n, sizeof *s->headings))
+			return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+		for (long k = 0; k < n; ++k) s->headings[k] = 2.0 * MK_PI * (double)k / (double)n;
+		s->orientation_count = (int)n;
+		return MK_OK;
+	}
+	const char *p = arg;
+	for (;;) {
+		char *end;
+		double v = strtod(p, &end);
+		if (end == p || (*end != ',' && *end != 0))
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "headings: item %d '%.20s' is not a number: must be an angle "
+				"in radians", s->orientation_count + 1, p);
+		if (!isfinite(v) || fabs(v) > MK_SCENE_ANGLE_MAX)
+			return mkFail(MK_ERR_RANGE, err, errlen, "headings: item %d = %g is out of range: must be a finite angle "
+				"in radians in [-%g, %g]", s->orientation_count + 1, v, MK_SCENE_ANGLE_MAX, MK_SCENE_ANGLE_MAX);
+		if (!mkScene_Grow((void **)&s->headings, hcap, s->orientation_count + 1, sizeof *s->headings))
+			return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+		s->headings[s->orientation_count++] = v;
+		if (!*end) return MK_OK;
+		p = end + 1;
+	}
+}
+
+/* `quaternions w,x,y,z;...` into s; a failure's message in err. */
+static mkResult mkScene_ParseQuaternions(mkScene *s, int *rcap, const char *arg, char *err, size_t errlen)
+{
+	const char *p = arg;
+	for (;;) {
+		const char *semi = strchr(p, ';');
+		size_t len = semi ? (size_t)(semi - p) : strlen(p);
+		while (len && isspace((unsigned char)*p)) { ++p; --len; }
+		while (len && isspace((unsigned char)p[len - 1])) --len;
+		double q[4];
+		int got = mkScene_NumberList(p, len, q, 4);
+		int item = s->orientation_count + 1;
+		if (got != 4)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "quaternions: item %d '%.*s' must be 4 comma-separated numbers "
+				"w,x,y,z", item, (int)(len > 40 ? 40 : len), p);
+		mkMat3 R;
+		if (!mkScene_QuatRotation(q, &R))
+			return mkFail(MK_ERR_RANGE, err, errlen, "quaternions: item %d = %g,%g,%g,%g is out of range: must be a "
+				"nonzero quaternion with finite components of magnitude at most 1e150", item, q[0], q[1], q[2], q[3]);
+		if (!mkScene_Grow((void **)&s->rotations, rcap, s->orientation_count + 1, sizeof *s->rotations))
+			return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+		s->rotations[s->orientation_count++] = R;
+		if (!semi || !semi[1]) return MK_OK;
+		p = semi + 1;
+	}
 }
 
 mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
@@ -340,7 +383,7 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 	char sub[900];
 #define BAD(code, ...) do { r = (code); char b_[1024]; snprintf(b_, sizeof b_, __VA_ARGS__); \
 	mkFail(r, msg, msglen, "line %d: %s", lineno, b_); goto done; } while (0)
-	while (next_line(&cur, line, MK_SCENE_LINE_MAX, &too_long)) {
+	while (mkScene_NextLine(&cur, line, MK_SCENE_LINE_MAX, &too_long)) {
 		++lineno;
 		if (too_long) BAD(MK_ERR_ARGUMENT, "line is longer than %d characters", MK_SCENE_LINE_MAX - 1);
 		if (!line[0]) continue;
@@ -370,7 +413,7 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 			char what[32];
 			snprintf(what, sizeof what, "obstacle%d", s.obstacle_count);
 			if (s.obstacle_count >= 100000000) BAD(MK_ERR_RANGE, "more than 100000000 obstacles");
-			if (!grow((void **)&s.obstacles, &ocap, s.obstacle_count + 1, sizeof *s.obstacles))
+			if (!mkScene_Grow((void **)&s.obstacles, &ocap, s.obstacle_count + 1, sizeof *s.obstacles))
 				BAD(MK_ERR_MEMORY, "out of memory");
 			mkResult br = mkSceneBody_Parse(arg, s.dim, what, &s.obstacles[s.obstacle_count], sub, sizeof sub);
 			if (br != MK_OK) BAD(br, "%s", sub);
@@ -383,59 +426,12 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 				BAD(MK_ERR_ARGUMENT, "'headings' is for 2D scenes: a 3D scene gives 'quaternions w,x,y,z;...' or 'rotations FILE'");
 			if (orient_line) BAD(MK_ERR_ARGUMENT, "orientations are given twice (first on line %d)", orient_line);
 			orient_line = lineno;
-			if (KW("headings")) {
-				if (!strchr(arg, ',') && !strchr(arg, '.') && !strchr(arg, 'e') && !strchr(arg, 'E')) {
-					char *end;
-					errno = 0;
-					long n = strtol(arg, &end, 10);
-					if (*end || end == arg || errno || n < 1 || n > MK_SCENE_HEADINGS_MAX)
-						BAD(MK_ERR_RANGE, "headings = '%.40s' is out of range: must be an integer N in [1, %d] "
-							"or a comma-separated list of angles in radians", arg, MK_SCENE_HEADINGS_MAX);
-					if (!grow((void **)&s.headings, &hcap, (int)n, sizeof *s.headings)) BAD(MK_ERR_MEMORY, "out of memory");
-					for (long k = 0; k < n; ++k) s.headings[k] = 2.0 * MK_PI * (double)k / (double)n;
-					s.orientation_count = (int)n;
-				} else {
-					char *p = arg;
-					for (;;) {
-						char *end;
-						double v = strtod(p, &end);
-						if (end == p || (*end != ',' && *end != 0))
-							BAD(MK_ERR_ARGUMENT, "headings: item %d '%.20s' is not a number: must be an angle in radians",
-								s.orientation_count + 1, p);
-						if (!isfinite(v) || fabs(v) > MK_SCENE_ANGLE_MAX)
-							BAD(MK_ERR_RANGE, "headings: item %d = %g is out of range: must be a finite angle in radians "
-								"in [-%g, %g]", s.orientation_count + 1, v, MK_SCENE_ANGLE_MAX, MK_SCENE_ANGLE_MAX);
-						if (!grow((void **)&s.headings, &hcap, s.orientation_count + 1, sizeof *s.headings))
-							BAD(MK_ERR_MEMORY, "out of memory");
-						s.headings[s.orientation_count++] = v;
-						if (!*end) break;
-						p = end + 1;
-					}
-				}
-			} else if (KW("quaternions")) {
-				char *p = arg;
-				for (;;) {
-					char *semi = strchr(p, ';');
-					size_t len = semi ? (size_t)(semi - p) : strlen(p);
-					while (len && isspace((unsigned char)*p)) { ++p; --len; }
-					while (len && isspace((unsigned char)p[len - 1])) --len;
-					double q[4];
-					int got = number_list(p, len, q, 4);
-					int item = s.orientation_count + 1;
-					if (got != 4)
-						BAD(MK_ERR_ARGUMENT, "quaternions: item %d '%.*s' must be 4 comma-separated numbers w,x,y,z",
-							item, (int)(len > 40 ? 40 : len), p);
-					mkMat3 R;
-					if (!quat_rotation(q, &R))
-						BAD(MK_ERR_RANGE, "quaternions: item %d = %g,%g,%g,%g is out of range: must be a nonzero "
-							"quaternion with finite components of magnitude at most 1e150", item, q[0], q[1], q[2], q[3]);
-					if (!grow((void **)&s.rotations, &rcap, s.orientation_count + 1, sizeof *s.rotations))
-						BAD(MK_ERR_MEMORY, "out of memory");
-					s.rotations[s.orientation_count++] = R;
-					if (!semi || !semi[1]) break;
-					p = semi + 1;
-				}
-			} else {
+			char err[1024];
+			mkResult hr = MK_OK;
+			if (KW("headings")) hr = mkScene_ParseHeadings(&s, &hcap, arg, err, sizeof err);
+			else if (KW("quaternions")) hr = mkScene_ParseQuaternions(&s, &rcap, arg, err, sizeof err);
+			if (hr != MK_OK) BAD(hr, "%s", err);
+			if (KW("rotations")) {
 				if (strlen(arg) >= sizeof s.rotations_file)
 					BAD(MK_ERR_ARGUMENT, "rotations: file name longer than %d characters", (int)sizeof s.rotations_file - 1);
 				snprintf(s.rotations_file, sizeof s.rotations_file, "%s", arg);
@@ -471,24 +467,24 @@ mkResult mkScene_SetRotations(mkScene *s, const char *text, const char *name, ch
 	const char *cur = text;
 	int lineno = 0, too_long = 0, count = 0, cap = 0, first = 1;
 	mkMat3 *rot = NULL;
-	while (next_line(&cur, line, sizeof line, &too_long)) {
+	while (mkScene_NextLine(&cur, line, sizeof line, &too_long)) {
 		++lineno;
 		if (!line[0]) continue;
 		if (too_long) { free(rot); return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: line too long", name, lineno); }
 		double v[9];
-		int got = number_list(line, strlen(line), v, 9);
+		int got = mkScene_NumberList(line, strlen(line), v, 9);
 		if (got < 0 && first) { first = 0; continue; } /* a header */
 		first = 0;
 		mkMat3 R;
 		if (got == 9) {
 			for (int i = 0; i < 9; ++i) R.m[i / 3][i % 3] = v[i];
-			if (!is_rotation(R)) {
+			if (!mkScene_IsRotation(R)) {
 				free(rot);
 				return mkFail(MK_ERR_RANGE, msg, msglen, "%s:%d: the matrix is not a rotation: must have R^T R = I and "
 					"det R = 1 to within 1e-6", name, lineno);
 			}
 		} else if (got == 4) {
-			if (!quat_rotation(v, &R)) {
+			if (!mkScene_QuatRotation(v, &R)) {
 				free(rot);
 				return mkFail(MK_ERR_RANGE, msg, msglen, "%s:%d: quaternion %g,%g,%g,%g is out of range: must be nonzero "
 					"and finite", name, lineno, v[0], v[1], v[2], v[3]);
@@ -498,7 +494,7 @@ mkResult mkScene_SetRotations(mkScene *s, const char *text, const char *name, ch
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: expected 9 comma-separated numbers r11,...,r33 or a "
 				"quaternion w,x,y,z, got '%.40s'", name, lineno, line);
 		}
-		if (!grow((void **)&rot, &cap, count + 1, sizeof *rot)) {
+		if (!mkScene_Grow((void **)&rot, &cap, count + 1, sizeof *rot)) {
 			free(rot);
 			return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 		}

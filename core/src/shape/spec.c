@@ -1,4 +1,6 @@
-/* spec.c - parse and validate the SPEC text of a body. */
+/* spec.c - parse and validate the SPEC text of a body: its kind, then
+ * key=value tokens (the tokenizer and the pose parser are shared through
+ * spec_keys.h with the scene parser's box and cylinder). */
 #include "mink/spec.h"
 
 #include <ctype.h>
@@ -9,50 +11,55 @@
 #include <string.h>
 
 #include "base/message.h"
+#include "shape/spec_keys.h"
 
 #define SPEC_MAX_LEN 4096
-#define SPEC_MAX_VALUES 9
 
-static const char *const kind_names[] = {"circle", "ellipse", "superellipse", "sphere", "ellipsoid", "superquadric"};
+static const char *const mkSpec_KindNames[] = {"circle", "ellipse", "superellipse", "sphere", "ellipsoid", "superquadric"};
 
 const char *mkKind_Name(mkKind k)
 {
-	return (int)k >= 0 && k <= MK_KIND_SUPERQUADRIC ? kind_names[k] : "?";
+	return (int)k >= 0 && k <= MK_KIND_SUPERQUADRIC ? mkSpec_KindNames[k] : "?";
 }
 
-/* Keys, in a fixed order; a kind allows a subset. */
-enum { K_A, K_B, K_C, K_EPS, K_EPS1, K_EPS2, K_ROT, K_QUAT, K_SHEAR, K_M, K_AT, K_COUNT };
-static const char *const key_names[K_COUNT] = {"a", "b", "c", "eps", "eps1", "eps2", "rot", "quat", "shear", "M", "at"};
+static const char *const mkSpec_KeyNames[MK_SPEC_KEY_COUNT] = {"a", "b", "c", "eps", "eps1", "eps2", "size", "r", "h",
+	"rot", "quat", "shear", "M", "at"};
 
-static unsigned allowed_keys(mkKind k)
+unsigned mkSpecKeys_Pose(int dim)
 {
-	const unsigned pose2 = 1u << K_ROT | 1u << K_SHEAR | 1u << K_M | 1u << K_AT;
-	const unsigned pose3 = 1u << K_QUAT | 1u << K_M | 1u << K_AT;
+	return dim == 2 ? MK_SPEC_BIT(MK_SPEC_ROT) | MK_SPEC_BIT(MK_SPEC_SHEAR) | MK_SPEC_BIT(MK_SPEC_M) | MK_SPEC_BIT(MK_SPEC_AT)
+		: MK_SPEC_BIT(MK_SPEC_QUAT) | MK_SPEC_BIT(MK_SPEC_M) | MK_SPEC_BIT(MK_SPEC_AT);
+}
+
+static unsigned mkSpec_AllowedKeys(mkKind k)
+{
+	const unsigned a = MK_SPEC_BIT(MK_SPEC_A), b = MK_SPEC_BIT(MK_SPEC_B), c = MK_SPEC_BIT(MK_SPEC_C);
 	switch (k) {
-	case MK_KIND_CIRCLE: return 1u << K_A | pose2;
-	case MK_KIND_ELLIPSE: return 1u << K_A | 1u << K_B | pose2;
-	case MK_KIND_SUPERELLIPSE: return 1u << K_A | 1u << K_B | 1u << K_EPS | pose2;
-	case MK_KIND_SPHERE: return 1u << K_A | pose3;
-	case MK_KIND_ELLIPSOID: return 1u << K_A | 1u << K_B | 1u << K_C | pose3;
-	case MK_KIND_SUPERQUADRIC: return 1u << K_A | 1u << K_B | 1u << K_C | 1u << K_EPS1 | 1u << K_EPS2 | pose3;
+	case MK_KIND_CIRCLE: return a | mkSpecKeys_Pose(2);
+	case MK_KIND_ELLIPSE: return a | b | mkSpecKeys_Pose(2);
+	case MK_KIND_SUPERELLIPSE: return a | b | MK_SPEC_BIT(MK_SPEC_EPS) | mkSpecKeys_Pose(2);
+	case MK_KIND_SPHERE: return a | mkSpecKeys_Pose(3);
+	case MK_KIND_ELLIPSOID: return a | b | c | mkSpecKeys_Pose(3);
+	case MK_KIND_SUPERQUADRIC: return a | b | c | MK_SPEC_BIT(MK_SPEC_EPS1) | MK_SPEC_BIT(MK_SPEC_EPS2) | mkSpecKeys_Pose(3);
 	}
 	return 0;
 }
 
-static const unsigned shape_keys = 1u << K_A | 1u << K_B | 1u << K_C | 1u << K_EPS | 1u << K_EPS1 | 1u << K_EPS2;
+static const unsigned mkSpec_ShapeKeys = MK_SPEC_BIT(MK_SPEC_A) | MK_SPEC_BIT(MK_SPEC_B) | MK_SPEC_BIT(MK_SPEC_C)
+	| MK_SPEC_BIT(MK_SPEC_EPS) | MK_SPEC_BIT(MK_SPEC_EPS1) | MK_SPEC_BIT(MK_SPEC_EPS2);
 
-static void list_keys(unsigned mask, char *buf, size_t len)
+void mkSpecKeys_List(unsigned mask, char *buf, size_t len)
 {
 	buf[0] = 0;
-	for (int i = 0; i < K_COUNT; ++i) {
+	for (int i = 0; i < MK_SPEC_KEY_COUNT; ++i) {
 		if (!(mask & 1u << i)) continue;
 		size_t n = strlen(buf);
-		snprintf(buf + n, len - n, "%s%s", n ? ", " : "", key_names[i]);
+		snprintf(buf + n, len - n, "%s%s", n ? ", " : "", mkSpec_KeyNames[i]);
 	}
 }
 
 /* Parse a comma-separated list of exactly `count` finite numbers. */
-static int parse_numbers(const char *s, size_t len, int count, double *out, int *got)
+static int mkSpec_ParseNumbers(const char *s, size_t len, int count, double *out, int *got)
 {
 	char buf[SPEC_MAX_LEN];
 	if (len >= sizeof buf) return 0;
@@ -65,7 +72,7 @@ static int parse_numbers(const char *s, size_t len, int count, double *out, int 
 		errno = 0;
 		double v = strtod(p, &end);
 		if (end == p || (*end != ',' && *end != 0)) { *got = -1; return 0; }
-		if (n < SPEC_MAX_VALUES) out[n] = v;
+		if (n < MK_SPEC_VALUES_MAX) out[n] = v;
 		++n;
 		if (*end == 0) break;
 		p = end + 1;
@@ -74,38 +81,21 @@ static int parse_numbers(const char *s, size_t len, int count, double *out, int 
 	return n == count;
 }
 
-mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, char *msg, size_t msglen)
+/* How many numbers key takes. */
+static int mkSpecKeys_Count(int key, int dim)
 {
-	if (!what) what = "body";
-	if (!text || !out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: no SPEC given", what);
-	if (dim != 2 && dim != 3) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: dimension %d: must be 2 or 3", what, dim);
-	size_t tlen = 0;
-	while (tlen <= SPEC_MAX_LEN && text[tlen]) ++tlen;
-	if (tlen > SPEC_MAX_LEN)
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, SPEC_MAX_LEN);
+	if (key == MK_SPEC_QUAT) return 4;
+	if (key == MK_SPEC_M) return dim * dim;
+	if (key == MK_SPEC_AT || key == MK_SPEC_SIZE) return dim;
+	return 1;
+}
 
+mkResult mkSpecKeys_Parse(const char *text, int dim, const char *what, const char *kind, unsigned allow,
+	mkSpecValues *v, char *msg, size_t msglen)
+{
 	const char *p = text;
-	while (isspace((unsigned char)*p)) ++p;
-	const char *ks = p;
-	while (*p && !isspace((unsigned char)*p)) ++p;
-	size_t klen = (size_t)(p - ks);
-	if (klen == 0)
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: empty SPEC: expected 'KIND key=value ...' with KIND one of "
-			"circle, ellipse, superellipse (2D), sphere, ellipsoid, superquadric (3D)", what);
-	int kind = -1;
-	for (int i = 0; i < 6; ++i)
-		if (strlen(kind_names[i]) == klen && strncmp(kind_names[i], ks, klen) == 0) kind = i;
-	if (kind < 0)
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: unknown kind '%.*s': must be one of circle, ellipse, "
-			"superellipse (2D), sphere, ellipsoid, superquadric (3D)", what, (int)(klen > 64 ? 64 : klen), ks);
-	int kdim = kind <= MK_KIND_SUPERELLIPSE ? 2 : 3;
-	if (kdim != dim)
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind '%s' is %dD but the problem is %dD: use %s", what,
-			kind_names[kind], kdim, dim, dim == 2 ? "circle, ellipse or superellipse" : "sphere, ellipsoid or superquadric");
-
-	unsigned allow = allowed_keys((mkKind)kind), seen = 0;
-	double val[K_COUNT][SPEC_MAX_VALUES] = {{0}};
 	char keys[128];
+	memset(v, 0, sizeof *v);
 	while (*p) {
 		while (isspace((unsigned char)*p)) ++p;
 		if (!*p) break;
@@ -118,94 +108,149 @@ mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, 
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: '%.*s' is not of the form key=value", what, shown, ts);
 		size_t nl = (size_t)(eq - ts);
 		int key = -1;
-		for (int i = 0; i < K_COUNT; ++i)
-			if (strlen(key_names[i]) == nl && strncmp(key_names[i], ts, nl) == 0) key = i;
-		list_keys(allow, keys, sizeof keys);
-		if (key < 0 || !(allow & 1u << key))
+		for (int i = 0; i < MK_SPEC_KEY_COUNT; ++i)
+			if (strlen(mkSpec_KeyNames[i]) == nl && strncmp(mkSpec_KeyNames[i], ts, nl) == 0) key = i;
+		if (key < 0 || !(allow & 1u << key)) {
+			mkSpecKeys_List(allow, keys, sizeof keys);
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%.*s' is not allowed for %s: allowed keys are %s",
-				what, (int)(nl > 32 ? 32 : nl), ts, kind_names[kind], keys);
-		if (seen & 1u << key)
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, key_names[key]);
-		seen |= 1u << key;
-		int want = 1;
-		if (key == K_QUAT) want = 4;
-		else if (key == K_M) want = dim * dim;
-		else if (key == K_AT) want = dim;
+				what, (int)(nl > 32 ? 32 : nl), ts, kind, keys);
+		}
+		if (v->seen & 1u << key)
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: key '%s' is given twice", what, mkSpec_KeyNames[key]);
+		v->seen |= 1u << key;
+		int want = mkSpecKeys_Count(key, dim);
 		size_t vl = tl - nl - 1;
 		if (vl == 0)
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, key_names[key]);
+			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s: missing value", what, mkSpec_KeyNames[key]);
 		int got = 0;
-		if (!parse_numbers(eq + 1, vl, want, val[key], &got)) {
+		if (!mkSpec_ParseNumbers(eq + 1, vl, want, v->val[key], &got)) {
 			if (got < 0)
-				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, key_names[key],
+				return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s = '%.*s' is not a number%s", what, mkSpec_KeyNames[key],
 					(int)(vl > 64 ? 64 : vl), eq + 1, want > 1 ? " list" : "");
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s.%s takes %d comma-separated number%s, got %d", what,
-				key_names[key], want, want > 1 ? "s" : "", got);
+				mkSpec_KeyNames[key], want, want > 1 ? "s" : "", got);
 		}
 	}
-	unsigned need = allow & shape_keys;
-	if ((need & seen) != need) {
-		unsigned missing = need & ~seen;
-		list_keys(missing, keys, sizeof keys);
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: %s needs %s", what, kind_names[kind], keys);
-	}
-	if ((seen & 1u << K_M) && (seen & (1u << K_ROT | 1u << K_SHEAR | 1u << K_QUAT)))
-		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: M replaces %s: give one or the other", what,
-			dim == 2 ? "rot and shear" : "quat");
+	return MK_OK;
+}
 
+mkResult mkSpecKeys_Pose2(const mkSpecValues *v, const char *what, mkMat2 *M, mkVec2 *t, char *msg, size_t msglen)
+{
+	unsigned seen = v->seen;
+	if ((seen & MK_SPEC_BIT(MK_SPEC_M)) && (seen & (MK_SPEC_BIT(MK_SPEC_ROT) | MK_SPEC_BIT(MK_SPEC_SHEAR))))
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: M replaces rot and shear: give one or the other", what);
+	*M = mkMat2_Identity();
+	if (seen & MK_SPEC_BIT(MK_SPEC_M)) {
+		memcpy(&M->m[0][0], v->val[MK_SPEC_M], 4 * sizeof(double));
+	} else {
+		double rot = (seen & MK_SPEC_BIT(MK_SPEC_ROT)) ? v->val[MK_SPEC_ROT][0] : 0.0;
+		double sh = (seen & MK_SPEC_BIT(MK_SPEC_SHEAR)) ? v->val[MK_SPEC_SHEAR][0] : 0.0;
+		if (!isfinite(rot) || fabs(rot) > 1e6)
+			return mkFail(MK_ERR_RANGE, msg, msglen, "%s.rot = %g is out of range: must be a finite angle in "
+				"radians in [-1e6, 1e6]", what, rot);
+		if (!isfinite(sh) || fabs(sh) > MK_MAP_ENTRY_MAX)
+			return mkFail(MK_ERR_RANGE, msg, msglen, "%s.shear = %g is out of range: must be a finite number "
+				"in [-%g, %g]", what, sh, MK_MAP_ENTRY_MAX, MK_MAP_ENTRY_MAX);
+		*M = mkMat2_Mul(mkMat2_Rotation(rot), mkMat2_Shear(sh));
+	}
+	int at = (seen & MK_SPEC_BIT(MK_SPEC_AT)) != 0;
+	t->x = at ? v->val[MK_SPEC_AT][0] : 0.0;
+	t->y = at ? v->val[MK_SPEC_AT][1] : 0.0;
+	return MK_OK;
+}
+
+mkResult mkSpecKeys_Pose3(const mkSpecValues *v, const char *what, mkMat3 *M, mkVec3 *t, char *msg, size_t msglen)
+{
+	unsigned seen = v->seen;
+	if ((seen & MK_SPEC_BIT(MK_SPEC_M)) && (seen & MK_SPEC_BIT(MK_SPEC_QUAT)))
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: M replaces quat: give one or the other", what);
+	*M = mkMat3_Identity();
+	if (seen & MK_SPEC_BIT(MK_SPEC_M)) {
+		memcpy(&M->m[0][0], v->val[MK_SPEC_M], 9 * sizeof(double));
+	} else if (seen & MK_SPEC_BIT(MK_SPEC_QUAT)) {
+		const double *q = v->val[MK_SPEC_QUAT];
+		for (int i = 0; i < 4; ++i)
+			if (!isfinite(q[i]) || fabs(q[i]) > 1e150)
+				return mkFail(MK_ERR_RANGE, msg, msglen, "%s.quat component %d = %g is out of range: must be "
+					"finite with magnitude at most 1e150", what, i + 1, q[i]);
+		*M = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
+		if (!mkMat3_IsFinite(*M))
+			return mkFail(MK_ERR_RANGE, msg, msglen, "%s.quat = %g,%g,%g,%g is zero: must be a nonzero "
+				"quaternion w,x,y,z", what, q[0], q[1], q[2], q[3]);
+	}
+	int at = (seen & MK_SPEC_BIT(MK_SPEC_AT)) != 0;
+	t->x = at ? v->val[MK_SPEC_AT][0] : 0.0;
+	t->y = at ? v->val[MK_SPEC_AT][1] : 0.0;
+	t->z = at ? v->val[MK_SPEC_AT][2] : 0.0;
+	return MK_OK;
+}
+
+/* The kind at the start of text (*rest: what follows it), or -1 with a message. */
+static int mkSpec_Kind(const char *text, int dim, const char *what, const char **rest, char *msg, size_t msglen)
+{
+	const char *p = text;
+	while (isspace((unsigned char)*p)) ++p;
+	const char *ks = p;
+	while (*p && !isspace((unsigned char)*p)) ++p;
+	size_t klen = (size_t)(p - ks);
+	*rest = p;
+	if (klen == 0)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: empty SPEC: expected 'KIND key=value ...' with KIND one of "
+			"circle, ellipse, superellipse (2D), sphere, ellipsoid, superquadric (3D)", what), -1;
+	int kind = -1;
+	for (int i = 0; i < 6; ++i)
+		if (strlen(mkSpec_KindNames[i]) == klen && strncmp(mkSpec_KindNames[i], ks, klen) == 0) kind = i;
+	if (kind < 0)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: unknown kind '%.*s': must be one of circle, ellipse, "
+			"superellipse (2D), sphere, ellipsoid, superquadric (3D)", what, (int)(klen > 64 ? 64 : klen), ks), -1;
+	int kdim = kind <= MK_KIND_SUPERELLIPSE ? 2 : 3;
+	if (kdim != dim)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: kind '%s' is %dD but the problem is %dD: use %s", what,
+			mkSpec_KindNames[kind], kdim, dim, dim == 2 ? "circle, ellipse or superellipse" : "sphere, ellipsoid or superquadric"), -1;
+	return kind;
+}
+
+mkResult mkSpec_Parse(const char *text, int dim, const char *what, mkSpec *out, char *msg, size_t msglen)
+{
+	if (!what) what = "body";
+	if (!text || !out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: no SPEC given", what);
+	if (dim != 2 && dim != 3) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: dimension %d: must be 2 or 3", what, dim);
+	size_t tlen = 0;
+	while (tlen <= SPEC_MAX_LEN && text[tlen]) ++tlen;
+	if (tlen > SPEC_MAX_LEN)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: SPEC is longer than %d characters", what, SPEC_MAX_LEN);
+	const char *p;
+	int kind = mkSpec_Kind(text, dim, what, &p, msg, msglen);
+	if (kind < 0) return MK_ERR_ARGUMENT;
+	unsigned allow = mkSpec_AllowedKeys((mkKind)kind);
+	mkSpecValues v;
+	mkResult r = mkSpecKeys_Parse(p, dim, what, mkSpec_KindNames[kind], allow, &v, msg, msglen);
+	if (r != MK_OK) return r;
+	unsigned need = allow & mkSpec_ShapeKeys;
+	if ((need & v.seen) != need) {
+		char keys[128];
+		mkSpecKeys_List(need & ~v.seen, keys, sizeof keys);
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s: %s needs %s", what, mkSpec_KindNames[kind], keys);
+	}
 	out->dim = dim;
 	out->kind = (mkKind)kind;
+	double a = v.val[MK_SPEC_A][0];
 	if (dim == 2) {
 		mkBody2 *b = &out->body2;
-		double a = val[K_A][0];
 		b->shape.a = a;
-		b->shape.b = kind == MK_KIND_CIRCLE ? a : val[K_B][0];
-		b->shape.eps = kind == MK_KIND_SUPERELLIPSE ? val[K_EPS][0] : 1.0;
-		b->M = mkMat2_Identity();
-		if (seen & 1u << K_M) {
-			memcpy(&b->M.m[0][0], val[K_M], 4 * sizeof(double));
-		} else {
-			double rot = (seen & 1u << K_ROT) ? val[K_ROT][0] : 0.0;
-			double sh = (seen & 1u << K_SHEAR) ? val[K_SHEAR][0] : 0.0;
-			if (!isfinite(rot) || fabs(rot) > 1e6)
-				return mkFail(MK_ERR_RANGE, msg, msglen, "%s.rot = %g is out of range: must be a finite angle in "
-					"radians in [-1e6, 1e6]", what, rot);
-			if (!isfinite(sh) || fabs(sh) > MK_MAP_ENTRY_MAX)
-				return mkFail(MK_ERR_RANGE, msg, msglen, "%s.shear = %g is out of range: must be a finite number "
-					"in [-%g, %g]", what, sh, MK_MAP_ENTRY_MAX, MK_MAP_ENTRY_MAX);
-			b->M = mkMat2_Mul(mkMat2_Rotation(rot), mkMat2_Shear(sh));
-		}
-		b->t.x = (seen & 1u << K_AT) ? val[K_AT][0] : 0.0;
-		b->t.y = (seen & 1u << K_AT) ? val[K_AT][1] : 0.0;
+		b->shape.b = kind == MK_KIND_CIRCLE ? a : v.val[MK_SPEC_B][0];
+		b->shape.eps = kind == MK_KIND_SUPERELLIPSE ? v.val[MK_SPEC_EPS][0] : 1.0;
+		if ((r = mkSpecKeys_Pose2(&v, what, &b->M, &b->t, msg, msglen)) != MK_OK) return r;
 		if (!mkBody2_IsValid(*b, what, msg, msglen)) return MK_ERR_RANGE;
 	} else {
 		mkBody3 *b = &out->body3;
-		double a = val[K_A][0];
 		int sphere = kind == MK_KIND_SPHERE;
 		b->shape.a = a;
-		b->shape.b = sphere ? a : val[K_B][0];
-		b->shape.c = sphere ? a : val[K_C][0];
-		b->shape.eps1 = kind == MK_KIND_SUPERQUADRIC ? val[K_EPS1][0] : 1.0;
-		b->shape.eps2 = kind == MK_KIND_SUPERQUADRIC ? val[K_EPS2][0] : 1.0;
-		b->M = mkMat3_Identity();
-		if (seen & 1u << K_M) {
-			memcpy(&b->M.m[0][0], val[K_M], 9 * sizeof(double));
-		} else if (seen & 1u << K_QUAT) {
-			int ok = 0;
-			const double *q = val[K_QUAT];
-			for (int i = 0; i < 4; ++i)
-				if (!isfinite(q[i]) || fabs(q[i]) > 1e150)
-					return mkFail(MK_ERR_RANGE, msg, msglen, "%s.quat component %d = %g is out of range: must be "
-						"finite with magnitude at most 1e150", what, i + 1, q[i]);
-			b->M = mkMat3_FromQuat(q[0], q[1], q[2], q[3]);
-			ok = mkMat3_IsFinite(b->M);
-			if (!ok)
-				return mkFail(MK_ERR_RANGE, msg, msglen, "%s.quat = %g,%g,%g,%g is zero: must be a nonzero "
-					"quaternion w,x,y,z", what, q[0], q[1], q[2], q[3]);
-		}
-		b->t.x = (seen & 1u << K_AT) ? val[K_AT][0] : 0.0;
-		b->t.y = (seen & 1u << K_AT) ? val[K_AT][1] : 0.0;
-		b->t.z = (seen & 1u << K_AT) ? val[K_AT][2] : 0.0;
+		b->shape.b = sphere ? a : v.val[MK_SPEC_B][0];
+		b->shape.c = sphere ? a : v.val[MK_SPEC_C][0];
+		b->shape.eps1 = kind == MK_KIND_SUPERQUADRIC ? v.val[MK_SPEC_EPS1][0] : 1.0;
+		b->shape.eps2 = kind == MK_KIND_SUPERQUADRIC ? v.val[MK_SPEC_EPS2][0] : 1.0;
+		if ((r = mkSpecKeys_Pose3(&v, what, &b->M, &b->t, msg, msglen)) != MK_OK) return r;
 		if (!mkBody3_IsValid(*b, what, msg, msglen)) return MK_ERR_RANGE;
 	}
 	return MK_OK;

@@ -1,5 +1,7 @@
-# Install the built project into a fresh prefix, then build a consumer
-# against it twice: through pkg-config and through find_package(mink).
+# Install the built project into a fresh prefix, then build two consumers
+# (consumer.c of mink/mink.h, consumer_cspace.c of mink/cspace.h) against it
+# twice: through pkg-config (mink, mink-cspace) and through find_package(mink)
+# (mink::mink_core, mink::cspace).
 # Inputs: BUILD (the build tree), WORK (scratch), SRC (this folder), CC, and
 # EXTRA: compiler flags the library was built with that a consumer needs too
 # (the sanitizers).
@@ -14,22 +16,28 @@ file(GLOB_RECURSE pcs ${prefix}/*/mink.pc)
 list(GET pcs 0 pc)
 get_filename_component(pcdir ${pc} DIRECTORY)
 set(ENV{PKG_CONFIG_PATH} ${pcdir})
-execute_process(COMMAND pkg-config --static --cflags --libs mink OUTPUT_VARIABLE flags RESULT_VARIABLE rc OUTPUT_STRIP_TRAILING_WHITESPACE)
-if(rc)
-  message(FATAL_ERROR "pkg-config does not find the installed mink.pc")
-endif()
-separate_arguments(flags UNIX_COMMAND "${flags}")
 separate_arguments(extra UNIX_COMMAND "${EXTRA}")
-execute_process(COMMAND ${CC} -std=c11 ${extra} ${SRC}/consumer.c ${flags} -o ${WORK}/consumer_pc RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "compiling against pkg-config flags failed")
-endif()
-execute_process(COMMAND ${WORK}/consumer_pc RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "the pkg-config consumer computed a wrong point")
-endif()
+foreach(pair "mink;consumer" "mink-cspace;consumer_cspace")
+  list(GET pair 0 pkg)
+  list(GET pair 1 prog)
+  execute_process(COMMAND pkg-config --static --cflags --libs ${pkg} OUTPUT_VARIABLE flags RESULT_VARIABLE rc
+    OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(rc)
+    message(FATAL_ERROR "pkg-config does not find the installed ${pkg}.pc")
+  endif()
+  separate_arguments(flags UNIX_COMMAND "${flags}")
+  execute_process(COMMAND ${CC} -std=c11 ${extra} ${SRC}/${prog}.c ${flags} -o ${WORK}/${prog}_pc RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "compiling ${prog}.c against the pkg-config flags of ${pkg} failed")
+  endif()
+  execute_process(COMMAND ${WORK}/${prog}_pc RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "the pkg-config ${prog} computed a wrong result")
+  endif()
+endforeach()
 configure_file(${SRC}/CMakeLists.txt.in ${WORK}/cm/CMakeLists.txt COPYONLY)
 configure_file(${SRC}/consumer.c ${WORK}/cm/consumer.c COPYONLY)
+configure_file(${SRC}/consumer_cspace.c ${WORK}/cm/consumer_cspace.c COPYONLY)
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${WORK}/cm -B ${WORK}/cm/build -DCMAKE_PREFIX_PATH=${prefix}
   "-DCMAKE_C_FLAGS=${EXTRA}" "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA}"
   RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -40,8 +48,10 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK}/cm/build RESULT_VARIABL
 if(rc)
   message(FATAL_ERROR "building the find_package consumer failed")
 endif()
-execute_process(COMMAND ${WORK}/cm/build/consumer RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "the find_package consumer computed a wrong point")
-endif()
+foreach(prog consumer consumer_cspace)
+  execute_process(COMMAND ${WORK}/cm/build/${prog} RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "the find_package ${prog} computed a wrong result")
+  endif()
+endforeach()
 message(STATUS "install: pkg-config and find_package consumers built and ran")

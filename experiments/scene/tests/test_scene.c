@@ -12,11 +12,11 @@
  *    certified error is at most T; the uniform row's is at most the
  *    adaptive one (or the row says capped); factor = the points ratio; and
  *    the uniform parameter is checked independently: per boundary,
- *    mkCObstacle2_Uniform at that n (single-boundary code, not the scene
+ *    mkCSpace2_Uniform at that n (single-boundary code, not the scene
  *    run) gives errors whose maximum is the row's error, and at n - 1 some
  *    boundary is above the adaptive error (the smallest n).
  *  - Part A on a small 3D scene at T = 0.05: likewise with
- *    mkCObstacle3_Uniform at the row's splits s and s - 1. */
+ *    mkCSpace3_Uniform at the row's splits s and s - 1. */
 #include "scene.h"
 
 #include <math.h>
@@ -88,7 +88,7 @@ static void mkTestCompare(const char *dir)
 			rob.M = mkMat2_Mul(mkMat2_Rotation(s.headings[o]), rob.M);
 			double *x = NULL, *y = NULL, err = NAN;
 			int cap = 0, cnt = 0;
-			ENSURE(mkCObstacle2_Uniform(s.obstacles[i].spec.body2, rob, MK_BOUND_INNER, n, MK_IMPL_AUTO, &x, &y, &cap,
+			ENSURE(mkCSpace2_Uniform(s.obstacles[i].spec.body2, rob, MK_BOUND_INNER, n, MK_IMPL_AUTO, &x, &y, &cap,
 				&cnt, &err) == MK_OK);
 			worst = err > worst ? err : worst;
 			free(x);
@@ -103,7 +103,7 @@ static void mkTestCompare(const char *dir)
 			rob.M = mkMat2_Mul(mkMat2_Rotation(s.headings[o]), rob.M);
 			double *x = NULL, *y = NULL, err = NAN;
 			int cap = 0, cnt = 0;
-			ENSURE(mkCObstacle2_Uniform(s.obstacles[i].spec.body2, rob, MK_BOUND_INNER, n - 1, MK_IMPL_AUTO, &x, &y,
+			ENSURE(mkCSpace2_Uniform(s.obstacles[i].spec.body2, rob, MK_BOUND_INNER, n - 1, MK_IMPL_AUTO, &x, &y,
 				&cap, &cnt, &err) == MK_OK);
 			below = err > below ? err : below;
 			free(x);
@@ -116,7 +116,7 @@ static void mkTestCompare(const char *dir)
 
 /* 3D: the uniform row's splits s reach the adaptive error on every
  * boundary and s - 1 does not on some, both checked per boundary with
- * mkCObstacle3_Uniform (single-boundary code, not the scene run). */
+ * mkCSpace3_Uniform (single-boundary code, not the scene run). */
 static void mkTestCompare3(const char *dir)
 {
 	static const char text[] = "dim 3\nrobot superquadric a=1 b=0.6 c=0.8 eps1=0.5 eps2=0.8\n"
@@ -137,7 +137,7 @@ static void mkTestCompare3(const char *dir)
 				rob.M = mkMat3_Mul(mkScene3_Orientation(&s, o), rob.M);
 				double *x = NULL, *y = NULL, *z = NULL, err = NAN;
 				int cap = 0, cnt = 0, fcap = 0, fcount = 0;
-				ENSURE(mkCObstacle3_Uniform(s.obstacles[i].spec.body3, rob, MK_BOUND_INNER, splits - k, MK_IMPL_AUTO,
+				ENSURE(mkCSpace3_Uniform(s.obstacles[i].spec.body3, rob, MK_BOUND_INNER, splits - k, MK_IMPL_AUTO,
 					&x, &y, &z, &cap, NULL, &fcap, &cnt, &fcount, &err) == MK_OK);
 				worst[k] = err > worst[k] ? err : worst[k];
 				free(x);
