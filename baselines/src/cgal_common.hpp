@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <mink/method.h>
+#include <mink/registry.h>
 
 namespace mkcgal {
 

@@ -8,6 +8,7 @@
 #include <libqhull_r/qhull_ra.h>
 
 #include <mink/baselines.h>
+#include <mink/registry.h>
 
 static mkResult from_exitcode(int code)
 {

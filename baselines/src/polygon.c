@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include <mink/baselines.h>
+#include <mink/registry.h>
 
 /* Index of the lowest (then leftmost) point. */
 static int lowest(const double *xy, int count)

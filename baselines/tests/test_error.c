@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include <mink/baselines.h>
+#include <mink/registry.h>
 #include <mink/error.h>
 #include <mink/referee.h>
 
@@ -388,7 +389,7 @@ static void test_closed_points(void)
 	}
 }
 
-/* The three samplings of the issue's item 3 on a boxy body: the closed form
+/* The three samplings (docs/error-measure.md) on a boxy body: the closed form
  * (Theorem 1, exact to rounding) with N = 1000 parameters on a 2 x 1
  * superellipse at eps = 0.1 (turned by 0.3 rad) plus an ellipse, contact
  * set: uniform in B1's surface angles (the paper), uniform in the normal's

@@ -83,7 +83,7 @@ int main(void)
 	 * radian: <= 11 for the random pairs, so ~1e-14 of S at worst. The
 	 * extreme pairs (ratio 1e3, shear 10) could in the worst direction reach
 	 * 1e3 * 100 * a few ulps ~ 1e-11; on these pairs they stay near 1e-14.
-	 * Both are held to 1e-13 of S, the agreement the issue asks for. */
+	 * Both are held to 1e-13 of S. */
 	const double tol_random = 1e-13, tol_extreme = 1e-13;
 
 	for (int t = 0; t < 40; ++t) {

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include <mink/baselines.h>
+#include <mink/registry.h>
 
 #include "ensure.h"
 

@@ -515,7 +515,7 @@ static double cert_paper(const void *ctx, int n)
  * and share nothing with the adaptive walk but the per-arc certificate; the
  * adaptive boundaries' certified errors are checked against the referee
  * first (an understated error would make the uniform target too tight, an
- * overstated one only lowers the factor). The issue's target: the adaptive
+ * overstated one only lowers the factor). The bar held here: the adaptive
  * boundaries need at least 3x fewer points than uniform normals. */
 static void test_points_factor2(void)
 {

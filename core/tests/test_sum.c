@@ -377,7 +377,7 @@ static double gap_ratio(const double *px, const double *py, int n, double eps)
 }
 
 /* The reference code's "almost equally spaced" sampling (mkSample2_Spaced,
- * mkSample3_Spaced). The issue measured, with the reference code run in
+ * mkSample3_Spaced). Measured with the reference code run in
  * Octave, N = 1000 on a 2 x 1 superellipse at eps = 0.1: a largest
  * neighbouring gap of 107 times the mean for even angles and 9 times for
  * the reference's sampling. Both figures carry a rounding artefact of

@@ -1,5 +1,4 @@
-/* extremes.h - the numerical-stability map (the issue "Numerical stability
- * at the extremes"): every registry method that accepts the pair, on every
+/* extremes.h - the numerical-stability map at the extremes: every registry method that accepts the pair, on every
  * cell of the extremes grid (mink/mpref_grid.h: exponents towards both ends
  * of their range, semi-axis ratios, shears, size ratios and translations),
  * scored by the 256-bit MPFR reference (mink/mpref_measure.h): the largest

@@ -43,7 +43,7 @@ static void mkSceneX_PointsTable(mkDoc *d, const mkTable *t)
 	}
 	mkDoc_TableEnd(d);
 	if (isfinite(worst))
-		mkDoc_Para(d, "Smallest factor over the scenes: %.1f (the issue asks for at least 3). A capped search "
+		mkDoc_Para(d, "Smallest factor over the scenes: %.1f (the bar is at least 3). A capped search "
 			"stopped before a whole-scene uniform run too large to afford (or past the largest level); its row "
 			"is the largest uniform sampling known to fail (one boundary's error there is above the target), "
 			"with the points the whole scene would use, so its factor is a lower bound.", worst);
@@ -96,7 +96,7 @@ static void mkSceneX_Table2Table(mkDoc *d, const mkTable *t, const mkTable *c)
 	}
 	mkDoc_TableEnd(d);
 	mkDoc_Para(d, "Efficiency = t1 / (2 t2) of each pair. Levels whose one-thread run takes under %g s are too "
-		"small to measure it (starting the second thread costs a noticeable part of them); the issue's target "
+		"small to measure it (starting the second thread costs a noticeable part of them); the bar "
 		"(at least 85%%) is read on the largest level, the 3D row of 1000 obstacles.", MK_SCENEX_TINY_S);
 }
 

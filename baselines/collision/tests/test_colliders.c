@@ -384,7 +384,7 @@ static void test_deep_pairs(void)
 }
 
 /* Pairs on which no Newton start of minksum-normal converged before the
- * fallbacks (docs/collide.md, "Sixth pass"): box-like pairs of
+ * fallbacks: box-like pairs of
  * mink_bench_colliders (KIND 4; its seed and pair index), bodies written
  * exactly. The first four are separated (Newton stalls on a ridge of a nearly
  * kinked support function, and Gilbert's iteration brackets sd); the last

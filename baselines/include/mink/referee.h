@@ -62,6 +62,7 @@
 #define MINK_REFEREE_H
 
 #include <mink/mink.h>
+#include <mink/registry.h> /* mkPointSet_Resize, mkPointSet_Free */
 
 MK_EXTERN_C_BEGIN
 

@@ -50,6 +50,14 @@
 
 MK_EXTERN_C_BEGIN
 
+/* Make room in a method's point set (mink/method.h) for `count` points of
+ * dimension dim (2 or 3) and set set->count = count. Keeps the allocation
+ * when it is large enough. Returns MK_ERR_ARGUMENT on a bad dim or
+ * count < 0, MK_ERR_MEMORY on failure (the set is then emptied). */
+MK_API mkResult mkPointSet_Resize(mkPointSet *set, int dim, int count);
+/* Release a point set's arrays and leave it empty (safe on an empty set). */
+MK_API void mkPointSet_Free(mkPointSet *set);
+
 /* Number of registered methods, the i-th (NULL when i is out of range), and
  * the method of a given name (NULL if unknown). The table is static: the
  * pointers stay valid for the life of the program. */

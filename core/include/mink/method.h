@@ -20,20 +20,15 @@ MK_EXTERN_C_BEGIN
 
 /* A growable structure-of-arrays point set owned by the caller. z is NULL
  * for dim == 2. Zero-initialise, then reuse across calls to avoid
- * reallocation; release with mkPointSet_Free. */
+ * reallocation. The functions that grow and release it, mkPointSet_Resize
+ * and mkPointSet_Free, are the method registry's (mink/registry.h,
+ * libmink_baselines): libmink itself never allocates. */
 typedef struct mkPointSet {
 	int dim;
 	int count;
 	int capacity;
 	double *x, *y, *z;
 } mkPointSet;
-
-/* Make room for `count` points of dimension dim (2 or 3) and set
- * set->count = count. Keeps the allocation when large enough. Returns
- * MK_ERR_ARGUMENT on a bad dim or count < 0, MK_ERR_MEMORY on failure
- * (the set is then emptied). */
-MK_API mkResult mkPointSet_Resize(mkPointSet *set, int dim, int count);
-MK_API void mkPointSet_Free(mkPointSet *set);
 
 typedef enum mkMethodFlags {
 	MK_METHOD_2D = 1,       /* runs in 2D */

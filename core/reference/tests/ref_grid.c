@@ -1,8 +1,8 @@
 /* ref_grid.c - the extremes grid (mink/mpref_grid.h) and the SPEC text of a
  * reference body.
  *
- * References: the cell counts and the eps axis are the issue's numbers
- * written out here by hand (13 exponents; sweeps of 7 axis ratios, 5 shears,
+ * References: the cell counts and the eps axis are the documented grid's
+ * (docs/experiments/extremes.md) written out here by hand (13 exponents; sweeps of 7 axis ratios, 5 shears,
  * 7 size ratios, 5 translations at 3 exponents; quick: 5 exponents and the
  * two ends of each sweep at eps = 1); the valid ranges are the core's
  * (mink/body.h); the SPEC round trip is judged by the core's own parser

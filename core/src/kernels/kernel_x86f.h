@@ -2,9 +2,9 @@
  * kernel_body.h: float lanes in __m256 (AVX2, 8 lanes) or __m512
  * (AVX-512F, 16 lanes) with SLEEF's 1-ulp float exp and 3.5-ulp float log.
  * The log's extra 2.5 ulp do not show in the tier's errors against MPFR
- * (docs/fast-tiers.md: the same maxima as with the 1-ulp log, measured on
- * every group of core/tests/reference), and it costs 0.6 of the 1-ulp one
- * per call on this machine; it is the only elementary function in SLEEF
+ * (the same maxima as with the 1-ulp log on every group of
+ * core/reference/tests; docs/notes.md, Fast tiers), and it costs 0.6 of the
+ * 1-ulp one per call; it is the only elementary function in SLEEF
  * with a faster float variant (exp has none). The including file
  * defines MK_X86F_W to 8 or 16 and is compiled with the matching -m flags.
  * Loads read doubles, normalise them in double (kernel_f32.h) and round to

@@ -1,7 +1,7 @@
 # Install the built project into a fresh prefix, then build two consumers
 # (consumer.c of mink/mink.h, consumer_cspace.c of mink/cspace.h) against it
 # twice: through pkg-config (mink, mink-cspace) and through find_package(mink)
-# (mink::mink_core, mink::cspace).
+# (mink::core, mink::cspace).
 # Inputs: BUILD (the build tree), WORK (scratch), SRC (this folder), CC, and
 # EXTRA: compiler flags the library was built with that a consumer needs too
 # (the sanitizers).

@@ -4,7 +4,7 @@
  * angles / a 3 x 3 grid, sampled methods at 16 / 3 x 3 per body).
  *
  * The scores come from the 256-bit MPFR reference, which shares no code
- * with the core's closed forms; the bars are the issue's: no non-finite
+ * with the core's closed forms; the bars (docs/experiments/extremes.md): no non-finite
  * output from a closed form, and error_rel <= 1e-13 wherever the condition
  * is at most 1e-14. In 2D, qhull's hull and edge sorting are two libraries
  * computing the same polygon from the same samples: their rows must score

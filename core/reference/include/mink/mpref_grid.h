@@ -43,7 +43,7 @@ typedef struct refCell {
 	char spec1[REF_SPEC_MAX], spec2[REF_SPEC_MAX];
 } refCell;
 
-/* The eps axis of the "eps" family: for FULL the 13 values of the issue
+/* The eps axis of the "eps" family: for FULL these 13 values
  * (1e-6, 1e-4, 1e-3, 1e-2, 0.1, 0.5, 1, 1.5, 1.9, 1.99, 1.999, 2 - 1e-4,
  * 2 - 1e-6), for QUICK 1e-6, 1e-2, 1, 1.99, 2 - 1e-6. Returns the count and
  * points *values at a static table. */
