@@ -22,29 +22,6 @@ const char *mkSceneBody_KindName(const mkSceneBody *b)
 
 /* ---- bodies ------------------------------------------------------------------- */
 
-/* A comma-separated list of numbers; returns how many (at most max), -1 on a
- * malformed list. */
-static int mkScene_NumberList(const char *s, size_t len, double *out, int max)
-{
-	char buf[512];
-	if (len == 0 || len >= sizeof buf) return -1;
-	memcpy(buf, s, len);
-	buf[len] = 0;
-	int n = 0;
-	char *p = buf;
-	for (;;) {
-		char *end;
-		double v = strtod(p, &end);
-		if (end == p || (*end != ',' && *end != 0)) return -1;
-		if (n < max) out[n] = v;
-		++n;
-		if (!*end) break;
-		p = end + 1;
-	}
-	return n;
-}
-
-
 /* Box and cylinder: the shape keys' ranges, then the pose on a unit body
  * (its shape fields unused), validated as every SPEC's. */
 static mkResult mkSceneBody_ParseSolid(const char *text, int dim, const char *what, int box, mkSceneBody *out,
@@ -350,7 +327,7 @@ static mkResult mkScene_ParseQuaternions(mkScene *s, int *rcap, const char *arg,
 		while (len && isspace((unsigned char)*p)) { ++p; --len; }
 		while (len && isspace((unsigned char)p[len - 1])) --len;
 		double q[4];
-		int got = mkScene_NumberList(p, len, q, 4);
+		int got = mkSpecKeys_Numbers(p, len, q, 4);
 		int item = s->orientation_count + 1;
 		if (got != 4)
 			return mkFail(MK_ERR_ARGUMENT, err, errlen, "quaternions: item %d '%.*s' must be 4 comma-separated numbers "
@@ -472,7 +449,7 @@ mkResult mkScene_SetRotations(mkScene *s, const char *text, const char *name, ch
 		if (!line[0]) continue;
 		if (too_long) { free(rot); return mkFail(MK_ERR_ARGUMENT, msg, msglen, "%s:%d: line too long", name, lineno); }
 		double v[9];
-		int got = mkScene_NumberList(line, strlen(line), v, 9);
+		int got = mkSpecKeys_Numbers(line, strlen(line), v, 9);
 		if (got < 0 && first) { first = 0; continue; } /* a header */
 		first = 0;
 		mkMat3 R;

@@ -4,7 +4,6 @@
 #include "mink/spec.h"
 
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -58,27 +57,32 @@ void mkSpecKeys_List(unsigned mask, char *buf, size_t len)
 	}
 }
 
-/* Parse a comma-separated list of exactly `count` finite numbers. */
-static int mkSpec_ParseNumbers(const char *s, size_t len, int count, double *out, int *got)
+int mkSpecKeys_Numbers(const char *s, size_t len, double *out, int max)
 {
 	char buf[SPEC_MAX_LEN];
-	if (len >= sizeof buf) return 0;
+	if (len == 0 || len >= sizeof buf) return -1;
 	memcpy(buf, s, len);
 	buf[len] = 0;
 	int n = 0;
 	char *p = buf;
 	for (;;) {
 		char *end;
-		errno = 0;
 		double v = strtod(p, &end);
-		if (end == p || (*end != ',' && *end != 0)) { *got = -1; return 0; }
-		if (n < MK_SPEC_VALUES_MAX) out[n] = v;
+		if (end == p || (*end != ',' && *end != 0)) return -1;
+		if (n < max) out[n] = v;
 		++n;
 		if (*end == 0) break;
 		p = end + 1;
 	}
-	*got = n;
-	return n == count;
+	return n;
+}
+
+/* Parse a comma-separated list of exactly `count` numbers; *got is how many
+ * were given, -1 when the list is malformed. */
+static int mkSpec_ParseNumbers(const char *s, size_t len, int count, double *out, int *got)
+{
+	*got = mkSpecKeys_Numbers(s, len, out, MK_SPEC_VALUES_MAX);
+	return *got == count;
 }
 
 /* How many numbers key takes. */

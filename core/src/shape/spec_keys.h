@@ -28,6 +28,11 @@ typedef struct mkSpecValues {
 /* The pose keys of a dimension: 2D rot, shear, M, at; 3D quat, M, at. */
 unsigned mkSpecKeys_Pose(int dim);
 
+/* A comma-separated list of numbers: returns how many were given (the first
+ * `max` stored in out), -1 when the list is empty, malformed or longer than
+ * a SPEC may be. */
+int mkSpecKeys_Numbers(const char *s, size_t len, double *out, int max);
+
 /* The names of the keys in mask, comma-separated, into buf. */
 void mkSpecKeys_List(unsigned mask, char *buf, size_t len);
 
