@@ -17,60 +17,10 @@ static const double mkFig3A1[3] = { 5.2, 3.1, 0.45 };   /* a, b, eps */
 static const double mkFig3A2[3] = { 2.6, 1.5, 1.55 };
 static const double mkFig3Angle[2] = { MK_PI / 5.0, -2.0 * MK_PI / 7.0 };
 static const double mkFig3Shear[2] = { 0.8, -0.6 };
+#define MK_NO_FIELD (-1000000L)
 #define MK_FIG3_N 100
 #define MK_FIG3_PLACES 10
 
-
-/* ---- the run: index rows, geometry files --------------------------------- */
-
-
-
-const char *const mkDemos_Columns[] = {
-	"figure", "panel", "file", "rows", "content", "body1", "body2", "set", "form", "param", "n", "note", NULL
-};
-
-int mkDemoRun_Open(mkDemoRun *run, const char *name, const char *const *cols, int ncols, mkCsv *csv)
-{
-	if (mkRun_OpenSibling(run->run, name, cols, ncols, csv) != 0) {
-		run->failed = 1;
-		return -1;
-	}
-	return 0;
-}
-
-/* Commit a geometry file with its sidecar and add its index row. */
-int mkDemoRun_Commit(mkDemoRun *run, mkCsv *csv, const mkDemoEntry *e)
-{
-	char msg[1024];
-	long rows = csv->rows;
-	mkMeta *meta = &run->run->meta;
-	mkMeta_SetInt(meta, "figure", e->figure);
-	mkMeta_Set(meta, "panel", e->panel);
-	mkMeta_Set(meta, "content", e->content);
-	mkMeta_Set(meta, "body1", e->body1);
-	mkMeta_Set(meta, "body2", e->body2);
-	mkMeta_Set(meta, "note", e->note);
-	if (mkCsv_Commit(csv, meta, msg, sizeof msg) != 0) {
-		fprintf(stderr, "demos: %s\n", msg);
-		run->failed = 1;
-		return -1;
-	}
-	mkCsv *ix = &run->run->csv;
-	mkCsv_Int(ix, e->figure);
-	mkCsv_Str(ix, e->panel);
-	mkCsv_Str(ix, e->file);
-	mkCsv_Int(ix, rows);
-	mkCsv_Str(ix, e->content);
-	mkCsv_Str(ix, e->body1);
-	mkCsv_Str(ix, e->body2);
-	mkCsv_Str(ix, mkSet_Name(MK_SET_CONTACT));
-	mkCsv_Str(ix, e->form);
-	mkCsv_Str(ix, e->param);
-	mkCsv_Int(ix, e->n);
-	mkCsv_Str(ix, e->note);
-	mkCsv_EndRow(ix);
-	return 0;
-}
 
 /* Two blank lines: gnuplot's separator of data blocks (curves, surfaces). */
 static void mkEndBlock(mkCsv *csv)
@@ -80,75 +30,11 @@ static void mkEndBlock(mkCsv *csv)
 
 /* ---- bodies from SPEC text ---------------------------------------------- */
 
-mkDemoNum mkDemo_Fmt(double v)
-{
-	mkDemoNum n;
-	for (int digits = 15; digits <= 17; ++digits) {
-		snprintf(n.s, sizeof n.s, "%.*g", digits, v);
-		if (strtod(n.s, NULL) == v)
-			break;
-	}
-	return n;
-}
-
 static void mkSpec2(char *buf, size_t len, const double s[3], double angle, double shear)
 {
 	snprintf(buf, len, "superellipse a=%s b=%s eps=%s rot=%s shear=%s",
 		mkDemo_Fmt(s[0]).s, mkDemo_Fmt(s[1]).s, mkDemo_Fmt(s[2]).s, mkDemo_Fmt(angle).s, mkDemo_Fmt(shear).s);
 }
-
-/* The body of a SPEC text into *out: an mkBody2 when dim is 2, an mkBody3
- * when 3. Returns 0, or -1 after printing why. */
-int mkDemo_ParseBody(const char *text, int dim, const char *what, void *out)
-{
-	mkSpec spec;
-	char msg[512];
-	if (mkSpec_Parse(text, dim, what, &spec, msg, sizeof msg) != MK_OK) {
-		fprintf(stderr, "demos: %s: %s (SPEC '%s')\n", what, msg, text);
-		return -1;
-	}
-	if (dim == 2)
-		*(mkBody2 *)out = spec.body2;
-	else
-		*(mkBody3 *)out = spec.body3;
-	return 0;
-}
-
-mkSumOptions mkDemo_Options(const mkDemosOptions *o, mkForm form, mkParam param)
-{
-	mkSumOptions opt = mkSumOptions_Default();
-	opt.set = MK_SET_CONTACT;
-	opt.form = form;
-	opt.param = param;
-	opt.impl = o->impl;
-	return opt;
-}
-
-
-int mkDemoPts_Alloc(mkDemoPts *p, int n)
-{
-	memset(p, 0, sizeof *p);
-	p->n = n;
-	double **all[] = { &p->ux, &p->uy, &p->uz, &p->x, &p->y, &p->z, &p->kx, &p->ky, &p->kz };
-	int ok = 1;
-	for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) {
-		*all[i] = malloc((size_t)n * sizeof(double));
-		ok = ok && *all[i] != NULL;
-	}
-	if (!ok)
-		fprintf(stderr, "demos: out of memory for %d points\n", n);
-	return ok ? 0 : -1;
-}
-
-void mkDemoPts_Free(mkDemoPts *p)
-{
-	double *all[] = { p->ux, p->uy, p->uz, p->x, p->y, p->z, p->kx, p->ky, p->kz };
-	for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
-		free(all[i]);
-	memset(p, 0, sizeof *p);
-}
-
-#define MK_NO_FIELD (-1000000L)
 
 /* Up to three leading fields of a row: lead1, lead2 (NULL: none), lead3
  * (MK_NO_FIELD: none). */

@@ -1,6 +1,6 @@
-/* demos_internal.h - what the figure writers share (demos.c, fig4.c): the
- * run, an index row, SPEC numbers, body parsing, sum options and point
- * buffers. Not installed. */
+/* demos_internal.h - what the figure writers (demos.c, fig4.c) share, from
+ * demo_run.c: the run, an index row, SPEC numbers, body parsing, sum
+ * options and point buffers. Not installed. */
 #ifndef MINK_DEMOS_INTERNAL_H
 #define MINK_DEMOS_INTERNAL_H
 

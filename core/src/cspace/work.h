@@ -65,6 +65,9 @@ mkResult mkContact3_Points(mkBody3 b1, mkBody3 b2, mkImpl impl, const double *ux
 
 /* ---- 2D (boundary2.c, walk2.c) ---- */
 mkVec2 mkBoundary2_SplitNormal(mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj);
+/* The corner of the tangent lines at (ni, pi) and (nj, pj): a vertex of the
+ * outer boundary (arc2.c). */
+mkVec2 mkBoundary2_TangentVertex(mkVec2 ni, mkVec2 pi, mkVec2 nj, mkVec2 pj);
 double mkBoundary2_EdgeError(mkBound bound, mkVec2 ni, mkVec2 nj, mkVec2 pi, mkVec2 pj, mkVec2 m, mkVec2 xm);
 /* The adaptive walk (walk2.c): nodes 0 .. count - 1 of w counter-clockwise,
  * w->err2[i] the error of the arc from node i to node i + 1 (mod count). */
