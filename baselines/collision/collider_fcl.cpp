@@ -90,14 +90,17 @@ mkResult mkRunFcl(mkBody3 b1, mkBody3 b2, mkColliderScratch *, mkCollision3 *out
 #if defined(__SANITIZE_ADDRESS__)
 // LeakSanitizer: when FCL asserts, the jump out of mkFclQuery skips the
 // destructors of what FCL and this function had allocated for that pair, so
-// it leaks by design (a few hundred bytes per asserting pair). This one
-// suppression names that function alone, so a leak anywhere else, or in a
-// call that did not assert and return normally, is still reported. It
-// applies to every program that links this collider.
+// it leaks by design (544 bytes per asserting pair). The suppressions name
+// mkFclQuery, and FCL's GJK objects of the two shapes (createGJKObject),
+// whose allocation stacks stop inside libfcl (built without frame pointers)
+// before they reach mkFclQuery; FCL frees those objects itself at the end
+// of every call that returns. A leak anywhere else is still reported. They
+// apply to every program that links this collider.
 extern "C" const char *__lsan_default_suppressions();
 extern "C" const char *__lsan_default_suppressions()
 {
-	return "leak:mkFclQuery\n";
+	return "leak:mkFclQuery\n"
+	       "leak:fcl::detail::GJKInitializer*createGJKObject\n";
 }
 #endif
 
