@@ -38,26 +38,6 @@ static int mkPyBody_FromSpec(mkPyBody *self, PyObject *spec)
 	return 0;
 }
 
-/* n doubles from a sequence or array argument, ValueError naming field. */
-static int mkPyBody_Numbers(PyObject *o, const char *field, double *v, int n, const char *what)
-{
-	PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(o, NPY_DOUBLE, 0, 2, NPY_ARRAY_CARRAY_RO | NPY_ARRAY_FORCECAST);
-	if (!a) {
-		PyErr_Clear();
-		PyErr_Format(PyExc_TypeError, "%s: expected %d numbers (%s), got %s", field, n, what, Py_TYPE(o)->tp_name);
-		return -1;
-	}
-	if (PyArray_SIZE(a) != n) {
-		PyErr_Format(PyExc_ValueError, "%s: %zd numbers given, expected %d (%s)", field, (Py_ssize_t)PyArray_SIZE(a), n,
-			what);
-		Py_DECREF(a);
-		return -1;
-	}
-	memcpy(v, PyArray_DATA(a), (size_t)n * sizeof(double));
-	Py_DECREF(a);
-	return 0;
-}
-
 static int mkPyBody_FromParams(mkPyBody *self, PyObject *shape, PyObject *M, PyObject *at)
 {
 	if (!shape) {
@@ -77,10 +57,10 @@ static int mkPyBody_FromParams(mkPyBody *self, PyObject *shape, PyObject *M, PyO
 	int dim = n == 3 ? 2 : 3;
 	double sv[5], mv[9] = {1, 0, 0, 1}, tv[3] = {0, 0, 0};
 	if (dim == 3) memcpy(mv, (double[9]){1, 0, 0, 0, 1, 0, 0, 0, 1}, sizeof mv);
-	if (mkPyBody_Numbers(shape, "shape", sv, (int)n, dim == 2 ? "a, b, eps" : "a, b, c, eps1, eps2") < 0) return -1;
-	if (M && M != Py_None && mkPyBody_Numbers(M, "M", mv, dim * dim, dim == 2 ? "a 2 x 2 map" : "a 3 x 3 map") < 0)
+	if (mkPy_Numbers(shape, "shape", sv, (int)n, dim == 2 ? "a, b, eps" : "a, b, c, eps1, eps2") < 0) return -1;
+	if (M && M != Py_None && mkPy_Numbers(M, "M", mv, dim * dim, dim == 2 ? "a 2 x 2 map" : "a 3 x 3 map") < 0)
 		return -1;
-	if (at && at != Py_None && mkPyBody_Numbers(at, "at", tv, dim, "the centre") < 0) return -1;
+	if (at && at != Py_None && mkPy_Numbers(at, "at", tv, dim, "the centre") < 0) return -1;
 	char msg[512] = "";
 	int ok;
 	if (dim == 2) {

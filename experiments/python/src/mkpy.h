@@ -55,6 +55,9 @@ PyArrayObject *mkPy_Rows(PyObject *o, const char *field, int dim, int type, int 
  * aligned, writeable; TypeError/ValueError naming `field` otherwise. o NULL
  * or None: a new array. New reference or NULL. */
 PyArrayObject *mkPy_OutRows(PyObject *o, const char *field, int dim, npy_intp count, int type);
+/* n doubles from a sequence or array argument into v; TypeError or
+ * ValueError naming `field` and saying what they are (`what`). */
+int mkPy_Numbers(PyObject *o, const char *field, double *v, int n, const char *what);
 /* 1 when the memory of two arrays overlaps. */
 int mkPy_Overlap(PyArrayObject *a, PyArrayObject *b);
 

@@ -108,6 +108,25 @@ int mkPy_Overlap(PyArrayObject *a, PyArrayObject *b)
 	return na > 0 && nb > 0 && pa < pb + nb && pb < pa + na;
 }
 
+int mkPy_Numbers(PyObject *o, const char *field, double *v, int n, const char *what)
+{
+	PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(o, NPY_DOUBLE, 0, 2, NPY_ARRAY_CARRAY_RO | NPY_ARRAY_FORCECAST);
+	if (!a) {
+		PyErr_Clear();
+		PyErr_Format(PyExc_TypeError, "%s: expected %d numbers (%s), got %s", field, n, what, Py_TYPE(o)->tp_name);
+		return -1;
+	}
+	if (PyArray_SIZE(a) != n) {
+		PyErr_Format(PyExc_ValueError, "%s: %zd numbers given, expected %d (%s)", field, (Py_ssize_t)PyArray_SIZE(a), n,
+			what);
+		Py_DECREF(a);
+		return -1;
+	}
+	memcpy(v, PyArray_DATA(a), (size_t)n * sizeof(double));
+	Py_DECREF(a);
+	return 0;
+}
+
 static PyObject *mkPy_Version(PyObject *self, PyObject *args)
 {
 	(void)self;

@@ -131,8 +131,13 @@ PyObject *mkPy_Collide(PyObject *self, PyObject *args, PyObject *kw)
 	}
 	mkVec3 start = {0, 0, 0};
 	int have_start = starto && starto != Py_None;
-	if (have_start && (ray || !PyArg_ParseTuple(starto, "ddd;start: a direction (x, y, z)", &start.x, &start.y, &start.z)))
-		return ray ? (PyErr_SetString(PyExc_ValueError, "start: only with method='normal'"), NULL) : NULL;
+	if (have_start && ray) {
+		PyErr_SetString(PyExc_ValueError, "start: only with method='normal'");
+		return NULL;
+	}
+	double sv[3];
+	if (have_start && mkPy_Numbers(starto, "start", sv, 3, "a direction x, y, z") < 0) return NULL;
+	if (have_start) start = (mkVec3){sv[0], sv[1], sv[2]};
 	if (have_start && (!isfinite(start.x + start.y + start.z) || (start.x == 0 && start.y == 0 && start.z == 0))) {
 		PyErr_SetString(PyExc_ValueError, "start: must be a nonzero finite direction");
 		return NULL;

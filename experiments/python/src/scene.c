@@ -3,6 +3,7 @@
  * as long as any of them (a capsule is their base). */
 #include "mkpy.h"
 
+#include <math.h>
 #include <string.h>
 
 #include <mink/cspace.h>
@@ -147,8 +148,16 @@ PyObject *mkPy_Scene(PyObject *self, PyObject *args, PyObject *kw)
 	PyObject *capsule = NULL, *list = NULL;
 	if (mkPy_SceneParse(text, rotations, &scene, msg, sizeof msg) < 0) goto done;
 	int begin = 0, end = scene.orientation_count;
-	if (rangeo && rangeo != Py_None && !PyArg_ParseTuple(rangeo, "ii;orientations: a pair (begin, end)", &begin, &end))
-		goto done;
+	if (rangeo && rangeo != Py_None) {
+		double be[2];
+		if (mkPy_Numbers(rangeo, "orientations", be, 2, "a range begin, end") < 0) goto done;
+		if (!(fabs(be[0]) <= 1e9 && fabs(be[1]) <= 1e9) || be[0] != (int)be[0] || be[1] != (int)be[1]) {
+			PyErr_SetString(PyExc_ValueError, "orientations: begin and end must be integers");
+			goto done;
+		}
+		begin = (int)be[0];
+		end = (int)be[1];
+	}
 	if (mkCSpace_Create(&scene, &opt, &cs, msg, sizeof msg) != MK_OK) {
 		PyErr_Format(PyExc_ValueError, "scene: %s", msg);
 		goto done;

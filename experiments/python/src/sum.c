@@ -55,8 +55,8 @@ PyObject *mkPy_Sample(PyObject *self, PyObject *args, PyObject *kw)
 	}
 	double eps[2];
 	if (epso && epso != Py_None) {
-		if (dim == 2 && !PyArg_Parse(epso, "d;eps: a number in 2D", &eps[0])) return NULL;
-		if (dim == 3 && !PyArg_ParseTuple(epso, "dd;eps: a pair (eps1, eps2) in 3D", &eps[0], &eps[1])) return NULL;
+		if (mkPy_Numbers(epso, "eps", eps, dim - 1, dim == 2 ? "the exponent eps in 2D" : "eps1, eps2 in 3D") < 0)
+			return NULL;
 	}
 	return (PyObject *)mkPy_NewSample(dim, n, epso && epso != Py_None ? eps : NULL);
 }

@@ -38,8 +38,9 @@ def test_collide_errors():
         mink.collide(s, s, method="gjk")
     with pytest.raises(ValueError, match="start"):
         mink.collide(s, s, start=(0, 0, 0))
-    with pytest.raises(TypeError, match="start"):
+    with pytest.raises(ValueError, match="start"):
         mink.collide(s, s, start=(1, 0))
+    assert mink.collide(s, mink.Body("sphere a=1 at=3,0,0"), start=np.array([1.0, 0, 0])).distance == pytest.approx(1)
     with pytest.raises(ValueError, match="start"):
         mink.collide(s, s, method="ray", start=(1, 0, 0))
 

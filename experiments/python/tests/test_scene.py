@@ -83,7 +83,7 @@ def test_arrays_outlive_the_list():
 
 
 def test_uniform_mode_and_range():
-    bs = mink.scene(SCENE2, mode="uniform", uniform=64, orientations=(1, 2))
+    bs = mink.scene(SCENE2, mode="uniform", uniform=64, orientations=[1, 2])
     assert {b.orientation for b in bs} == {1} and all(b.points.shape[1] == 64 for b in bs)
 
 
@@ -94,6 +94,8 @@ def test_uniform_mode_and_range():
     (SCENE2, dict(mode="paper"), ["mode"]),
     (SCENE2, dict(threads=0), ["threads"]),
     (SCENE2, dict(orientations=(0, 9)), ["orientations"]),
+    (SCENE2, dict(orientations=(0.5, 1)), ["orientations", "integers"]),
+    (SCENE2, dict(orientations=[0]), ["orientations", "2"]),
     ("dim 3\nrobot sphere a=1\nobstacle sphere a=1 at=3,0,0\nrotations r.txt\n", {}, ["rotations", "r.txt"]),
 ])
 def test_scene_errors(text, kw, words):
