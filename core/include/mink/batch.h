@@ -8,16 +8,19 @@
  *                      with balls about x inside each (so the depth is at
  *                      least the sum of their radii). Either certificate is
  *                      accepted only beyond MK_BATCH_MARGIN * scale, outside
- *                      the touching band; a pair neither settles goes to the
+ *                      the touching band. Both are searched for by Gilbert's
+ *                      iteration on B2 - B1 from the centre line (a point of
+ *                      both: a tetrahedron of B2 - B1 holding a ball about
+ *                      the origin); a pair neither settles goes to the
  *                      one-pair query (mkCollide3_Normal) and takes its
  *                      status: |sd| <= MK_COLLIDE3_TOUCH_TOL * scale is
  *                      touching, as there.
  *  MK_BATCH_CLEARANCE  is sd >= delta (delta >= 0)? Certified yes when
  *                      f(n) >= delta + MK_BATCH_MARGIN * scale, certified no
- *                      when the witnesses p1, p2 at n have |p2 - p1| <=
- *                      delta - MK_BATCH_MARGIN * scale or an overlap point is
- *                      found; otherwise the one-pair query's sd decides
- *                      (within MK_BATCH_MARGIN * scale of delta the verdict
+ *                      when f(n) > MK_BATCH_MARGIN * scale and a point of
+ *                      B2 - B1 is shorter than delta - MK_BATCH_MARGIN *
+ *                      scale, or an overlap is certified; otherwise the
+ *                      one-pair query's sd decides (within MK_BATCH_MARGIN * scale of delta the verdict
  *                      is that of a distance accurate to 1e-12 of the scale,
  *                      not certified). The status is filled as in STATUS.
  *  MK_BATCH_DISTANCE   the signed distance of separated (and touching) pairs,
@@ -51,9 +54,9 @@ typedef enum mkBatchMode {
 /* A certificate of the status or clearance is accepted only when it holds
  * by more than this (times the pair's scale): 4 times the touching band. */
 #define MK_BATCH_MARGIN 4e-12
-/* Separating directions tried by the bounds before a pair goes to the
- * one-pair query: the centre line, then n <- (d - x(n)) / |d - x(n)|. */
-#define MK_BATCH_STEPS 4
+/* Pair evaluations of the certificates' search (Gilbert's iteration on
+ * B2 - B1 from the centre line) before a pair goes to the one-pair query. */
+#define MK_BATCH_EVALS 32
 
 /* The pairs: pair k is bodies1[i1] and bodies2[i2] with i1 = index1[k]
  * (k when index1 is NULL), i2 likewise, so that one robot part can meet many

@@ -1,31 +1,30 @@
-/* batch.c - many pairs per call (mink/batch.h): cheap certificates first (a
- * separating direction from support values, an overlap point from the
- * bodies' gauges), the one-pair query where they do not settle a pair.
+/* batch.c - many pairs per call (mink/batch.h): certificates first, the
+ * one-pair query where they do not settle a pair.
  *
- * Separating direction: f(n) = <n, d> - h1(n) - h2(-n) is a lower bound of
- * sd at every unit n (the support functions through mkSupBody_Eval, as the
- * solver evaluates them). The centre line is tried first, then the step
- * n <- (d - x(n)) / |d - x(n)| towards d from the contact-space point
- * x(n) = s1(n) - s2(-n) (at the optimum d - x(n) is parallel to n).
+ * Gilbert's iteration on W = B2 - B1 (mkBatch_Gilbert) looks for both: a
+ * separating direction (f(m) = <m, d> - h1(m) - h2(-m) <= sd, the support
+ * values through mkPair_Eval as the solver evaluates them), or a
+ * tetrahedron of points of W holding a ball about the origin.
  *
- * Overlap point: the gauge g(y) = |(|(y1/a, y2/b)|_p2, y3/c)|_p1 of the
- * canonical body (p = 2/eps: the nested norm whose unit ball it is; pair
- * norms from the ratio of the smaller to the larger component, no
- * overflow) at y = M^-1 (x - t). With u = g < 1, x + (1 - u)(B - t) lies in
- * B, and B - t holds the ball of radius rho = sigma_min(M) / |(1/a, 1/b,
- * 1/c)| (the body holds its cross-polytope, since every p >= 1 norm is at
- * most the l1 norm; sigma_min(M) >= 1 / |M^-1|_F). Balls of radii r1, r2
- * about one point x inside B1 and B2 put the ball of radius r1 + r2 about
- * the origin inside B1 - B2: the depth is at least r1 + r2. The point is on
- * the centre segment, where the two bodies' gauges are linear in the
- * segment's parameter: the end of the common interval that maximises the
- * bound, and the gauges evaluated again at the point itself. */
+ * Where it gives up on an overlap, a point on the centre segment: the gauge
+ * g(y) = |(|(y1/a, y2/b)|_p2, y3/c)|_p1 of the canonical body (p = 2/eps:
+ * the nested norm whose unit ball it is; pair norms from the ratio of the
+ * smaller to the larger component, no overflow) at y = M^-1 (x - t). With
+ * u = g < 1, x + (1 - u)(B - t) lies in B, and B - t holds the ball of
+ * radius rho = sigma_min(M) / |(1/a, 1/b, 1/c)| (the body holds its
+ * cross-polytope, since every p >= 1 norm is at most the l1 norm;
+ * sigma_min(M) >= 1 / |M^-1|_F). Balls of radii r1, r2 about one point x
+ * inside B1 and B2 put the ball of radius r1 + r2 about the origin inside
+ * B1 - B2: the depth is at least r1 + r2. The gauges are linear along the
+ * segment: the end of the common interval that maximises the bound, the
+ * gauges evaluated again at the point itself. */
 #include <mink/batch.h>
 
 #include <float.h>
 #include <math.h>
 #include <string.h>
 
+#include "collide/hull.h"
 #include "collide/pair.h"
 
 static const char *const mkBatchModeNames[4] = { "status", "clearance", "distance", "full" };
@@ -112,35 +111,98 @@ static int mkBatch_OverlapPoint(const mkBody3 *b1, const mkBody3 *b2, mkVec3 d, 
 	return *depth > need;
 }
 
-/* The separating-direction search: at most MK_BATCH_STEPS directions from
- * the centre line. Returns 1 when f(n) > need at the last one; *n, *f, the
- * witnesses *p1, *p2 (support points at n) are those of the best
- * direction met. */
-static int mkBatch_Separate(const mkPairCtx *c, double need, mkVec3 *n, double *f, mkVec3 *p1, mkVec3 *p2)
+/* A tetrahedron w[0..4): when it holds the origin, its barycentric weights
+ * lam and the radius of the ball about the origin inside it (the least
+ * distance to its faces' planes, lam_i times the height over face i);
+ * -1 when the origin is outside or the tetrahedron is flat. */
+static double mkBatch_Volume(mkVec3 p0, mkVec3 p1, mkVec3 p2, mkVec3 p3)
 {
-	double dl = mkVec3_LengthInline(c->d);
-	mkVec3 m = dl > 0.0 ? mkVec3_Scale(c->d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);
-	*f = -INFINITY;
-	for (int k = 0; k < MK_BATCH_STEPS; ++k) {
-		mkSupAt a1, a2;
-		mkSupBody_Eval(&c->k1, m, &a1);
-		mkSupBody_Eval(&c->k2, mkVec3_Neg(m), &a2);
-		double fk = mkVec3_Dot(m, c->d) - a1.h - a2.h;
-		if (fk > *f) {
-			*f = fk;
-			*n = m;
-			*p1 = mkVec3_Add(c->b1->t, a1.s);
-			*p2 = mkVec3_Add(c->b2->t, a2.s);
+	return mkVec3_Dot(mkVec3_Sub(p1, p0), mkVec3_Cross(mkVec3_Sub(p2, p0), mkVec3_Sub(p3, p0)));
+}
+
+static double mkBatch_Inside(const mkVec3 w[4], double lam[4])
+{
+	double vol = mkBatch_Volume(w[0], w[1], w[2], w[3]);
+	if (!(fabs(vol) > 0.0))
+		return -1.0;
+	double r = INFINITY;
+	for (int i = 0; i < 4; ++i) {
+		mkVec3 v[4] = { w[0], w[1], w[2], w[3] };
+		v[i] = mkVec3_Make(0.0, 0.0, 0.0);
+		lam[i] = mkBatch_Volume(v[0], v[1], v[2], v[3]) / vol;
+		/* face i: the other three points; its height over w_i is |vol| / (2 area) */
+		mkVec3 p = w[(i + 1) & 3], q = w[(i + 2) & 3], t = w[(i + 3) & 3];
+		double area2 = mkVec3_LengthInline(mkVec3_Cross(mkVec3_Sub(q, p), mkVec3_Sub(t, p)));
+		if (!(lam[i] >= 0.0) || !(area2 > 0.0))
+			return -1.0;
+		r = fmin(r, lam[i] * fabs(vol) / area2);
+	}
+	return r;
+}
+
+/* Gilbert's iteration on W = B2 - B1 for a certificate (at most
+ * MK_BATCH_EVALS pair evaluations from the centre line): the support point
+ * of W towards the origin from the least-norm point z of the hull kept,
+ * w(m) = c2 + s2(-m) - c1 - s1(m) at m = z / |z|, gives f(m) = <m, w(m)>
+ * <= sd; |z| >= sd. Returns MK_PATH_SEPARATING when f(m) > need (r's n, f,
+ * the support points p1, p2 at n and upper = |z|), or when f(m) > margin
+ * and |z| < below (a clearance certainly missed); MK_PATH_OVERLAP_POINT
+ * when a tetrahedron of W holds the ball of radius depth > margin about the
+ * origin (x = sum lam_i a_i = sum lam_i b_i, a point of both bodies);
+ * MK_PATH_ONE_PAIR when neither was reached. */
+typedef struct mkBatchCert {
+	mkVec3 n, p1, p2, x;
+	double f, upper, depth;
+} mkBatchCert;
+
+static mkBatchPath mkBatch_Gilbert(const mkPairCtx *c, double need, double below, mkBatchCert *r)
+{
+	double margin = MK_BATCH_MARGIN * c->scale, dl = mkVec3_LengthInline(c->d), lam[4];
+	mkVec3 m = dl > 0.0 ? mkVec3_Scale(c->d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0), a[4], b[4], w[4];
+	int k = 0;
+	r->f = -INFINITY;
+	r->upper = INFINITY;
+	for (int it = 0; it < MK_BATCH_EVALS; ++it) {
+		mkPairAt e;
+		double f = mkVec3_Dot(m, c->d) - mkPair_Eval(c, m, &e);
+		a[k] = mkVec3_Add(c->b1->t, e.a1.s);
+		b[k] = mkVec3_Add(c->b2->t, e.a2.s);
+		w[k] = mkVec3_Sub(b[k], a[k]);
+		if (f > r->f) {
+			r->f = f;
+			r->n = m;
+			r->p1 = a[k];
+			r->p2 = b[k];
 		}
-		if (fk > need)
-			return 1;
-		mkVec3 z = mkVec3_Sub(c->d, mkVec3_Sub(a1.s, a2.s));
+		if (f > need)
+			return MK_PATH_SEPARATING;
+		if (++k == 4 && (r->depth = mkBatch_Inside(w, lam)) >= 0.0) {
+			if (!(r->depth > margin))
+				return MK_PATH_ONE_PAIR;
+			r->x = mkVec3_Make(0.0, 0.0, 0.0);
+			for (int i = 0; i < 4; ++i)
+				r->x = mkVec3_Add(r->x, mkVec3_Scale(mkVec3_Add(a[i], b[i]), 0.5 * lam[i]));
+			return MK_PATH_OVERLAP_POINT;
+		}
+		mkVec3 z = mkHull_Nearest(w, k, lam);
+		int j = 0;
+		for (int i = 0; i < k; ++i)
+			if (lam[i] > 0.0) {
+				a[j] = a[i];
+				b[j] = b[i];
+				w[j++] = w[i];
+			}
+		k = j;
 		double zl = mkVec3_LengthInline(z);
-		if (!(zl > 0.0) || !isfinite(zl))
-			return 0;
+		r->upper = fmin(r->upper, zl);
+		if (r->f > margin && zl < below)
+			return MK_PATH_SEPARATING;
+		/* converged (within rounding) short of a certificate, or degenerate */
+		if (!(zl > 0.0) || !isfinite(zl) || zl - r->f <= 1e-14 * c->scale)
+			return MK_PATH_ONE_PAIR;
 		m = mkVec3_Scale(z, 1.0 / zl);
 	}
-	return 0;
+	return MK_PATH_ONE_PAIR;
 }
 
 /* Writes entry k of out (each array that is not NULL). */
@@ -196,9 +258,9 @@ static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, const m
 	return MK_PATH_ONE_PAIR;
 }
 
-/* Pair k by the bounds where they settle it (STATUS, CLEARANCE, DISTANCE's
- * overlaps), else the one-pair query (DISTANCE on a separated pair: started
- * from the separating direction found). */
+/* Pair k by the certificates where they settle it (STATUS, CLEARANCE,
+ * DISTANCE's overlaps), else the one-pair query (DISTANCE on a separated
+ * pair: started from the separating direction found). */
 static mkBatchPath mkBatch_One(const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
 	const mkBatchOut3 *out, int k)
 {
@@ -206,21 +268,21 @@ static mkBatchPath mkBatch_One(const mkBody3 *b1, const mkBody3 *b2, mkBatchMode
 	mkPairCtx_Init(&c, b1, b2);
 	if (mode == MK_BATCH_FULL || !isfinite(c.scale))
 		return mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k);
-	double margin = MK_BATCH_MARGIN * c.scale, need = mode == MK_BATCH_CLEARANCE ? delta + margin : margin;
-	mkVec3 n = mkVec3_Make(NAN, NAN, NAN), p1 = n, p2 = n, x;
-	double f = NAN, depth;
-	int sep = mkBatch_Separate(&c, need, &n, &f, &p1, &p2);
-	double up = mkVec3_LengthInline(mkVec3_Sub(p2, p1));
-	if ((mode == MK_BATCH_STATUS && sep) || (mode == MK_BATCH_CLEARANCE && (sep || (f > margin && up < delta - margin)))) {
-		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, f, up, n, p1, p2, sep, MK_PATH_SEPARATING);
-		return MK_PATH_SEPARATING;
+	double margin = MK_BATCH_MARGIN * c.scale;
+	int clearance = mode == MK_BATCH_CLEARANCE;
+	mkBatchCert r;
+	mkBatchPath p = mkBatch_Gilbert(&c, clearance ? delta + margin : margin, clearance ? delta - margin : -INFINITY, &r);
+	if (p == MK_PATH_SEPARATING && mode != MK_BATCH_DISTANCE) {
+		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r.f, r.upper, r.n, r.p1, r.p2, r.f > delta + margin, p);
+		return p;
 	}
-	if (mode == MK_BATCH_DISTANCE && sep)
-		return mkBatch_OnePair(b1, b2, &n, mode, delta, out, k);
-	if (!(f > 0.0) && mkBatch_OverlapPoint(b1, b2, c.d, margin, &x, &depth)) {
-		mkBatch_Put(out, k, MK_CONTACT_OVERLAPPING, NAN, -INFINITY, -depth, mkVec3_Make(NAN, NAN, NAN), x, x, 0,
-			MK_PATH_OVERLAP_POINT);
-		return MK_PATH_OVERLAP_POINT;
+	if (p == MK_PATH_SEPARATING)
+		return mkBatch_OnePair(b1, b2, &r.n, mode, delta, out, k);
+	if (p == MK_PATH_ONE_PAIR && !(r.f > 0.0) && mkBatch_OverlapPoint(b1, b2, c.d, margin, &r.x, &r.depth))
+		p = MK_PATH_OVERLAP_POINT;
+	if (p == MK_PATH_OVERLAP_POINT) {
+		mkBatch_Put(out, k, MK_CONTACT_OVERLAPPING, NAN, -INFINITY, -r.depth, mkVec3_Make(NAN, NAN, NAN), r.x, r.x, 0, p);
+		return p;
 	}
 	return mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k);
 }
