@@ -168,6 +168,7 @@ static mkBatchPath mkBatch_Gilbert(const mkPairCtx *c, double need, double below
 		a[k] = mkVec3_Add(c->b1->t, e.a1.s);
 		b[k] = mkVec3_Add(c->b2->t, e.a2.s);
 		w[k] = mkVec3_Sub(b[k], a[k]);
+		r->upper = fmin(r->upper, mkVec3_LengthInline(w[k]));
 		if (f > r->f) {
 			r->f = f;
 			r->n = m;
