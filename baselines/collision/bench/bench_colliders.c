@@ -25,7 +25,12 @@
  * functions.
  *
  * Timing: CLOCK_MONOTONIC around the run call only (prepare untimed), the
- * entries interleaved pair by pair (A B C A B C ...), one thread.
+ * entries interleaved pair by pair (A B C A B C ...), one thread. The batch
+ * modes of mink/batch.h are timed twice: as one-pair calls interleaved with
+ * the entries (rows batch-<mode>), and amortised over chunks of 64 pairs
+ * interleaved chunk by chunk with ccd-gjk and ccd-gjk-epa-1e-10 on the same
+ * chunk (rows batch-<mode> x64: the median and mean over the chunks of the
+ * time per pair), each with its ratios to those two peers.
  *
  * usage: bench_colliders [--help] [pairs per kind, default 2000] [seed, default 2022]
  *                        [entries to leave out, comma-separated, e.g. implicit]
@@ -273,6 +278,58 @@ static void mkBenchBatchRows(double *bt, int pairs, const int *bounds, const int
 	}
 }
 
+/* Amortised: the pairs of a kind in chunks of MK_BENCH_CHUNK, each chunk
+ * run by ccd-gjk (one query per pair, run calls only timed) and by each
+ * batch mode (one call), interleaved chunk by chunk; per chunk the time per
+ * pair. Prints each mode's median and mean over the chunks and the ratios
+ * to ccd-gjk's and ccd-gjk-epa-1e-10's (pairs per second over theirs). */
+#define MK_BENCH_CHUNK 64
+static void mkBenchChunks(const mkBody3 *B1, const mkBody3 *B2, int pairs, mkColliderScratch *scratch, double *work)
+{
+	const mkCollider *peer[2] = { mkColliders_Find("ccd-gjk"), mkColliders_Find("ccd-gjk-epa-1e-10") };
+	int nch = (pairs + MK_BENCH_CHUNK - 1) / MK_BENCH_CHUNK;
+	static mkContact st[MK_BENCH_CHUNK];
+	static double dist[MK_BENCH_CHUNK];
+	mkBatchOut3 out = { st, dist, NULL, NULL, NULL, NULL, NULL, NULL, NULL };
+	for (int c = 0; c < nch; ++c) {
+		int at = c * MK_BENCH_CHUNK, n = pairs - at < MK_BENCH_CHUNK ? pairs - at : MK_BENCH_CHUNK;
+		for (int e = 0; e < 2; ++e) {
+			double t = 0.0;
+			for (int p = at; p < at + n && peer[e]; ++p) {
+				mkCollision3 o;
+				if (peer[e]->prepare && peer[e]->prepare(B1[p], B2[p], scratch) != MK_OK)
+					continue;
+				double t0 = mkNow();
+				peer[e]->run(B1[p], B2[p], scratch, &o);
+				t += mkNow() - t0;
+			}
+			work[(size_t)e * (size_t)nch + (size_t)c] = 1e6 * t / n;
+		}
+		mkBatchPairs3 pr = { n, B1 + at, B2 + at, NULL, NULL };
+		for (int m = 0; m < MK_BATCH_MODES; ++m) {
+			double delta = MK_BENCH_DELTA * mkCollide3_PairSize(B1[at], B2[at]);
+			double t0 = mkNow();
+			mkCollide3_Batch(&pr, (mkBatchMode)m, delta, &out, NULL);
+			work[(size_t)(2 + m) * (size_t)nch + (size_t)c] = 1e6 * (mkNow() - t0) / n;
+		}
+	}
+	double med[2 + MK_BATCH_MODES], mean[2 + MK_BATCH_MODES];
+	for (int r = 0; r < 2 + MK_BATCH_MODES; ++r) {
+		double *t = work + (size_t)r * (size_t)nch, sum = 0.0;
+		for (int i = 0; i < nch; ++i)
+			sum += t[i];
+		mean[r] = sum / nch;
+		med[r] = mkQuantile(t, nch, 0.5);
+	}
+	printf("(amortised, %d chunks of %d pairs, us per pair: ccd-gjk median %.3f mean %.3f; ccd-gjk-epa-1e-10 median %.3f "
+		"mean %.3f)\n", nch, MK_BENCH_CHUNK, med[0], mean[0], med[1], mean[1]);
+	static const char *const names[MK_BATCH_MODES] = { "status", "clearance", "distance", "full" };
+	for (int m = 0; m < MK_BATCH_MODES; ++m)
+		printf("batch-%-9s x%-3d %9.3f %9.3f   x ccd-gjk: median %.2f, mean %.2f; x ccd-gjk-epa-1e-10: median %.2f, "
+			"mean %.2f\n", names[m], MK_BENCH_CHUNK, med[2 + m], mean[2 + m], med[0] / med[2 + m], mean[0] / mean[2 + m],
+			med[1] / med[2 + m], mean[1] / mean[2 + m]);
+}
+
 int main(int argc, char **argv)
 {
 	int pairs, only, rc;
@@ -395,6 +452,7 @@ int main(int argc, char **argv)
 			rmean[w] = sum / nt[e];
 		}
 		mkBenchBatchRows(btimes, pairs, bbounds, bdis, rmed, rmean);
+		mkBenchChunks(B1, B2, pairs, &scratch, btimes);
 		mkBenchRefereeLine(ref, reftime, refgap, pairs, nref_fail, nuncertain);
 	}
 	(void)normal;

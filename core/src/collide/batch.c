@@ -144,66 +144,86 @@ static double mkBatch_Inside(const mkVec3 w[4], double lam[4])
  * MK_BATCH_EVALS pair evaluations from the centre line): the support point
  * of W towards the origin from the least-norm point z of the hull kept,
  * w(m) = c2 + s2(-m) - c1 - s1(m) at m = z / |z|, gives f(m) = <m, w(m)>
- * <= sd; |z| >= sd. Returns MK_PATH_SEPARATING when f(m) > need (r's n, f,
- * the support points p1, p2 at n and upper = |z|), or when f(m) > margin
- * and |z| < below (a clearance certainly missed); MK_PATH_OVERLAP_POINT
- * when a tetrahedron of W holds the ball of radius depth > margin about the
- * origin (x = sum lam_i a_i = sum lam_i b_i, a point of both bodies);
- * MK_PATH_ONE_PAIR when neither was reached. */
+ * <= sd; |z| >= sd. It ends in MK_PATH_SEPARATING when f(m) > need (r's n,
+ * f, the support points p1, p2 at n and upper, the least |w| met), or when
+ * f(m) > margin and |z| < below (a clearance certainly missed);
+ * MK_PATH_OVERLAP_POINT when a tetrahedron of W holds the ball of radius
+ * depth > margin about the origin (x = sum lam_i a_i = sum lam_i b_i, a
+ * point of both bodies); MK_PATH_ONE_PAIR when neither was reached. A
+ * state that steps on the pair evaluations it is given, so that several
+ * pairs can be evaluated in lock-step (mkBatch_Run). */
 typedef struct mkBatchCert {
 	mkVec3 n, p1, p2, x;
 	double f, upper, depth;
 } mkBatchCert;
 
-static mkBatchPath mkBatch_Gilbert(const mkPairCtx *c, double need, double below, mkBatchCert *r)
+typedef struct mkGilbert {
+	mkPairCtx c;
+	mkBatchCert r;
+	mkVec3 a[4], b[4], w[4], m;
+	double need, below, margin;
+	int k, evals, pair;
+} mkGilbert;
+
+static void mkGilbert_Begin(mkGilbert *g, double need, double below)
 {
-	double margin = MK_BATCH_MARGIN * c->scale, dl = mkVec3_LengthInline(c->d), lam[4];
-	mkVec3 m = dl > 0.0 ? mkVec3_Scale(c->d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0), a[4], b[4], w[4];
-	int k = 0;
-	r->f = -INFINITY;
-	r->upper = INFINITY;
-	for (int it = 0; it < MK_BATCH_EVALS; ++it) {
-		mkPairAt e;
-		double f = mkVec3_Dot(m, c->d) - mkPair_Eval(c, m, &e);
-		a[k] = mkVec3_Add(c->b1->t, e.a1.s);
-		b[k] = mkVec3_Add(c->b2->t, e.a2.s);
-		w[k] = mkVec3_Sub(b[k], a[k]);
-		r->upper = fmin(r->upper, mkVec3_LengthInline(w[k]));
-		if (f > r->f) {
-			r->f = f;
-			r->n = m;
-			r->p1 = a[k];
-			r->p2 = b[k];
-		}
-		if (f > need)
-			return MK_PATH_SEPARATING;
-		if (++k == 4 && (r->depth = mkBatch_Inside(w, lam)) >= 0.0) {
-			if (!(r->depth > margin))
-				return MK_PATH_ONE_PAIR;
-			r->x = mkVec3_Make(0.0, 0.0, 0.0);
-			for (int i = 0; i < 4; ++i)
-				r->x = mkVec3_Add(r->x, mkVec3_Scale(mkVec3_Add(a[i], b[i]), 0.5 * lam[i]));
-			return MK_PATH_OVERLAP_POINT;
-		}
-		mkVec3 z = mkHull_Nearest(w, k, lam);
-		int j = 0;
-		for (int i = 0; i < k; ++i)
-			if (lam[i] > 0.0) {
-				a[j] = a[i];
-				b[j] = b[i];
-				w[j++] = w[i];
-			}
-		k = j;
-		double zl = mkVec3_LengthInline(z);
-		r->upper = fmin(r->upper, zl);
-		if (r->f > margin && zl < below)
-			return MK_PATH_SEPARATING;
-		/* converged (within rounding) short of a certificate, or degenerate */
-		if (!(zl > 0.0) || !isfinite(zl) || zl - r->f <= 1e-14 * c->scale)
-			return MK_PATH_ONE_PAIR;
-		m = mkVec3_Scale(z, 1.0 / zl);
+	double dl = mkVec3_LengthInline(g->c.d);
+	g->m = dl > 0.0 ? mkVec3_Scale(g->c.d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);
+	g->k = g->evals = 0;
+	g->need = need;
+	g->below = below;
+	g->margin = MK_BATCH_MARGIN * g->c.scale;
+	g->r.f = -INFINITY;
+	g->r.upper = INFINITY;
+}
+
+/* Takes the support data of B1 at m (s1) and of B2 at -m (s2). Returns the
+ * path when the search is over, else -1 (g->m is the next direction). */
+static int mkGilbert_Step(mkGilbert *g, const mkSupAt *s1, const mkSupAt *s2)
+{
+	mkBatchCert *r = &g->r;
+	int k = g->k;
+	double lam[4];
+	double f = mkVec3_Dot(g->m, g->c.d) - mkVec3_Dot(g->m, mkVec3_Sub(s1->s, s2->s));
+	g->a[k] = mkVec3_Add(g->c.b1->t, s1->s);
+	g->b[k] = mkVec3_Add(g->c.b2->t, s2->s);
+	g->w[k] = mkVec3_Sub(g->b[k], g->a[k]);
+	r->upper = fmin(r->upper, mkVec3_LengthInline(g->w[k]));
+	if (f > r->f) {
+		r->f = f;
+		r->n = g->m;
+		r->p1 = g->a[k];
+		r->p2 = g->b[k];
 	}
-	return MK_PATH_ONE_PAIR;
+	if (f > g->need)
+		return MK_PATH_SEPARATING;
+	if (++k == 4 && (r->depth = mkBatch_Inside(g->w, lam)) >= 0.0) {
+		if (!(r->depth > g->margin))
+			return MK_PATH_ONE_PAIR;
+		r->x = mkVec3_Make(0.0, 0.0, 0.0);
+		for (int i = 0; i < 4; ++i)
+			r->x = mkVec3_Add(r->x, mkVec3_Scale(mkVec3_Add(g->a[i], g->b[i]), 0.5 * lam[i]));
+		return MK_PATH_OVERLAP_POINT;
+	}
+	mkVec3 z = mkHull_Nearest(g->w, k, lam);
+	int j = 0;
+	for (int i = 0; i < k; ++i)
+		if (lam[i] > 0.0) {
+			g->a[j] = g->a[i];
+			g->b[j] = g->b[i];
+			g->w[j++] = g->w[i];
+		}
+	g->k = j;
+	double zl = mkVec3_LengthInline(z);
+	r->upper = fmin(r->upper, zl);
+	if (r->f > g->margin && zl < g->below)
+		return MK_PATH_SEPARATING;
+	/* converged (within rounding) short of a certificate, degenerate, or
+	 * out of evaluations */
+	if (!(zl > 0.0) || !isfinite(zl) || zl - r->f <= 1e-14 * g->c.scale || ++g->evals >= MK_BATCH_EVALS)
+		return MK_PATH_ONE_PAIR;
+	g->m = mkVec3_Scale(z, 1.0 / zl);
+	return -1;
 }
 
 /* Writes entry k of out (each array that is not NULL). */
@@ -259,30 +279,45 @@ static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, const m
 	return MK_PATH_ONE_PAIR;
 }
 
-/* Pair k by the certificates where they settle it (STATUS, CLEARANCE,
- * DISTANCE's overlaps), else the one-pair query (DISTANCE on a separated
- * pair: started from the separating direction found). */
-static mkBatchPath mkBatch_One(const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
-	const mkBatchOut3 *out, int k)
+/* Sets up pair k's search (its bodies b1, b2) in g. Returns 1, or 0 when
+ * the pair goes to the one-pair query at once (FULL, or a scale that is not
+ * finite), which has then answered it (*path). */
+static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, int k, mkBatchPath *path)
 {
-	mkPairCtx c;
-	mkPairCtx_Init(&c, b1, b2);
-	if (mode == MK_BATCH_FULL || !isfinite(c.scale))
-		return mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k);
-	double margin = MK_BATCH_MARGIN * c.scale;
+	mkPairCtx_Init(&g->c, b1, b2);
+	g->pair = k;
+	if (mode == MK_BATCH_FULL || !isfinite(g->c.scale)) {
+		*path = mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k);
+		return 0;
+	}
+	double margin = MK_BATCH_MARGIN * g->c.scale;
 	int clearance = mode == MK_BATCH_CLEARANCE;
-	mkBatchCert r;
-	mkBatchPath p = mkBatch_Gilbert(&c, clearance ? delta + margin : margin, clearance ? delta - margin : -INFINITY, &r);
+	mkGilbert_Begin(g, clearance ? delta + margin : margin, clearance ? delta - margin : -INFINITY);
+	return 1;
+}
+
+/* The answer of a search that ended in p: the certificate's, or the
+ * one-pair query's (DISTANCE on a separated pair: started from the
+ * separating direction found; an overlap the search did not certify may
+ * still have a point on the centre segment). Returns the path taken. */
+static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+{
+	const mkBody3 *b1 = g->c.b1, *b2 = g->c.b2;
+	mkBatchCert *r = &g->r;
+	int k = g->pair;
+	double margin = MK_BATCH_MARGIN * g->c.scale;
 	if (p == MK_PATH_SEPARATING && mode != MK_BATCH_DISTANCE) {
-		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r.f, r.upper, r.n, r.p1, r.p2, r.f > delta + margin, p);
+		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r->f, r->upper, r->n, r->p1, r->p2, r->f > delta + margin, p);
 		return p;
 	}
 	if (p == MK_PATH_SEPARATING)
-		return mkBatch_OnePair(b1, b2, &r.n, mode, delta, out, k);
-	if (p == MK_PATH_ONE_PAIR && !(r.f > 0.0) && mkBatch_OverlapPoint(b1, b2, c.d, margin, &r.x, &r.depth))
+		return mkBatch_OnePair(b1, b2, &r->n, mode, delta, out, k);
+	if (p == MK_PATH_ONE_PAIR && !(r->f > 0.0) && mkBatch_OverlapPoint(b1, b2, g->c.d, margin, &r->x, &r->depth))
 		p = MK_PATH_OVERLAP_POINT;
 	if (p == MK_PATH_OVERLAP_POINT) {
-		mkBatch_Put(out, k, MK_CONTACT_OVERLAPPING, NAN, -INFINITY, -r.depth, mkVec3_Make(NAN, NAN, NAN), r.x, r.x, 0, p);
+		mkBatch_Put(out, k, MK_CONTACT_OVERLAPPING, NAN, -INFINITY, -r->depth, mkVec3_Make(NAN, NAN, NAN), r->x, r->x,
+			0, p);
 		return p;
 	}
 	return mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k);
@@ -298,7 +333,74 @@ static int mkBatch_ArgsOk(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 	return mode != MK_BATCH_CLEARANCE || (isfinite(delta) && delta >= 0.0);
 }
 
-/* Both entries: the bounds first (reference 0) or the one-pair query alone. */
+/* Searches in lock-step: the superquadric bodies of up to this many pairs'
+ * searches are evaluated together (mkSupBody_EvalLanes: their chains of
+ * libm calls interleaved, which the processor overlaps). */
+#define MK_BATCH_LANES (MK_LANES / 2)
+
+/* Pair k's bodies. */
+static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
+{
+	const int *ix = which ? pairs->index2 : pairs->index1;
+	return &(which ? pairs->bodies2 : pairs->bodies1)[ix ? ix[k] : k];
+}
+
+/* The certificates' searches of every pair, MK_BATCH_LANES at a time, each
+ * lane taking the next pair as its search ends; then each answer
+ * (mkBatch_Finish). */
+static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
+	mkBatchStats3 *stats, int *failed)
+{
+	mkGilbert g[MK_BATCH_LANES];
+	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0;
+	for (;;) {
+		for (int l = 0; l < MK_BATCH_LANES; ++l)
+			while (!live[l] && next < pairs->count) {
+				int k = next++;
+				mkBatchPath p;
+				if (mkBatch_Begin(&g[l], mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k, &p)) {
+					live[l] = 1;
+					++nlive;
+				} else {
+					mkBatchStats_Count(stats, p);
+					*failed += p == MK_PATH_FAILED;
+				}
+			}
+		if (nlive == 0)
+			return;
+		const mkSupBody *bs[MK_LANES];
+		mkVec3 ys[MK_LANES];
+		mkSupAt *as[MK_LANES], s[MK_BATCH_LANES][2];
+		int nl = 0;
+		for (int l = 0; l < MK_BATCH_LANES; ++l)
+			for (int j = 0; live[l] && j < 2; ++j) {
+				const mkSupBody *kb = j ? &g[l].c.k2 : &g[l].c.k1;
+				mkVec3 y = j ? mkVec3_Neg(g[l].m) : g[l].m;
+				if (kb->ellipsoid) {
+					mkSupBody_Eval(kb, y, &s[l][j]);
+				} else {
+					bs[nl] = kb;
+					ys[nl] = y;
+					as[nl++] = &s[l][j];
+				}
+			}
+		if (nl > 0)
+			mkSupBody_EvalLanes(nl, bs, ys, as);
+		for (int l = 0; l < MK_BATCH_LANES; ++l) {
+			int p = live[l] ? mkGilbert_Step(&g[l], &s[l][0], &s[l][1]) : -1;
+			if (p < 0)
+				continue;
+			mkBatchPath q = mkBatch_Finish(&g[l], (mkBatchPath)p, mode, delta, out);
+			mkBatchStats_Count(stats, q);
+			*failed += q == MK_PATH_FAILED;
+			live[l] = 0;
+			--nlive;
+		}
+	}
+}
+
+/* Both entries: the certificates first (reference 0) or the one-pair query
+ * alone. */
 static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
 	mkBatchStats3 *stats, int reference)
 {
@@ -307,10 +409,12 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 	if (stats)
 		memset(stats, 0, sizeof *stats);
 	int failed = 0;
+	if (!reference) {
+		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed);
+		return failed ? MK_ERR_CONVERGENCE : MK_OK;
+	}
 	for (int k = 0; k < pairs->count; ++k) {
-		const mkBody3 *b1 = &pairs->bodies1[pairs->index1 ? pairs->index1[k] : k];
-		const mkBody3 *b2 = &pairs->bodies2[pairs->index2 ? pairs->index2[k] : k];
-		mkBatchPath p = reference ? mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k) : mkBatch_One(b1, b2, mode, delta, out, k);
+		mkBatchPath p = mkBatch_OnePair(mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), NULL, mode, delta, out, k);
 		mkBatchStats_Count(stats, p);
 		failed += p == MK_PATH_FAILED;
 	}
