@@ -356,8 +356,8 @@ int main(int argc, char **argv)
 	mkColliderScratch scratch;
 	const double margin = 1e-9;
 	printf("# bench_colliders: %d pairs per kind, seed %llu; times in microseconds per query (CLOCK_MONOTONIC,\n"
-		"# entries interleaved pair by pair); errors |value - referee| / scale; status compared outside |sd| <= %g scale\n",
-		pairs, seed, margin);
+		"# entries interleaved pair by pair); errors |value - referee| / scale; status compared outside |sd| <= %g scale\n"
+		"# batch lanes: %s\n", pairs, seed, margin, mkCollide3_BatchLanes());
 	for (int kind = 0; kind < MK_KINDS; ++kind) {
 		if (only >= 0 ? kind != only : kind >= MK_KINDS_DEFAULT)
 			continue;

@@ -109,6 +109,11 @@ MK_API mkResult mkCollide3_Batch(const mkBatchPairs3 *pairs, mkBatchMode mode, d
 MK_API mkResult mkCollide3_BatchReference(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
 	const mkBatchOut3 *out, mkBatchStats3 *stats);
 
+/* Which support map the searches of mkCollide3_Batch run on this
+ * processor: "avx512" (8 lanes, SLEEF's exp2 / log2), "avx2" (4 lanes), or
+ * "scalar" (the solver's, four pairs in lock-step). For results' metadata. */
+MK_API const char *mkCollide3_BatchLanes(void);
+
 /* "status", "clearance", "distance", "full"; NULL for another value. */
 MK_API const char *mkBatchMode_Name(mkBatchMode mode);
 /* The mode of that name; -1 when unknown. */

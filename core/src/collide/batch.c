@@ -24,6 +24,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "collide/collision_impl.h"
 #include "collide/hull.h"
 #include "collide/pair.h"
 
@@ -333,6 +334,33 @@ static int mkBatch_ArgsOk(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 	return mode != MK_BATCH_CLEARANCE || (isfinite(delta) && delta >= 0.0);
 }
 
+/* A vector build of the support points (collision_impl.h), or NULL. */
+typedef void (*mkBatchLanesFn)(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
+
+/* nl <= MK_BATCH_VLANES superquadrics' support points at y[l] by vf (the
+ * lanes beyond nl repeat lane 0); the searches use s only. */
+static void mkBatch_EvalVector(int nl, const mkSupBody *const b[MK_LANES], const mkVec3 y[MK_LANES],
+	mkSupAt *const a[MK_LANES], mkBatchLanesFn vf)
+{
+	mkBatchLanesIn in;
+	double sv[3][MK_BATCH_VLANES];
+	for (int l = 0; l < MK_BATCH_VLANES; ++l) {
+		int f = l < nl ? l : 0;
+		for (int i = 0; i < 9; ++i)
+			in.P[i][l] = b[f]->P[i / 3][i % 3];
+		in.q1[l] = b[f]->q1;
+		in.q2[l] = b[f]->q2;
+		in.iq1[l] = b[f]->iq1;
+		in.iq2[l] = b[f]->iq2;
+		in.y[0][l] = y[f].x;
+		in.y[1][l] = y[f].y;
+		in.y[2][l] = y[f].z;
+	}
+	vf(&in, sv);
+	for (int l = 0; l < nl; ++l)
+		a[l]->s = mkVec3_Make(sv[0][l], sv[1][l], sv[2][l]);
+}
+
 /* Searches in lock-step: the superquadric bodies of up to this many pairs'
  * searches are evaluated together (mkSupBody_EvalLanes: their chains of
  * libm calls interleaved, which the processor overlaps). */
@@ -349,7 +377,7 @@ static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
  * lane taking the next pair as its search ends; then each answer
  * (mkBatch_Finish). */
 static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
-	mkBatchStats3 *stats, int *failed)
+	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf)
 {
 	mkGilbert g[MK_BATCH_LANES];
 	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0;
@@ -384,7 +412,9 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 					as[nl++] = &s[l][j];
 				}
 			}
-		if (nl > 0)
+		if (nl > 0 && vf)
+			mkBatch_EvalVector(nl, bs, ys, as, vf);
+		else if (nl > 0)
 			mkSupBody_EvalLanes(nl, bs, ys, as);
 		for (int l = 0; l < MK_BATCH_LANES; ++l) {
 			int p = live[l] ? mkGilbert_Step(&g[l], &s[l][0], &s[l][1]) : -1;
@@ -399,8 +429,25 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 	}
 }
 
-/* Both entries: the certificates first (reference 0) or the one-pair query
- * alone. */
+/* The vector build for impl (MK_IMPL_AUTO: the widest available); NULL for
+ * the scalar support map. */
+static mkBatchLanesFn mkBatch_LanesFn(mkImpl impl)
+{
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (impl == MK_IMPL_AUTO)
+		impl = mkImpl_Available(MK_IMPL_AVX512) ? MK_IMPL_AVX512 : mkImpl_Available(MK_IMPL_AVX2) ? MK_IMPL_AVX2
+			: MK_IMPL_SCALAR;
+	if (impl == MK_IMPL_AVX512)
+		return mkBatch_SupportLanesAvx512;
+	if (impl == MK_IMPL_AVX2)
+		return mkBatch_SupportLanesAvx2;
+#endif
+	(void)impl;
+	return NULL;
+}
+
+/* Both entries: the certificates first, with the lanes of impl (reference
+ * = impl >= 0), or the one-pair query alone (reference -1). */
 static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
 	mkBatchStats3 *stats, int reference)
 {
@@ -409,8 +456,8 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 	if (stats)
 		memset(stats, 0, sizeof *stats);
 	int failed = 0;
-	if (!reference) {
-		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed);
+	if (reference >= 0) {
+		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed, mkBatch_LanesFn((mkImpl)reference));
 		return failed ? MK_ERR_CONVERGENCE : MK_OK;
 	}
 	for (int k = 0; k < pairs->count; ++k) {
@@ -424,11 +471,33 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 mkResult mkCollide3_Batch(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
 	mkBatchStats3 *stats)
 {
-	return mkBatch_Run(pairs, mode, delta, out, stats, 0);
+	return mkBatch_Run(pairs, mode, delta, out, stats, MK_IMPL_AUTO);
+}
+
+mkResult mkCollide3_BatchImpl(mkImpl impl, const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, mkBatchStats3 *stats)
+{
+	if ((int)impl < MK_IMPL_AUTO || (int)impl > MK_IMPL_AVX512)
+		return MK_ERR_ARGUMENT;
+	if (impl != MK_IMPL_AUTO && !mkImpl_Available(impl))
+		return MK_ERR_UNSUPPORTED;
+	return mkBatch_Run(pairs, mode, delta, out, stats, (int)impl);
+}
+
+const char *mkCollide3_BatchLanes(void)
+{
+	mkBatchLanesFn f = mkBatch_LanesFn(MK_IMPL_AUTO);
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (f == mkBatch_SupportLanesAvx512)
+		return "avx512";
+	if (f == mkBatch_SupportLanesAvx2)
+		return "avx2";
+#endif
+	return f ? "vector" : "scalar";
 }
 
 mkResult mkCollide3_BatchReference(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
 	mkBatchStats3 *stats)
 {
-	return mkBatch_Run(pairs, mode, delta, out, stats, 1);
+	return mkBatch_Run(pairs, mode, delta, out, stats, -1);
 }
