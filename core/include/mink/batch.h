@@ -24,8 +24,8 @@
  *                      is that of a distance accurate to 1e-12 of the scale,
  *                      not certified). The status is filled as in STATUS.
  *  MK_BATCH_DISTANCE   the signed distance of separated (and touching) pairs,
- *                      as mkCollide3_Normal gives it (the one-pair solver,
- *                      started from the direction the bounds reached);
+ *                      as mkCollide3_Normal gives it (the same call, once
+ *                      the search found the pair separated);
  *                      overlapping pairs get their status only (distance
  *                      NaN), certified by an overlap point where one is
  *                      found, else by the one-pair query.

@@ -260,14 +260,13 @@ static void mkBatchStats_Count(mkBatchStats3 *s, mkBatchPath path)
 	s->failed += path == MK_PATH_FAILED;
 }
 
-/* Pair k answered by the one-pair query (the reference path), from the
- * centre line or from *start (mkCollide3_NormalFrom). Returns the path
- * taken. */
-static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, const mkVec3 *start, mkBatchMode mode,
-	double delta, const mkBatchOut3 *out, int k)
+/* Pair k answered by the one-pair query (the reference path,
+ * mkCollide3_Normal). Returns the path taken. */
+static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, int k)
 {
 	mkCollision3 c;
-	mkResult r = start ? mkCollide3_NormalFrom(*b1, *b2, *start, &c) : mkCollide3_Normal(*b1, *b2, &c);
+	mkResult r = mkCollide3_Normal(*b1, *b2, &c);
 	if (r != MK_OK) {
 		mkBatch_Put(out, k, MK_CONTACT_UNKNOWN, NAN, NAN, NAN, c.normal, c.p1, c.p2, 0, MK_PATH_FAILED);
 		return MK_PATH_FAILED;
@@ -289,7 +288,7 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 	mkPairCtx_Init(&g->c, b1, b2);
 	g->pair = k;
 	if (mode == MK_BATCH_FULL || !isfinite(g->c.scale)) {
-		*path = mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k);
+		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
 		return 0;
 	}
 	double margin = MK_BATCH_MARGIN * g->c.scale;
@@ -299,8 +298,8 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 }
 
 /* The answer of a search that ended in p: the certificate's, or the
- * one-pair query's (DISTANCE on a separated pair: started from the
- * separating direction found; an overlap the search did not certify may
+ * one-pair query's (DISTANCE on a separated pair: the same call as the
+ * reference, so the same distance; an overlap the search did not certify may
  * still have a point on the centre segment). Returns the path taken. */
 static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double delta, const mkBatchOut3 *out)
 {
@@ -312,8 +311,8 @@ static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode,
 		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r->f, r->upper, r->n, r->p1, r->p2, r->f > delta + margin, p);
 		return p;
 	}
-	if (p == MK_PATH_SEPARATING)
-		return mkBatch_OnePair(b1, b2, &r->n, mode, delta, out, k);
+	if (p == MK_PATH_SEPARATING) /* started from r->n it was no faster (measured) */
+		return mkBatch_OnePair(b1, b2, mode, delta, out, k);
 	if (p == MK_PATH_ONE_PAIR && !(r->f > 0.0) && mkBatch_OverlapPoint(b1, b2, g->c.d, margin, &r->x, &r->depth))
 		p = MK_PATH_OVERLAP_POINT;
 	if (p == MK_PATH_OVERLAP_POINT) {
@@ -321,7 +320,7 @@ static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode,
 			0, p);
 		return p;
 	}
-	return mkBatch_OnePair(b1, b2, NULL, mode, delta, out, k);
+	return mkBatch_OnePair(b1, b2, mode, delta, out, k);
 }
 
 /* NULL pointers, negative counts, unknown modes, bad deltas. */
@@ -461,7 +460,7 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 		return failed ? MK_ERR_CONVERGENCE : MK_OK;
 	}
 	for (int k = 0; k < pairs->count; ++k) {
-		mkBatchPath p = mkBatch_OnePair(mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), NULL, mode, delta, out, k);
+		mkBatchPath p = mkBatch_OnePair(mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k);
 		mkBatchStats_Count(stats, p);
 		failed += p == MK_PATH_FAILED;
 	}
