@@ -15,6 +15,8 @@ static void help(void)
 {
 	printf(
 		"usage: mink collide --body1 SPEC --body2 SPEC [--method NAME|all] [--csv]\n"
+		"       mink collide --pairs FILE [--mode status|clearance|distance|full] [--delta D] [--out FILE]\n"
+		"         (many pairs in one batch: see 'mink collide --pairs --help')\n"
 		"\n"
 		"Collision status, distance (separated or touching) or penetration depth\n"
 		"(overlapping) and witness points of two 3D bodies. Text output, one block per\n"
@@ -105,6 +107,9 @@ static int report(const mkCollider *c, mkResult r, const mkCollision3 *o, int cs
 
 int mkCmd_Collide(int argc, char **argv)
 {
+	for (int i = 1; i < argc; ++i)
+		if (strcmp(argv[i], "--pairs") == 0 || strncmp(argv[i], "--pairs=", 8) == 0)
+			return mkCmd_CollidePairs(argc, argv);
 	const char *spec1 = NULL, *spec2 = NULL, *method = "minksum-normal";
 	int csv = 0;
 	char msg[512] = "";

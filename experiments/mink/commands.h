@@ -10,5 +10,7 @@ int mkCmd_Scene(int argc, char **argv);
 int mkCmd_Methods(int argc, char **argv);
 int mkCmd_Verify(int argc, char **argv);
 int mkCmd_Collide(int argc, char **argv);
+/* `mink collide --pairs FILE`: the batched queries (cmd_pairs.c). */
+int mkCmd_CollidePairs(int argc, char **argv);
 
 #endif

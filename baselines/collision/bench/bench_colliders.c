@@ -25,13 +25,19 @@
  * functions.
  *
  * Timing: CLOCK_MONOTONIC around the run call only (prepare untimed), the
- * entries interleaved pair by pair (A B C A B C ...), one thread.
+ * entries interleaved pair by pair (A B C A B C ...), one thread. The batch
+ * modes of mink/batch.h are timed twice: as one-pair calls interleaved with
+ * the entries (rows batch-<mode>), and amortised over chunks of 64 pairs
+ * interleaved chunk by chunk with ccd-gjk and ccd-gjk-epa-1e-10 on the same
+ * chunk (rows batch-<mode> x64: the median and mean over the chunks of the
+ * time per pair), each with its ratios to those two peers.
  *
  * usage: bench_colliders [--help] [pairs per kind, default 2000] [seed, default 2022]
  *                        [entries to leave out, comma-separated, e.g. implicit]
  *                        [only this kind: 0 ellipsoids .. 3 deep-overlap, 4 box-like] */
 #define _POSIX_C_SOURCE 199309L
 #include <mink/colliders.h>
+#include <mink/batch.h>
 
 #include <errno.h>
 #include <math.h>
@@ -222,6 +228,108 @@ static void mkBenchRefereeLine(const mkCollision3 *ref, double *reftime, double 
 		mkQuantile(refgap, ng, 0.99), mkQuantile(refgap, ng, 1.0));
 }
 
+/* The batch modes (mink/batch.h), timed as one-pair calls interleaved with
+ * the entries, so that their median and mean compare with the entries'
+ * (the scalar batch path has nothing to amortise over pairs). The
+ * clearance asked is MK_BENCH_DELTA times the pair's scale. */
+#define MK_BENCH_DELTA 1e-2
+enum { MK_BATCH_MODES = 4 };
+
+/* One pair in one batch mode: the time (microseconds), whether the bounds
+ * answered it (not the one-pair query), and the status disagreement with a
+ * certain referee. */
+static double mkBenchBatch(mkBatchMode mode, const mkBody3 *b1, const mkBody3 *b2, const mkCollision3 *ref,
+	int certain, double margin, int *bounds, int *disagree)
+{
+	mkContact st;
+	double dist;
+	unsigned char path;
+	mkBatchOut3 out = { &st, &dist, NULL, NULL, NULL, NULL, NULL, NULL, &path };
+	mkBatchPairs3 pr = { 1, b1, b2, NULL, NULL };
+	double delta = MK_BENCH_DELTA * ref->scale;
+	double t0 = mkNow();
+	mkResult r = mkCollide3_Batch(&pr, mode, delta, &out, NULL);
+	double t1 = mkNow();
+	*bounds += r == MK_OK && path != MK_PATH_ONE_PAIR;
+	double sdr = ref->distance;
+	if (certain && fabs(sdr) > margin * ref->scale) {
+		int says = st == MK_CONTACT_SEPARATED ? 1 : st == MK_CONTACT_OVERLAPPING ? 0 : -1;
+		*disagree += says != (sdr > 0.0);
+	}
+	return 1e6 * (t1 - t0);
+}
+
+/* The batch rows, then each mode's ratios to ccd-gjk and ccd-gjk-epa-1e-10
+ * (their pairs per second over the entry's, by median and by mean). */
+static void mkBenchBatchRows(double *bt, int pairs, const int *bounds, const int *dis, const double *ref_med,
+	const double *ref_mean)
+{
+	static const char *const names[MK_BATCH_MODES] = { "batch-status", "batch-clearance", "batch-distance",
+		"batch-full" };
+	for (int m = 0; m < MK_BATCH_MODES; ++m) {
+		double *t = bt + (size_t)m * (size_t)pairs, mean = 0.0;
+		for (int i = 0; i < pairs; ++i)
+			mean += t[i];
+		mean /= pairs;
+		double med = mkQuantile(t, pairs, 0.5);
+		printf("%-18s %9.3f %9.3f %7d %8d   bounds answered %5.1f %%; x ccd-gjk: median %.2f, mean %.2f; "
+			"x ccd-gjk-epa-1e-10: median %.2f, mean %.2f\n", names[m], med, mean, 0, dis[m], 100.0 * bounds[m] / pairs,
+			ref_med[0] / med, ref_mean[0] / mean, ref_med[1] / med, ref_mean[1] / mean);
+	}
+}
+
+/* Amortised: the pairs of a kind in chunks of MK_BENCH_CHUNK, each chunk
+ * run by ccd-gjk (one query per pair, run calls only timed) and by each
+ * batch mode (one call), interleaved chunk by chunk; per chunk the time per
+ * pair. Prints each mode's median and mean over the chunks and the ratios
+ * to ccd-gjk's and ccd-gjk-epa-1e-10's (pairs per second over theirs). */
+#define MK_BENCH_CHUNK 64
+static void mkBenchChunks(const mkBody3 *B1, const mkBody3 *B2, int pairs, mkColliderScratch *scratch, double *work)
+{
+	const mkCollider *peer[2] = { mkColliders_Find("ccd-gjk"), mkColliders_Find("ccd-gjk-epa-1e-10") };
+	int nch = (pairs + MK_BENCH_CHUNK - 1) / MK_BENCH_CHUNK;
+	static mkContact st[MK_BENCH_CHUNK];
+	static double dist[MK_BENCH_CHUNK];
+	mkBatchOut3 out = { st, dist, NULL, NULL, NULL, NULL, NULL, NULL, NULL };
+	for (int c = 0; c < nch; ++c) {
+		int at = c * MK_BENCH_CHUNK, n = pairs - at < MK_BENCH_CHUNK ? pairs - at : MK_BENCH_CHUNK;
+		for (int e = 0; e < 2; ++e) {
+			double t = 0.0;
+			for (int p = at; p < at + n && peer[e]; ++p) {
+				mkCollision3 o;
+				if (peer[e]->prepare && peer[e]->prepare(B1[p], B2[p], scratch) != MK_OK)
+					continue;
+				double t0 = mkNow();
+				peer[e]->run(B1[p], B2[p], scratch, &o);
+				t += mkNow() - t0;
+			}
+			work[(size_t)e * (size_t)nch + (size_t)c] = 1e6 * t / n;
+		}
+		mkBatchPairs3 pr = { n, B1 + at, B2 + at, NULL, NULL };
+		for (int m = 0; m < MK_BATCH_MODES; ++m) {
+			double delta = MK_BENCH_DELTA * mkCollide3_PairSize(B1[at], B2[at]);
+			double t0 = mkNow();
+			mkCollide3_Batch(&pr, (mkBatchMode)m, delta, &out, NULL);
+			work[(size_t)(2 + m) * (size_t)nch + (size_t)c] = 1e6 * (mkNow() - t0) / n;
+		}
+	}
+	double med[2 + MK_BATCH_MODES], mean[2 + MK_BATCH_MODES];
+	for (int r = 0; r < 2 + MK_BATCH_MODES; ++r) {
+		double *t = work + (size_t)r * (size_t)nch, sum = 0.0;
+		for (int i = 0; i < nch; ++i)
+			sum += t[i];
+		mean[r] = sum / nch;
+		med[r] = mkQuantile(t, nch, 0.5);
+	}
+	printf("(amortised, %d chunks of %d pairs, us per pair: ccd-gjk median %.3f mean %.3f; ccd-gjk-epa-1e-10 median %.3f "
+		"mean %.3f)\n", nch, MK_BENCH_CHUNK, med[0], mean[0], med[1], mean[1]);
+	static const char *const names[MK_BATCH_MODES] = { "status", "clearance", "distance", "full" };
+	for (int m = 0; m < MK_BATCH_MODES; ++m)
+		printf("batch-%-9s x%-3d %9.3f %9.3f   x ccd-gjk: median %.2f, mean %.2f; x ccd-gjk-epa-1e-10: median %.2f, "
+			"mean %.2f\n", names[m], MK_BENCH_CHUNK, med[2 + m], mean[2 + m], med[0] / med[2 + m], mean[0] / mean[2 + m],
+			med[1] / med[2 + m], mean[1] / mean[2 + m]);
+}
+
 int main(int argc, char **argv)
 {
 	int pairs, only, rc;
@@ -236,7 +344,8 @@ int main(int argc, char **argv)
 	mkBody3 *B1 = malloc(sizeof(mkBody3) * (size_t)pairs), *B2 = malloc(sizeof(mkBody3) * (size_t)pairs);
 	mkCollision3 *ref = malloc(sizeof(mkCollision3) * (size_t)pairs);
 	double *reftime = malloc(sizeof(double) * (size_t)pairs), *refgap = malloc(sizeof(double) * (size_t)pairs);
-	if (!times || !derr || !perr || !B1 || !B2 || !ref || !reftime || !refgap) {
+	double *btimes = malloc(sizeof(double) * (size_t)pairs * MK_BATCH_MODES);
+	if (!btimes || !times || !derr || !perr || !B1 || !B2 || !ref || !reftime || !refgap) {
 		fprintf(stderr, "bench_colliders: out of memory\n");
 		return 1;
 	}
@@ -247,8 +356,8 @@ int main(int argc, char **argv)
 	mkColliderScratch scratch;
 	const double margin = 1e-9;
 	printf("# bench_colliders: %d pairs per kind, seed %llu; times in microseconds per query (CLOCK_MONOTONIC,\n"
-		"# entries interleaved pair by pair); errors |value - referee| / scale; status compared outside |sd| <= %g scale\n",
-		pairs, seed, margin);
+		"# entries interleaved pair by pair); errors |value - referee| / scale; status compared outside |sd| <= %g scale\n"
+		"# batch lanes: %s\n", pairs, seed, margin, mkCollide3_BatchLanes());
 	for (int kind = 0; kind < MK_KINDS; ++kind) {
 		if (only >= 0 ? kind != only : kind >= MK_KINDS_DEFAULT)
 			continue;
@@ -260,6 +369,7 @@ int main(int argc, char **argv)
 		int nt[64] = { 0 }, nd[64] = { 0 }, np[64] = { 0 }, fails[64] = { 0 }, dis[64] = { 0 }, worse[64] = { 0 };
 		int above[64] = { 0 };
 		double wit[64] = { 0 };
+		int bbounds[MK_BATCH_MODES] = { 0 }, bdis[MK_BATCH_MODES] = { 0 };
 		for (int p = 0; p < pairs; ++p) {
 			double sdr = ref[p].distance, scale = ref[p].scale;
 			if (!isfinite(sdr))
@@ -270,6 +380,9 @@ int main(int argc, char **argv)
 			double lower = ref[p].bound, upper = sdr > 0.0 ? sdr + ref[p].gap : 0.0;
 			int certain = ref[p].residual <= 1e-10;
 			nuncertain += !certain;
+			for (int m = 0; m < MK_BATCH_MODES; ++m)
+				btimes[(size_t)m * (size_t)pairs + (size_t)p] = mkBenchBatch((mkBatchMode)m, &B1[p], &B2[p], &ref[p],
+					certain, margin, &bbounds[m], &bdis[m]);
 			for (int e = 0; e < ne && e < 64; ++e) {
 				const mkCollider *c = mkColliders_At(e);
 				if (c->referee || !mkCollider_Accepts(c, B1[p], B2[p], NULL, 0))
@@ -325,10 +438,26 @@ int main(int argc, char **argv)
 			int counts[4] = { fails[e], dis[e], worse[e], above[e] };
 			mkBenchRow(mkColliders_At(e), times + at, nt[e], derr + at, nd[e], perr + at, np[e], counts, wit[e]);
 		}
+		/* the peers' medians and means for the ratios (mkBenchRow sorted their times) */
+		double rmed[2] = { NAN, NAN }, rmean[2] = { NAN, NAN };
+		for (int e = 0; e < ne && e < 64; ++e) {
+			const char *nm = mkColliders_At(e)->name;
+			int w = strcmp(nm, "ccd-gjk") == 0 ? 0 : strcmp(nm, "ccd-gjk-epa-1e-10") == 0 ? 1 : -1;
+			if (w < 0 || nt[e] == 0)
+				continue;
+			double *t = times + (size_t)e * (size_t)pairs, sum = 0.0;
+			for (int i = 0; i < nt[e]; ++i)
+				sum += t[i];
+			rmed[w] = mkQuantile(t, nt[e], 0.5);
+			rmean[w] = sum / nt[e];
+		}
+		mkBenchBatchRows(btimes, pairs, bbounds, bdis, rmed, rmean);
+		mkBenchChunks(B1, B2, pairs, &scratch, btimes);
 		mkBenchRefereeLine(ref, reftime, refgap, pairs, nref_fail, nuncertain);
 	}
 	(void)normal;
 	free(times);
+	free(btimes);
 	free(derr);
 	free(perr);
 	free(B1);

@@ -13,5 +13,6 @@
 #include "spec.h"
 #include "method.h"
 #include "collision.h"
+#include "batch.h"
 
 #endif

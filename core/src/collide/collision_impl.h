@@ -17,4 +17,20 @@ mkResult mkCollide3_NormalAtFma(mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkC
  * (the caller checks mkImpl_Available), the portable one otherwise. */
 mkResult mkCollide3_NormalImpl(mkImpl impl, mkBody3 b1, mkBody3 b2, const mkVec3 *start, mkCollision3 *out);
 
+/* The batch's vector lanes (batch_x86.h): the support points s = P grad N
+ * (P^T y) of MK_BATCH_VLANES superquadrics, P row-major (P[3 i + j] the
+ * entry i, j), one lane per column. */
+#define MK_BATCH_VLANES 8
+typedef struct mkBatchLanesIn {
+	double P[9][MK_BATCH_VLANES], q1[MK_BATCH_VLANES], q2[MK_BATCH_VLANES], iq1[MK_BATCH_VLANES],
+		iq2[MK_BATCH_VLANES], y[3][MK_BATCH_VLANES];
+} mkBatchLanesIn;
+void mkBatch_SupportLanesAvx2(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
+void mkBatch_SupportLanesAvx512(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
+/* mkCollide3_Batch with the lanes of impl (MK_IMPL_SCALAR: the scalar
+ * support map; MK_IMPL_AVX2 / MK_IMPL_AVX512 where available, else
+ * MK_ERR_UNSUPPORTED; MK_IMPL_AUTO: the widest available). */
+mkResult mkCollide3_BatchImpl(mkImpl impl, const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, mkBatchStats3 *stats);
+
 #endif

@@ -1,0 +1,167 @@
+/* test_batch.c - the batched queries of mink/batch.h, every mode, against
+ *  - the one-pair query (mkCollide3_BatchReference: mkCollide3_Normal on
+ *    every pair): the same status on every pair, distances within 1e-12 of
+ *    the scale, the same clearance verdict outside the stated margin;
+ *  - the referee of the collider registry (support maps only, not the
+ *    solver): statuses where it is certain and |sd| > 1e-9 of the scale,
+ *    distances inside its certified bracket within 1e-12 of the scale;
+ *  - the certificates themselves, by code that shares nothing with the
+ *    bounds: a separating direction's f(n) by mkCollide3_Bound
+ *    (mkBody3_SupportValue), an overlap point inside both bodies by their
+ *    implicit functions (mkBody3_Implicit < 1);
+ * on the paper's pairs (ellipsoids, superquadrics), near-touching pairs
+ * (moved along the normal to a signed distance 1e-1 ... 1e-6 of the
+ * scale, both sides), box-like pairs (exponents U(0.05, 0.3)) and deep
+ * pairs (centres within U(-2, 2)^3). Prints how many pairs each path
+ * answered (the fallbacks to the one-pair query), and checks the
+ * arguments' errors. */
+#include <mink/colliders.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "draw3.h"
+#include "draw_paper.h"
+#include "ensure.h"
+
+enum { MK_N = 300, MK_KINDS = 6 };
+static const char *const mkKindNames[MK_KINDS] = { "ellipsoids", "superquadrics", "near-separated", "near-overlapping",
+	"box-like", "deep" };
+
+/* Pairs of kind k. */
+static void mkDrawKind(int kind, unsigned long long *seed, mkBody3 *b1, mkBody3 *b2)
+{
+	for (int p = 0; p < MK_N; ++p) {
+		int ell = kind == 0 || ((kind == 2 || kind == 3 || kind == 5) && p % 2 == 0);
+		mk_test_paper_pair3(seed, ell, kind == 5, &b1[p], &b2[p]);
+		if (kind == 4) {
+			b1[p].shape.eps1 = mk_test_uniform(seed, 0.05, 0.3);
+			b1[p].shape.eps2 = mk_test_uniform(seed, 0.05, 0.3);
+			b2[p].shape.eps1 = mk_test_uniform(seed, 0.05, 0.3);
+			b2[p].shape.eps2 = mk_test_uniform(seed, 0.05, 0.3);
+		}
+		if (kind == 2 || kind == 3) {
+			static const double s[6] = { 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6 };
+			mkCollision3 c;
+			if (mkCollide3_Normal(b1[p], b2[p], &c) == MK_OK && c.distance > 0.0) {
+				double to = (kind == 2 ? 1.0 : -1.0) * s[p % 6] * c.scale;
+				b2[p].t = mkVec3_Add(b2[p].t, mkVec3_Scale(c.normal, to - c.distance));
+			}
+		}
+	}
+}
+
+typedef struct mkOut {
+	mkContact status[MK_N];
+	double distance[MK_N], lower[MK_N], upper[MK_N];
+	mkVec3 normal[MK_N], p1[MK_N], p2[MK_N];
+	unsigned char clear[MK_N], path[MK_N];
+} mkOut;
+
+static mkBatchOut3 mkOut_View(mkOut *o)
+{
+	mkBatchOut3 v = { o->status, o->distance, o->lower, o->upper, o->normal, o->p1, o->p2, o->clear, o->path };
+	return v;
+}
+
+/* The certificates of the bounds' answers, by independent code. */
+static void mkCheckCertificates(const mkBody3 *b1, const mkBody3 *b2, const mkOut *o, int p)
+{
+	if (o->path[p] == MK_PATH_SEPARATING) {
+		double f = mkCollide3_Bound(b1[p], b2[p], o->normal[p]);
+		ENSURE(f > 0.0);
+		ENSURE_NEAR(f, o->lower[p], 1e-13 * mkCollide3_PairSize(b1[p], b2[p]));
+		ENSURE(o->status[p] == MK_CONTACT_SEPARATED);
+	}
+	if (o->path[p] == MK_PATH_OVERLAP_POINT) {
+		ENSURE(mkBody3_Implicit(b1[p], o->p1[p]) < 1.0);
+		ENSURE(mkBody3_Implicit(b2[p], o->p1[p]) < 1.0);
+		ENSURE(o->status[p] == MK_CONTACT_OVERLAPPING && o->upper[p] < 0.0);
+	}
+}
+
+/* One kind in one mode: the batch against the reference and the referee. */
+static void mkCheckMode(int kind, mkBatchMode mode, const mkBody3 *b1, const mkBody3 *b2, const mkCollision3 *ref)
+{
+	static mkOut got, want;
+	mkBatchPairs3 pairs = { MK_N, b1, b2, NULL, NULL };
+	mkBatchOut3 vg = mkOut_View(&got), vw = mkOut_View(&want);
+	mkBatchStats3 st, stw;
+	double delta = 0.05 * mkCollide3_PairSize(b1[0], b2[0]);
+	ENSURE(mkCollide3_Batch(&pairs, mode, delta, &vg, &st) == MK_OK);
+	ENSURE(mkCollide3_BatchReference(&pairs, mode, delta, &vw, &stw) == MK_OK);
+	ENSURE(stw.one_pair == MK_N);
+	ENSURE(st.separating + st.overlap_point + st.one_pair + st.failed == MK_N && st.failed == 0);
+	printf("  %-17s %-9s bounds: %3d separating, %3d overlap point; one-pair query: %3d\n", mkKindNames[kind],
+		mkBatchMode_Name(mode), st.separating, st.overlap_point, st.one_pair);
+	for (int p = 0; p < MK_N; ++p) {
+		double scale = mkCollide3_PairSize(b1[p], b2[p]);
+		ENSURE(got.status[p] == want.status[p]);
+		mkCheckCertificates(b1, b2, &got, p);
+		if (mode == MK_BATCH_DISTANCE || mode == MK_BATCH_FULL) {
+			if (want.status[p] == MK_CONTACT_OVERLAPPING && mode == MK_BATCH_DISTANCE)
+				ENSURE(isnan(got.distance[p]));
+			else
+				ENSURE_NEAR(got.distance[p], want.distance[p], 1e-12 * scale);
+		}
+		if (mode == MK_BATCH_CLEARANCE) {
+			double sd = ref[p].distance;
+			if (fabs(sd - delta) > 1e-9 * scale)
+				ENSURE(got.clear[p] == (sd >= delta));
+			if (fabs(want.distance[p] - delta) > MK_BATCH_MARGIN * scale)
+				ENSURE(got.clear[p] == want.clear[p]);
+		}
+		/* the referee: certain when its bracket is within 1e-10 of the scale */
+		if (ref[p].residual <= 1e-10 && fabs(ref[p].distance) > 1e-9 * scale)
+			ENSURE((got.status[p] == MK_CONTACT_SEPARATED) == (ref[p].distance > 0.0));
+		if (isfinite(got.distance[p]) && ref[p].distance > 0.0) {
+			ENSURE_LE(ref[p].bound - 1e-12 * scale, got.distance[p]);
+			ENSURE_LE(got.distance[p], ref[p].distance + ref[p].gap + 1e-12 * scale);
+		}
+	}
+}
+
+/* Bad arguments: MK_ERR_ARGUMENT, nothing written. */
+static void mkCheckArguments(const mkBody3 *b1, const mkBody3 *b2)
+{
+	mkContact status[2] = { MK_CONTACT_UNKNOWN, MK_CONTACT_UNKNOWN };
+	mkBatchOut3 out = { status, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL };
+	mkBatchPairs3 pairs = { 2, b1, b2, NULL, NULL };
+	ENSURE(mkCollide3_Batch(&pairs, MK_BATCH_CLEARANCE, -1.0, &out, NULL) == MK_ERR_ARGUMENT);
+	ENSURE(mkCollide3_Batch(&pairs, MK_BATCH_CLEARANCE, NAN, &out, NULL) == MK_ERR_ARGUMENT);
+	ENSURE(mkCollide3_Batch(&pairs, (mkBatchMode)7, 0.0, &out, NULL) == MK_ERR_ARGUMENT);
+	ENSURE(mkCollide3_Batch(NULL, MK_BATCH_STATUS, 0.0, &out, NULL) == MK_ERR_ARGUMENT);
+	pairs.count = -1;
+	ENSURE(mkCollide3_Batch(&pairs, MK_BATCH_STATUS, 0.0, &out, NULL) == MK_ERR_ARGUMENT);
+	ENSURE(status[0] == MK_CONTACT_UNKNOWN);
+	/* index arrays: pair k is bodies1[index1[k]], bodies2[index2[k]] */
+	int i1[2] = { 1, 1 }, i2[2] = { 0, 1 };
+	mkBatchPairs3 ix = { 2, b1, b2, i1, i2 };
+	ENSURE(mkCollide3_Batch(&ix, MK_BATCH_STATUS, 0.0, &out, NULL) == MK_OK);
+	mkCollision3 c;
+	ENSURE(mkCollide3_Normal(b1[1], b2[0], &c) == MK_OK && status[0] == c.status);
+	ENSURE(mkCollide3_Normal(b1[1], b2[1], &c) == MK_OK && status[1] == c.status);
+	ENSURE(mkBatchMode_FromName("clearance") == MK_BATCH_CLEARANCE && mkBatchMode_FromName("x") == -1);
+}
+
+int main(void)
+{
+	static mkBody3 b1[MK_N], b2[MK_N];
+	static mkCollision3 ref[MK_N];
+	const mkCollider *referee = mkColliders_Find("referee");
+	ENSURE(referee != NULL);
+	if (!referee)
+		return mk_summary("test_batch");
+	mkColliderScratch scratch;
+	unsigned long long seed = 28;
+	for (int kind = 0; kind < MK_KINDS; ++kind) {
+		mkDrawKind(kind, &seed, b1, b2);
+		for (int p = 0; p < MK_N; ++p)
+			ENSURE(mkCollider_Run(referee, b1[p], b2[p], &scratch, &ref[p]) == MK_OK);
+		for (int mode = 0; mode < 4; ++mode)
+			mkCheckMode(kind, (mkBatchMode)mode, b1, b2, ref);
+	}
+	mkCheckArguments(b1, b2);
+	return mk_summary("test_batch");
+}

@@ -1,0 +1,502 @@
+/* batch.c - many pairs per call (mink/batch.h): certificates first, the
+ * one-pair query where they do not settle a pair.
+ *
+ * Gilbert's iteration on W = B2 - B1 (mkBatch_Gilbert) looks for both: a
+ * separating direction (f(m) = <m, d> - h1(m) - h2(-m) <= sd, the support
+ * values through mkPair_Eval as the solver evaluates them), or a
+ * tetrahedron of points of W holding a ball about the origin.
+ *
+ * Where it gives up on an overlap, a point on the centre segment: the gauge
+ * g(y) = |(|(y1/a, y2/b)|_p2, y3/c)|_p1 of the canonical body (p = 2/eps:
+ * the nested norm whose unit ball it is; pair norms from the ratio of the
+ * smaller to the larger component, no overflow) at y = M^-1 (x - t). With
+ * u = g < 1, x + (1 - u)(B - t) lies in B, and B - t holds the ball of
+ * radius rho = sigma_min(M) / |(1/a, 1/b, 1/c)| (the body holds its
+ * cross-polytope, since every p >= 1 norm is at most the l1 norm;
+ * sigma_min(M) >= 1 / |M^-1|_F). Balls of radii r1, r2 about one point x
+ * inside B1 and B2 put the ball of radius r1 + r2 about the origin inside
+ * B1 - B2: the depth is at least r1 + r2. The gauges are linear along the
+ * segment: the end of the common interval that maximises the bound, the
+ * gauges evaluated again at the point itself. */
+#include <mink/batch.h>
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "collide/collision_impl.h"
+#include "collide/hull.h"
+#include "collide/pair.h"
+
+static const char *const mkBatchModeNames[4] = { "status", "clearance", "distance", "full" };
+
+const char *mkBatchMode_Name(mkBatchMode mode)
+{
+	return (int)mode >= 0 && (int)mode < 4 ? mkBatchModeNames[mode] : NULL;
+}
+
+int mkBatchMode_FromName(const char *name)
+{
+	for (int i = 0; name && i < 4; ++i)
+		if (strcmp(name, mkBatchModeNames[i]) == 0)
+			return i;
+	return -1;
+}
+
+/* |(u, v)|_p of u, v >= 0, from the ratio of the smaller to the larger. */
+static double mkBatch_PairNorm(double u, double v, double p)
+{
+	double m = u > v ? u : v, k = u > v ? v : u;
+	if (!(m > 0.0))
+		return 0.0;
+	return m * pow(1.0 + pow(k / m, p), 1.0 / p);
+}
+
+/* One body's data for the overlap test. */
+typedef struct mkBatchGauge {
+	mkMat3 Mi;
+	double slack; /* a bound on the relative rounding of g */
+	double rho;   /* inradius about the centre */
+} mkBatchGauge;
+
+static void mkBatchGauge_Init(mkBatchGauge *g, const mkBody3 *b)
+{
+	g->Mi = mkMat3_Inverse(b->M);
+	double fm = 0.0, fi = 0.0;
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) {
+			fm += b->M.m[i][j] * b->M.m[i][j];
+			fi += g->Mi.m[i][j] * g->Mi.m[i][j];
+		}
+	const mkShape3 *s = &b->shape;
+	double inv = sqrt(1.0 / (s->a * s->a) + 1.0 / (s->b * s->b) + 1.0 / (s->c * s->c));
+	g->rho = 1.0 / (sqrt(fi) * inv);
+	g->slack = 64.0 * DBL_EPSILON * (1.0 + sqrt(fm * fi));
+}
+
+/* The gauge of body b at the point x (rounding slack added). */
+static double mkBatchGauge_At(const mkBatchGauge *g, const mkBody3 *b, mkVec3 x)
+{
+	mkVec3 y = mkMat3_MulVec(g->Mi, mkVec3_Sub(x, b->t));
+	const mkShape3 *s = &b->shape;
+	double in = mkBatch_PairNorm(fabs(y.x) / s->a, fabs(y.y) / s->b, 2.0 / s->eps2);
+	return mkBatch_PairNorm(in, fabs(y.z) / s->c, 2.0 / s->eps1) * (1.0 + g->slack) + g->slack;
+}
+
+/* A point of both bodies on the centre segment whose balls inside them add
+ * to more than need: 1 and *x, *depth (the certified lower bound of the
+ * depth), else 0. */
+static int mkBatch_OverlapPoint(const mkBody3 *b1, const mkBody3 *b2, mkVec3 d, double need, mkVec3 *x,
+	double *depth)
+{
+	mkBatchGauge g1, g2;
+	mkBatchGauge_Init(&g1, b1);
+	mkBatchGauge_Init(&g2, b2);
+	double t;
+	if (mkVec3_LengthInline(d) == 0.0) {
+		t = 0.0;
+	} else {
+		double u1 = mkBatchGauge_At(&g1, b1, b2->t);   /* g1 at t = 1 */
+		double u2 = mkBatchGauge_At(&g2, b2, b1->t);   /* g2 at t = 0 */
+		double lo = u2 > 0.0 ? fmax(0.0, 1.0 - 1.0 / u2) : 0.0, hi = u1 > 0.0 ? fmin(1.0, 1.0 / u1) : 1.0;
+		if (!(lo < hi))
+			return 0;
+		/* (1 - t u1) rho1 + (1 - (1 - t) u2) rho2: slope u2 rho2 - u1 rho1 */
+		t = u2 * g2.rho - u1 * g1.rho > 0.0 ? hi : lo;
+	}
+	*x = mkVec3_Add(b1->t, mkVec3_Scale(d, t));
+	double v1 = mkBatchGauge_At(&g1, b1, *x), v2 = mkBatchGauge_At(&g2, b2, *x);
+	if (!(v1 < 1.0 && v2 < 1.0))
+		return 0;
+	*depth = (1.0 - v1) * g1.rho + (1.0 - v2) * g2.rho;
+	return *depth > need;
+}
+
+/* A tetrahedron w[0..4): when it holds the origin, its barycentric weights
+ * lam and the radius of the ball about the origin inside it (the least
+ * distance to its faces' planes, lam_i times the height over face i);
+ * -1 when the origin is outside or the tetrahedron is flat. */
+static double mkBatch_Volume(mkVec3 p0, mkVec3 p1, mkVec3 p2, mkVec3 p3)
+{
+	return mkVec3_Dot(mkVec3_Sub(p1, p0), mkVec3_Cross(mkVec3_Sub(p2, p0), mkVec3_Sub(p3, p0)));
+}
+
+static double mkBatch_Inside(const mkVec3 w[4], double lam[4])
+{
+	double vol = mkBatch_Volume(w[0], w[1], w[2], w[3]);
+	if (!(fabs(vol) > 0.0))
+		return -1.0;
+	double r = INFINITY;
+	for (int i = 0; i < 4; ++i) {
+		mkVec3 v[4] = { w[0], w[1], w[2], w[3] };
+		v[i] = mkVec3_Make(0.0, 0.0, 0.0);
+		lam[i] = mkBatch_Volume(v[0], v[1], v[2], v[3]) / vol;
+		/* face i: the other three points; its height over w_i is |vol| / (2 area) */
+		mkVec3 p = w[(i + 1) & 3], q = w[(i + 2) & 3], t = w[(i + 3) & 3];
+		double area2 = mkVec3_LengthInline(mkVec3_Cross(mkVec3_Sub(q, p), mkVec3_Sub(t, p)));
+		if (!(lam[i] >= 0.0) || !(area2 > 0.0))
+			return -1.0;
+		r = fmin(r, lam[i] * fabs(vol) / area2);
+	}
+	return r;
+}
+
+/* Gilbert's iteration on W = B2 - B1 for a certificate (at most
+ * MK_BATCH_EVALS pair evaluations from the centre line): the support point
+ * of W towards the origin from the least-norm point z of the hull kept,
+ * w(m) = c2 + s2(-m) - c1 - s1(m) at m = z / |z|, gives f(m) = <m, w(m)>
+ * <= sd; |z| >= sd. It ends in MK_PATH_SEPARATING when f(m) > need (r's n,
+ * f, the support points p1, p2 at n and upper, the least |w| met), or when
+ * f(m) > margin and |z| < below (a clearance certainly missed);
+ * MK_PATH_OVERLAP_POINT when a tetrahedron of W holds the ball of radius
+ * depth > margin about the origin (x = sum lam_i a_i = sum lam_i b_i, a
+ * point of both bodies); MK_PATH_ONE_PAIR when neither was reached. A
+ * state that steps on the pair evaluations it is given, so that several
+ * pairs can be evaluated in lock-step (mkBatch_Run). */
+typedef struct mkBatchCert {
+	mkVec3 n, p1, p2, x;
+	double f, upper, depth;
+} mkBatchCert;
+
+typedef struct mkGilbert {
+	mkPairCtx c;
+	mkBatchCert r;
+	mkVec3 a[4], b[4], w[4], m;
+	double need, below, margin;
+	int k, evals, pair;
+} mkGilbert;
+
+static void mkGilbert_Begin(mkGilbert *g, double need, double below)
+{
+	double dl = mkVec3_LengthInline(g->c.d);
+	g->m = dl > 0.0 ? mkVec3_Scale(g->c.d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);
+	g->k = g->evals = 0;
+	g->need = need;
+	g->below = below;
+	g->margin = MK_BATCH_MARGIN * g->c.scale;
+	g->r.f = -INFINITY;
+	g->r.upper = INFINITY;
+}
+
+/* Takes the support data of B1 at m (s1) and of B2 at -m (s2). Returns the
+ * path when the search is over, else -1 (g->m is the next direction). */
+static int mkGilbert_Step(mkGilbert *g, const mkSupAt *s1, const mkSupAt *s2)
+{
+	mkBatchCert *r = &g->r;
+	int k = g->k;
+	double lam[4];
+	double f = mkVec3_Dot(g->m, g->c.d) - mkVec3_Dot(g->m, mkVec3_Sub(s1->s, s2->s));
+	g->a[k] = mkVec3_Add(g->c.b1->t, s1->s);
+	g->b[k] = mkVec3_Add(g->c.b2->t, s2->s);
+	g->w[k] = mkVec3_Sub(g->b[k], g->a[k]);
+	r->upper = fmin(r->upper, mkVec3_LengthInline(g->w[k]));
+	if (f > r->f) {
+		r->f = f;
+		r->n = g->m;
+		r->p1 = g->a[k];
+		r->p2 = g->b[k];
+	}
+	if (f > g->need)
+		return MK_PATH_SEPARATING;
+	if (++k == 4 && (r->depth = mkBatch_Inside(g->w, lam)) >= 0.0) {
+		if (!(r->depth > g->margin))
+			return MK_PATH_ONE_PAIR;
+		r->x = mkVec3_Make(0.0, 0.0, 0.0);
+		for (int i = 0; i < 4; ++i)
+			r->x = mkVec3_Add(r->x, mkVec3_Scale(mkVec3_Add(g->a[i], g->b[i]), 0.5 * lam[i]));
+		return MK_PATH_OVERLAP_POINT;
+	}
+	mkVec3 z = mkHull_Nearest(g->w, k, lam);
+	int j = 0;
+	for (int i = 0; i < k; ++i)
+		if (lam[i] > 0.0) {
+			g->a[j] = g->a[i];
+			g->b[j] = g->b[i];
+			g->w[j++] = g->w[i];
+		}
+	g->k = j;
+	double zl = mkVec3_LengthInline(z);
+	r->upper = fmin(r->upper, zl);
+	if (r->f > g->margin && zl < g->below)
+		return MK_PATH_SEPARATING;
+	/* converged (within rounding) short of a certificate, degenerate, or
+	 * out of evaluations */
+	if (!(zl > 0.0) || !isfinite(zl) || zl - r->f <= 1e-14 * g->c.scale || ++g->evals >= MK_BATCH_EVALS)
+		return MK_PATH_ONE_PAIR;
+	g->m = mkVec3_Scale(z, 1.0 / zl);
+	return -1;
+}
+
+/* Writes entry k of out (each array that is not NULL). */
+static void mkBatch_Put(const mkBatchOut3 *out, int k, mkContact status, double dist, double lo, double hi, mkVec3 n,
+	mkVec3 p1, mkVec3 p2, int clear, mkBatchPath path)
+{
+	out->status[k] = status;
+	if (out->distance)
+		out->distance[k] = dist;
+	if (out->lower)
+		out->lower[k] = lo;
+	if (out->upper)
+		out->upper[k] = hi;
+	if (out->normal)
+		out->normal[k] = n;
+	if (out->p1)
+		out->p1[k] = p1;
+	if (out->p2)
+		out->p2[k] = p2;
+	if (out->clear)
+		out->clear[k] = (unsigned char)(clear > 0);
+	if (out->path)
+		out->path[k] = (unsigned char)path;
+}
+
+static void mkBatchStats_Count(mkBatchStats3 *s, mkBatchPath path)
+{
+	if (!s)
+		return;
+	s->separating += path == MK_PATH_SEPARATING;
+	s->overlap_point += path == MK_PATH_OVERLAP_POINT;
+	s->one_pair += path == MK_PATH_ONE_PAIR;
+	s->failed += path == MK_PATH_FAILED;
+}
+
+/* Pair k answered by the one-pair query (the reference path,
+ * mkCollide3_Normal). Returns the path taken. */
+static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, int k)
+{
+	mkCollision3 c;
+	mkResult r = mkCollide3_Normal(*b1, *b2, &c);
+	if (r != MK_OK) {
+		mkBatch_Put(out, k, MK_CONTACT_UNKNOWN, NAN, NAN, NAN, c.normal, c.p1, c.p2, 0, MK_PATH_FAILED);
+		return MK_PATH_FAILED;
+	}
+	double lo = c.certified == 1 ? c.bound : -INFINITY, hi = c.certified == 1 ? c.bound + c.gap : INFINITY;
+	double dist = mode == MK_BATCH_FULL || (mode == MK_BATCH_DISTANCE && c.status != MK_CONTACT_OVERLAPPING)
+		? c.distance : NAN;
+	mkBatch_Put(out, k, c.status, dist, lo, hi, c.normal, c.p1, c.p2, mode == MK_BATCH_CLEARANCE && c.distance >= delta,
+		MK_PATH_ONE_PAIR);
+	return MK_PATH_ONE_PAIR;
+}
+
+/* Sets up pair k's search (its bodies b1, b2) in g. Returns 1, or 0 when
+ * the pair goes to the one-pair query at once (FULL, or a scale that is not
+ * finite), which has then answered it (*path). */
+static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, int k, mkBatchPath *path)
+{
+	mkPairCtx_Init(&g->c, b1, b2);
+	g->pair = k;
+	if (mode == MK_BATCH_FULL || !isfinite(g->c.scale)) {
+		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
+		return 0;
+	}
+	double margin = MK_BATCH_MARGIN * g->c.scale;
+	int clearance = mode == MK_BATCH_CLEARANCE;
+	mkGilbert_Begin(g, clearance ? delta + margin : margin, clearance ? delta - margin : -INFINITY);
+	return 1;
+}
+
+/* The answer of a search that ended in p: the certificate's, or the
+ * one-pair query's (DISTANCE on a separated pair: the same call as the
+ * reference, so the same distance; an overlap the search did not certify may
+ * still have a point on the centre segment). Returns the path taken. */
+static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+{
+	const mkBody3 *b1 = g->c.b1, *b2 = g->c.b2;
+	mkBatchCert *r = &g->r;
+	int k = g->pair;
+	double margin = MK_BATCH_MARGIN * g->c.scale;
+	if (p == MK_PATH_SEPARATING && mode != MK_BATCH_DISTANCE) {
+		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r->f, r->upper, r->n, r->p1, r->p2, r->f > delta + margin, p);
+		return p;
+	}
+	if (p == MK_PATH_SEPARATING) /* started from r->n it was no faster (measured) */
+		return mkBatch_OnePair(b1, b2, mode, delta, out, k);
+	if (p == MK_PATH_ONE_PAIR && !(r->f > 0.0) && mkBatch_OverlapPoint(b1, b2, g->c.d, margin, &r->x, &r->depth))
+		p = MK_PATH_OVERLAP_POINT;
+	if (p == MK_PATH_OVERLAP_POINT) {
+		mkBatch_Put(out, k, MK_CONTACT_OVERLAPPING, NAN, -INFINITY, -r->depth, mkVec3_Make(NAN, NAN, NAN), r->x, r->x,
+			0, p);
+		return p;
+	}
+	return mkBatch_OnePair(b1, b2, mode, delta, out, k);
+}
+
+/* NULL pointers, negative counts, unknown modes, bad deltas. */
+static int mkBatch_ArgsOk(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+{
+	if (!pairs || !out || !out->status || pairs->count < 0 || mkBatchMode_Name(mode) == NULL)
+		return 0;
+	if (pairs->count > 0 && (!pairs->bodies1 || !pairs->bodies2))
+		return 0;
+	return mode != MK_BATCH_CLEARANCE || (isfinite(delta) && delta >= 0.0);
+}
+
+/* A vector build of the support points (collision_impl.h), or NULL. */
+typedef void (*mkBatchLanesFn)(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
+
+/* nl <= MK_BATCH_VLANES superquadrics' support points at y[l] by vf (the
+ * lanes beyond nl repeat lane 0); the searches use s only. */
+static void mkBatch_EvalVector(int nl, const mkSupBody *const b[MK_LANES], const mkVec3 y[MK_LANES],
+	mkSupAt *const a[MK_LANES], mkBatchLanesFn vf)
+{
+	mkBatchLanesIn in;
+	double sv[3][MK_BATCH_VLANES];
+	for (int l = 0; l < MK_BATCH_VLANES; ++l) {
+		int f = l < nl ? l : 0;
+		for (int i = 0; i < 9; ++i)
+			in.P[i][l] = b[f]->P[i / 3][i % 3];
+		in.q1[l] = b[f]->q1;
+		in.q2[l] = b[f]->q2;
+		in.iq1[l] = b[f]->iq1;
+		in.iq2[l] = b[f]->iq2;
+		in.y[0][l] = y[f].x;
+		in.y[1][l] = y[f].y;
+		in.y[2][l] = y[f].z;
+	}
+	vf(&in, sv);
+	for (int l = 0; l < nl; ++l)
+		a[l]->s = mkVec3_Make(sv[0][l], sv[1][l], sv[2][l]);
+}
+
+/* Searches in lock-step: the superquadric bodies of up to this many pairs'
+ * searches are evaluated together (mkSupBody_EvalLanes: their chains of
+ * libm calls interleaved, which the processor overlaps). */
+#define MK_BATCH_LANES (MK_LANES / 2)
+
+/* Pair k's bodies. */
+static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
+{
+	const int *ix = which ? pairs->index2 : pairs->index1;
+	return &(which ? pairs->bodies2 : pairs->bodies1)[ix ? ix[k] : k];
+}
+
+/* The certificates' searches of every pair, MK_BATCH_LANES at a time, each
+ * lane taking the next pair as its search ends; then each answer
+ * (mkBatch_Finish). */
+static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
+	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf)
+{
+	mkGilbert g[MK_BATCH_LANES];
+	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0;
+	for (;;) {
+		for (int l = 0; l < MK_BATCH_LANES; ++l)
+			while (!live[l] && next < pairs->count) {
+				int k = next++;
+				mkBatchPath p;
+				if (mkBatch_Begin(&g[l], mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k, &p)) {
+					live[l] = 1;
+					++nlive;
+				} else {
+					mkBatchStats_Count(stats, p);
+					*failed += p == MK_PATH_FAILED;
+				}
+			}
+		if (nlive == 0)
+			return;
+		const mkSupBody *bs[MK_LANES];
+		mkVec3 ys[MK_LANES];
+		mkSupAt *as[MK_LANES], s[MK_BATCH_LANES][2];
+		int nl = 0;
+		for (int l = 0; l < MK_BATCH_LANES; ++l)
+			for (int j = 0; live[l] && j < 2; ++j) {
+				const mkSupBody *kb = j ? &g[l].c.k2 : &g[l].c.k1;
+				mkVec3 y = j ? mkVec3_Neg(g[l].m) : g[l].m;
+				if (kb->ellipsoid) {
+					mkSupBody_Eval(kb, y, &s[l][j]);
+				} else {
+					bs[nl] = kb;
+					ys[nl] = y;
+					as[nl++] = &s[l][j];
+				}
+			}
+		if (nl > 0 && vf)
+			mkBatch_EvalVector(nl, bs, ys, as, vf);
+		else if (nl > 0)
+			mkSupBody_EvalLanes(nl, bs, ys, as);
+		for (int l = 0; l < MK_BATCH_LANES; ++l) {
+			int p = live[l] ? mkGilbert_Step(&g[l], &s[l][0], &s[l][1]) : -1;
+			if (p < 0)
+				continue;
+			mkBatchPath q = mkBatch_Finish(&g[l], (mkBatchPath)p, mode, delta, out);
+			mkBatchStats_Count(stats, q);
+			*failed += q == MK_PATH_FAILED;
+			live[l] = 0;
+			--nlive;
+		}
+	}
+}
+
+/* The vector build for impl (MK_IMPL_AUTO: the widest available); NULL for
+ * the scalar support map. */
+static mkBatchLanesFn mkBatch_LanesFn(mkImpl impl)
+{
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (impl == MK_IMPL_AUTO)
+		impl = mkImpl_Available(MK_IMPL_AVX512) ? MK_IMPL_AVX512 : mkImpl_Available(MK_IMPL_AVX2) ? MK_IMPL_AVX2
+			: MK_IMPL_SCALAR;
+	if (impl == MK_IMPL_AVX512)
+		return mkBatch_SupportLanesAvx512;
+	if (impl == MK_IMPL_AVX2)
+		return mkBatch_SupportLanesAvx2;
+#endif
+	(void)impl;
+	return NULL;
+}
+
+/* Both entries: the certificates first, with the lanes of impl (reference
+ * = impl >= 0), or the one-pair query alone (reference -1). */
+static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
+	mkBatchStats3 *stats, int reference)
+{
+	if (!mkBatch_ArgsOk(pairs, mode, delta, out))
+		return MK_ERR_ARGUMENT;
+	if (stats)
+		memset(stats, 0, sizeof *stats);
+	int failed = 0;
+	if (reference >= 0) {
+		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed, mkBatch_LanesFn((mkImpl)reference));
+		return failed ? MK_ERR_CONVERGENCE : MK_OK;
+	}
+	for (int k = 0; k < pairs->count; ++k) {
+		mkBatchPath p = mkBatch_OnePair(mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k);
+		mkBatchStats_Count(stats, p);
+		failed += p == MK_PATH_FAILED;
+	}
+	return failed ? MK_ERR_CONVERGENCE : MK_OK;
+}
+
+mkResult mkCollide3_Batch(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
+	mkBatchStats3 *stats)
+{
+	return mkBatch_Run(pairs, mode, delta, out, stats, MK_IMPL_AUTO);
+}
+
+mkResult mkCollide3_BatchImpl(mkImpl impl, const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, mkBatchStats3 *stats)
+{
+	if ((int)impl < MK_IMPL_AUTO || (int)impl > MK_IMPL_AVX512)
+		return MK_ERR_ARGUMENT;
+	if (impl != MK_IMPL_AUTO && !mkImpl_Available(impl))
+		return MK_ERR_UNSUPPORTED;
+	return mkBatch_Run(pairs, mode, delta, out, stats, (int)impl);
+}
+
+const char *mkCollide3_BatchLanes(void)
+{
+	mkBatchLanesFn f = mkBatch_LanesFn(MK_IMPL_AUTO);
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (f == mkBatch_SupportLanesAvx512)
+		return "avx512";
+	if (f == mkBatch_SupportLanesAvx2)
+		return "avx2";
+#endif
+	return f ? "vector" : "scalar";
+}
+
+mkResult mkCollide3_BatchReference(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
+	mkBatchStats3 *stats)
+{
+	return mkBatch_Run(pairs, mode, delta, out, stats, -1);
+}
