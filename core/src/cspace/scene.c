@@ -221,6 +221,9 @@ void mkScene_Free(mkScene *s)
 {
 	if (!s) return;
 	free(s->obstacles);
+	free(s->parts);
+	free(s->obstacle_object);
+	free(s->objects);
 	free(s->headings);
 	free(s->rotations);
 	memset(s, 0, sizeof *s);
@@ -344,6 +347,95 @@ static mkResult mkScene_ParseQuaternions(mkScene *s, int *rcap, const char *arg,
 	}
 }
 
+/* The parser's state of robot, part, object and obstacle lines. */
+typedef struct mkSceneParser {
+	int ocap, pcap, jcap;
+	int robot_line, part_line;
+	int object, object_used;   /* the current `object` (-1: none) and whether an obstacle followed it */
+} mkSceneParser;
+
+/* A new object named name (line 0: an obstacle of its own); its index or -1 when out of memory. */
+static int mkScene_AddObject(mkScene *s, mkSceneParser *P, const char *name, int line)
+{
+	if (!mkScene_Grow((void **)&s->objects, &P->jcap, s->object_count + 1, sizeof *s->objects)) return -1;
+	mkSceneObject *o = &s->objects[s->object_count];
+	snprintf(o->name, sizeof o->name, "%s", name);
+	o->line = line;
+	return s->object_count++;
+}
+
+static mkResult mkScene_ParseObject(mkScene *s, mkSceneParser *P, const char *arg, int lineno, char *err, size_t errlen)
+{
+	size_t n = strlen(arg);
+	if (P->object >= 0 && !P->object_used)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "object '%s' (line %d) has no obstacle lines: an object is followed "
+			"by its obstacles", s->objects[P->object].name, s->objects[P->object].line);
+	int ok = n >= 1 && n < MK_SCENE_NAME_MAX;
+	for (size_t k = 0; ok && k < n; ++k) ok = isalnum((unsigned char)arg[k]) || strchr("_.-", arg[k]) != NULL;
+	if (!ok)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "object name '%.40s' is not allowed: must be 1 to %d characters of "
+			"A-Z, a-z, 0-9, _ . -", arg, MK_SCENE_NAME_MAX - 1);
+	for (int k = 0; k < s->object_count; ++k)
+		if (strcmp(s->objects[k].name, arg) == 0)
+			return s->objects[k].line
+				? mkFail(MK_ERR_ARGUMENT, err, errlen, "object '%s' is given twice (first on line %d): names must differ",
+					arg, s->objects[k].line)
+				: mkFail(MK_ERR_ARGUMENT, err, errlen, "object '%s' is the name of an obstacle of its own: names must "
+					"differ", arg);
+	if ((P->object = mkScene_AddObject(s, P, arg, lineno)) < 0) return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	P->object_used = 0;
+	return MK_OK;
+}
+
+/* A robot, part, object or obstacle line (kw says which) into s. */
+static mkResult mkScene_ParseBodyLine(mkScene *s, mkSceneParser *P, const char *kw, const char *arg, int lineno,
+	char *err, size_t errlen)
+{
+	char what[32];
+	if (strcmp(kw, "object") == 0) return mkScene_ParseObject(s, P, arg, lineno, err, errlen);
+	if (strcmp(kw, "robot") == 0 || strcmp(kw, "part") == 0) {
+		int part = kw[0] == 'p';
+		if (P->robot_line)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "%s: the robot is already given on line %d: a robot is one "
+				"'robot SPEC' line or one or more 'part SPEC' lines", kw, P->robot_line);
+		if (!part && P->part_line)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "robot: the robot's parts are given (first on line %d): a robot "
+				"is one 'robot SPEC' line or one or more 'part SPEC' lines", P->part_line);
+		if (s->part_count >= MK_SCENE_PARTS_MAX)
+			return mkFail(MK_ERR_RANGE, err, errlen, "more than %d robot parts", MK_SCENE_PARTS_MAX);
+		if (!mkScene_Grow((void **)&s->parts, &P->pcap, s->part_count + 1, sizeof *s->parts))
+			return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+		if (part) snprintf(what, sizeof what, "part%d", s->part_count);
+		else snprintf(what, sizeof what, "robot");
+		mkSceneBody *b = &s->parts[s->part_count];
+		mkResult r = mkSceneBody_Parse(arg, s->dim, what, b, err, errlen);
+		if (r != MK_OK) return r;
+		if (!part) { /* robot keeps the text; the part's position is the configuration's */
+			s->robot = *b;
+			if (s->dim == 2) b->spec.body2.t = mkVec2_Make(0.0, 0.0);
+			else b->spec.body3.t = mkVec3_Make(0.0, 0.0, 0.0);
+			P->robot_line = lineno;
+		} else if (!P->part_line) {
+			P->part_line = lineno;
+		}
+		++s->part_count;
+		return MK_OK;
+	}
+	snprintf(what, sizeof what, "obstacle%d", s->obstacle_count);
+	if (s->obstacle_count >= 100000000) return mkFail(MK_ERR_RANGE, err, errlen, "more than 100000000 obstacles");
+	int cap = P->ocap;
+	if (!mkScene_Grow((void **)&s->obstacles, &P->ocap, s->obstacle_count + 1, sizeof *s->obstacles)
+		|| !mkScene_Grow((void **)&s->obstacle_object, &cap, s->obstacle_count + 1, sizeof *s->obstacle_object))
+		return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	mkResult r = mkSceneBody_Parse(arg, s->dim, what, &s->obstacles[s->obstacle_count], err, errlen);
+	if (r != MK_OK) return r;
+	int obj = P->object;
+	if (obj < 0 && (obj = mkScene_AddObject(s, P, what, 0)) < 0) return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	P->object_used = 1;
+	s->obstacle_object[s->obstacle_count++] = obj;
+	return MK_OK;
+}
+
 mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 {
 	if (!out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene");
@@ -353,11 +445,13 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 	if (!line) return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	mkScene s;
 	memset(&s, 0, sizeof s);
-	int ocap = 0, hcap = 0, rcap = 0, robot_line = 0, orient_line = 0;
+	int hcap = 0, rcap = 0, orient_line = 0;
+	mkSceneParser P;
+	memset(&P, 0, sizeof P);
+	P.object = -1;
 	int lineno = 0, too_long = 0;
 	const char *cur = text;
 	mkResult r = MK_OK;
-	char sub[900];
 #define BAD(code, ...) do { r = (code); char b_[1024]; snprintf(b_, sizeof b_, __VA_ARGS__); \
 	mkFail(r, msg, msglen, "line %d: %s", lineno, b_); goto done; } while (0)
 	while (mkScene_NextLine(&cur, line, MK_SCENE_LINE_MAX, &too_long)) {
@@ -381,20 +475,12 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 			BAD(MK_ERR_ARGUMENT, "'%.*s' needs a value", (int)(kl > 40 ? 40 : kl), line);
 		if (KW("dim")) {
 			BAD(MK_ERR_ARGUMENT, "dim is given twice (first line only)");
-		} else if (KW("robot")) {
-			if (robot_line) BAD(MK_ERR_ARGUMENT, "robot is given twice (first on line %d): a scene has one robot", robot_line);
-			robot_line = lineno;
-			if (mkSceneBody_Parse(arg, s.dim, "robot", &s.robot, sub, sizeof sub) != MK_OK)
-				BAD(MK_ERR_RANGE, "%s", sub);
-		} else if (KW("obstacle")) {
-			char what[32];
-			snprintf(what, sizeof what, "obstacle%d", s.obstacle_count);
-			if (s.obstacle_count >= 100000000) BAD(MK_ERR_RANGE, "more than 100000000 obstacles");
-			if (!mkScene_Grow((void **)&s.obstacles, &ocap, s.obstacle_count + 1, sizeof *s.obstacles))
-				BAD(MK_ERR_MEMORY, "out of memory");
-			mkResult br = mkSceneBody_Parse(arg, s.dim, what, &s.obstacles[s.obstacle_count], sub, sizeof sub);
-			if (br != MK_OK) BAD(br, "%s", sub);
-			++s.obstacle_count;
+		} else if (KW("robot") || KW("part") || KW("object") || KW("obstacle")) {
+			char kw[16];
+			snprintf(kw, sizeof kw, "%.*s", (int)kl, line);
+			char err[1024];
+			mkResult br = mkScene_ParseBodyLine(&s, &P, kw, arg, lineno, err, sizeof err);
+			if (br != MK_OK) BAD(br, "%s", err);
 		} else if (KW("headings") || KW("quaternions") || KW("rotations")) {
 			const char *kw = KW("headings") ? "headings" : KW("quaternions") ? "quaternions" : "rotations";
 			if (s.dim == 2 && !KW("headings"))
@@ -415,13 +501,17 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 				s.rotations_line = lineno;
 			}
 		} else {
-			BAD(MK_ERR_ARGUMENT, "unknown keyword '%.*s': must be one of dim, robot, obstacle, %s",
+			BAD(MK_ERR_ARGUMENT, "unknown keyword '%.*s': must be one of dim, robot, part, object, obstacle, %s",
 				(int)(kl > 40 ? 40 : kl), line, s.dim == 2 ? "headings" : "quaternions, rotations");
 		}
 #undef KW
 	}
 	if (!s.dim) BAD(MK_ERR_ARGUMENT, "empty scene: the first line must be 'dim 2' or 'dim 3'");
-	if (!robot_line) BAD(MK_ERR_ARGUMENT, "no robot: a scene needs one line 'robot SPEC'");
+	if (!s.part_count) BAD(MK_ERR_ARGUMENT, "no robot: a scene needs one line 'robot SPEC' or 'part SPEC' lines");
+	if (P.object >= 0 && !P.object_used)
+		BAD(MK_ERR_ARGUMENT, "object '%s' (line %d) has no obstacle lines: an object is followed by its obstacles",
+			s.objects[P.object].name, s.objects[P.object].line);
+	if (!P.robot_line) s.robot = s.parts[0];
 	if (!orient_line)
 		BAD(MK_ERR_ARGUMENT, "no orientations: %s", s.dim == 2 ? "a 2D scene needs 'headings N' or 'headings a1,a2,...'"
 			: "a 3D scene needs 'quaternions w,x,y,z;...' or 'rotations FILE'");
