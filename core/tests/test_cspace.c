@@ -274,7 +274,7 @@ static void test_scene_parse(void)
 		{"dim 3\nrobot sphere a=1\nquaternions 0,0,0,0\n", "line 3: quaternions: item 1 = 0,0,0,0 is out of range"},
 		{"dim 3\nrobot cylinder r=1\nquaternions 1,0,0,0\n", "line 2: robot: cylinder needs h"},
 		{"dim 2\nrobot cylinder r=1 h=2\nheadings 3\n", "line 2: robot: kind 'cylinder' is 3D"},
-		{"dim 2\nrobot circle a=1\nheading 3\n", "line 3: unknown keyword 'heading': must be one of dim, robot, part, object, obstacle, headings"},
+		{"dim 2\nrobot circle a=1\nheading 3\n", "line 3: unknown keyword 'heading': must be one of dim, robot, part, object, obstacle, bounds, start, goal, headings"},
 		{"dim 2\nrobot circle a=1\nrobot circle a=2\n", "line 3: robot: the robot is already given on line 2"},
 		{"dim 2\npart circle a=1\nrobot circle a=2\n", "line 3: robot: the robot's parts are given (first on line 2)"},
 		{"dim 2\nrobot circle a=1\npart circle a=2\n", "line 3: part: the robot is already given on line 2"},

@@ -14,6 +14,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "scenefile.h"
 
 #define SCENE_FILE_MAX (1L << 30)
 #define THREADS_MAX 256
@@ -111,30 +112,28 @@ static int mkSceneCmd_Unions(const mkScene *s)
 	return 0;
 }
 
-/* Parse the scene file and, for 3D, its rotations file (relative to the
- * scene's folder). Returns 0, or 2 after printing why. */
-static int mkSceneCmd_Load(mkSceneCmd *s)
+int mkSceneCmd_LoadFile(const char *cmd, const char *file, mkScene *scene)
 {
 	char msg[2048];
 	long len = 0;
-	char *text = mkSceneCmd_ReadFile(s->file, &len, msg, sizeof msg);
-	if (!text) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
-	mkResult r = mkScene_Parse(text, &s->scene, msg, sizeof msg);
+	char *text = mkSceneCmd_ReadFile(file, &len, msg, sizeof msg);
+	if (!text) { fprintf(stderr, "mink %s: %s\n", cmd, msg); return 2; }
+	mkResult r = mkScene_Parse(text, scene, msg, sizeof msg);
 	free(text);
-	if (r != MK_OK) { fprintf(stderr, "mink scene: %s: %s\n", s->file, msg); return 2; }
-	if (!s->scene.rotations_file[0])
+	if (r != MK_OK) { fprintf(stderr, "mink %s: %s: %s\n", cmd, file, msg); return 2; }
+	if (!scene->rotations_file[0])
 		return 0;
 	char path[MK_PATH_MAX];
-	const char *slash = strrchr(s->file, '/');
-	if (s->scene.rotations_file[0] != '/' && slash)
-		snprintf(path, sizeof path, "%.*s/%s", (int)(slash - s->file), s->file, s->scene.rotations_file);
+	const char *slash = strrchr(file, '/');
+	if (scene->rotations_file[0] != '/' && slash)
+		snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, scene->rotations_file);
 	else
-		snprintf(path, sizeof path, "%s", s->scene.rotations_file);
+		snprintf(path, sizeof path, "%s", scene->rotations_file);
 	char *rt = mkSceneCmd_ReadFile(path, &len, msg, sizeof msg);
-	r = rt ? mkScene_SetRotations(&s->scene, rt, path, msg, sizeof msg) : MK_ERR_ARGUMENT;
+	r = rt ? mkScene_SetRotations(scene, rt, path, msg, sizeof msg) : MK_ERR_ARGUMENT;
 	free(rt);
 	if (r != MK_OK) {
-		fprintf(stderr, "mink scene: %s: line %d: rotations: %s\n", s->file, s->scene.rotations_line, msg);
+		fprintf(stderr, "mink %s: %s: line %d: rotations: %s\n", cmd, file, scene->rotations_line, msg);
 		return 2;
 	}
 	return 0;
@@ -302,7 +301,7 @@ int mkCmd_Scene(int argc, char **argv)
 	if (!s.file) { fprintf(stderr, "mink scene: no scene FILE given (usage: mink scene FILE --tol T --out PATH)\n"); return 2; }
 	if ((rc = mkCli_Require("scene", &flags[0])) != MK_CLI_GO || (rc = mkCli_Require("scene", &flags[1])) != MK_CLI_GO)
 		return rc;
-	rc = mkSceneCmd_Load(&s);
+	rc = mkSceneCmd_LoadFile("scene", s.file, &s.scene);
 	if (rc == 0) {
 		s.o.threads = (int)threads;
 		s.o.impl = (mkImpl)impl;

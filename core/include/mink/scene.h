@@ -23,6 +23,11 @@
  *   headings N | headings a1,a2,...       2D: 2 pi k / N, or these radians
  *   quaternions w,x,y,z;w,x,y,z;...       3D
  *   rotations FILE                        3D: rotations read by the caller
+ *   bounds xlo,xhi,ylo,yhi[,zlo,zhi]      planning: the box of the robot's position
+ *   start POSE                            planning: the start of the next queries
+ *   goal POSE                             planning: a query from the last start to POSE
+ * POSE: x,y,theta (2D) or x,y,z,qw,qx,qy,qz (3D). A scene with queries may
+ * omit the orientations.
  * The robot at orientation R (2D: the rotation by the heading) is the body
  * whose map is R M, M the robot's own map; a robot of parts at orientation R
  * and position c has part j at c + R t_j with map R M_j (t_j, M_j the part's
@@ -73,6 +78,13 @@ typedef struct mkSceneObject {
 	int line;   /* the `object` line; 0 for an obstacle that is its own object */
 } mkSceneObject;
 
+/* A planning query: start and goal poses (3 or 7 values, mink/scenequery.h)
+ * and their lines. */
+typedef struct mkScenePlanQuery {
+	double start[7], goal[7];
+	int start_line, goal_line;
+} mkScenePlanQuery;
+
 typedef struct mkScene {
 	int dim;
 	mkSceneBody robot;   /* parts[0]; from `robot SPEC` as written (its at= unused) */
@@ -96,6 +108,11 @@ typedef struct mkScene {
 	 * with mkScene_SetRotations); empty when the scene lists quaternions. */
 	char rotations_file[1024];
 	int rotations_line;  /* the line of `rotations FILE`, for messages */
+	/* planning: bounds (bounds_line 0: none) and queries */
+	double bounds_lo[3], bounds_hi[3];
+	int bounds_line;
+	mkScenePlanQuery *queries;
+	int query_count;
 } mkScene;
 
 /* The kind's name: "box", "cylinder" or the SPEC kind's name. */

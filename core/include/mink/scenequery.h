@@ -102,6 +102,44 @@ MK_API int mkSceneQuery_PartBody(const mkSceneQuery *q, const double *pose, int 
 /* Obstacle i's body likewise. */
 MK_API int mkSceneQuery_ObstacleBody(const mkSceneQuery *q, int i, int bound, mkBody3 *out);
 
+/* ---- motions -------------------------------------------------------------
+ * The motion from pose a to pose b moves the position linearly and the
+ * rotation at constant angular velocity along the shorter way (2D: the
+ * heading by the wrapped difference in [-pi, pi]; 3D: slerp between the
+ * unit quaternions, the nearer of q and -q), as OMPL's SE2 and SE3 state
+ * spaces interpolate. Pose a(t), t in [0, 1]. */
+MK_API void mkSceneQuery_Interpolate(const mkSceneQuery *q, const double *a, const double *b, double t, double *out);
+
+/* An upper bound of the distance of every robot point from the robot's
+ * origin (over the parts' outer models). */
+MK_API double mkSceneQuery_RobotRadius(const mkSceneQuery *q);
+
+typedef struct mkMotionAnswer {
+	mkPoseStatus status;   /* free: clearance >= margin certified on all of [0, 1]; colliding: a certified
+	                        * contact at contact_time; uncertain: neither */
+	double clearance;      /* a certified lower bound of the clearance on [0, free_until] */
+	double free_until;     /* the motion is certified to keep clearance >= margin on [0, free_until] */
+	double contact_time;   /* colliding: the first pose found in contact (the first contact is in
+	                        * [free_until, contact_time]); NaN otherwise */
+	int obstacle, part;    /* colliding: the pair in contact; otherwise the nearest pair at the last pose */
+	int poses;             /* poses checked */
+} mkMotionAnswer;
+
+/* Certify the motion a -> b by conservative advancement, never by sampling
+ * it at a resolution: at time t the pose's certified clearance c(t) (a
+ * lower bound) and the bound L = |b_pos - a_pos| + r * angle on how far any
+ * robot point moves per unit of t (r = mkSceneQuery_RobotRadius, angle the
+ * total rotation) give a step dt = (c(t) - margin) / (2 L) on which the
+ * clearance stays at least (c(t) + margin) / 2 > margin. The walk stops at
+ * t = 1 (free), or when c(t) - margin falls below 1e-9 of the robot's
+ * radius plus the motion's length or after max_poses poses: then a pose in
+ * contact at t, or a contact found among 1000 poses evenly spaced on
+ * [t, 1], makes the motion colliding (a witness, never a certificate of
+ * freedom); else it is uncertain. margin >= 0. Returns MK_ERR_ARGUMENT on
+ * a bad pose or margin (out->status uncertain). */
+MK_API mkResult mkSceneQuery_Motion(const mkSceneQuery *q, const double *a, const double *b, double margin,
+	long max_poses, mkMotionAnswer *out);
+
 MK_EXTERN_C_END
 
 #endif

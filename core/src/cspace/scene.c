@@ -224,6 +224,7 @@ void mkScene_Free(mkScene *s)
 	free(s->parts);
 	free(s->obstacle_object);
 	free(s->objects);
+	free(s->queries);
 	free(s->headings);
 	free(s->rotations);
 	memset(s, 0, sizeof *s);
@@ -436,6 +437,83 @@ static mkResult mkScene_ParseBodyLine(mkScene *s, mkSceneParser *P, const char *
 	return MK_OK;
 }
 
+/* ---- planning problems ---- */
+
+/* A pose "x,y,theta" or "x,y,z,qw,qx,qy,qz" into p, in the bounds when known. */
+static mkResult mkScene_ParsePose(const mkScene *s, const char *kw, const char *arg, double *p, char *err, size_t errlen)
+{
+	int n = s->dim == 2 ? 3 : 7;
+	const char *form = s->dim == 2 ? "x,y,theta" : "x,y,z,qw,qx,qy,qz";
+	if (mkSpecKeys_Numbers(arg, strlen(arg), p, n) != n)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "%s = '%.60s' must be %d comma-separated numbers %s", kw, arg, n, form);
+	for (int k = 0; k < n; ++k)
+		if (!isfinite(p[k]) || fabs(p[k]) > 1e15)
+			return mkFail(MK_ERR_RANGE, err, errlen, "%s[%d] = %g is out of range: must be a finite number of magnitude at "
+				"most 1e15", kw, k + 1, p[k]);
+	if (s->dim == 3 && p[3] == 0.0 && p[4] == 0.0 && p[5] == 0.0 && p[6] == 0.0)
+		return mkFail(MK_ERR_RANGE, err, errlen, "%s: the quaternion qw,qx,qy,qz = 0,0,0,0 is out of range: must be nonzero", kw);
+	return MK_OK;
+}
+
+/* The position of pose p is in the bounds: 1, or 0 with the message. */
+static int mkScene_InBounds(const mkScene *s, const char *kw, const double *p, char *err, size_t errlen)
+{
+	static const char axis[3] = {'x', 'y', 'z'};
+	for (int d = 0; d < s->dim; ++d)
+		if (!(p[d] >= s->bounds_lo[d] && p[d] <= s->bounds_hi[d])) {
+			mkFail(MK_ERR_RANGE, err, errlen, "%s.%c = %g is out of range: must be in the bounds [%g, %g] (line %d)", kw,
+				axis[d], p[d], s->bounds_lo[d], s->bounds_hi[d], s->bounds_line);
+			return 0;
+		}
+	return 1;
+}
+
+/* bounds, start and goal lines. *start: the last start (NULL before one). */
+static mkResult mkScene_ParsePlanLine(mkScene *s, int *qcap, double *start, int *start_line, const char *kw,
+	const char *arg, int lineno, char *err, size_t errlen)
+{
+	if (strcmp(kw, "bounds") == 0) {
+		double v[6];
+		int n = 2 * s->dim;
+		if (s->bounds_line) return mkFail(MK_ERR_ARGUMENT, err, errlen, "bounds are given twice (first on line %d)", s->bounds_line);
+		if (s->query_count || *start_line)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "bounds must come before the first start and goal");
+		if (mkSpecKeys_Numbers(arg, strlen(arg), v, n) != n)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "bounds = '%.60s' must be %d comma-separated numbers %s", arg, n,
+				s->dim == 2 ? "xlo,xhi,ylo,yhi" : "xlo,xhi,ylo,yhi,zlo,zhi");
+		for (int d = 0; d < s->dim; ++d) {
+			if (!(isfinite(v[2 * d]) && isfinite(v[2 * d + 1]) && v[2 * d] < v[2 * d + 1] && fabs(v[2 * d]) <= 1e15
+				&& fabs(v[2 * d + 1]) <= 1e15))
+				return mkFail(MK_ERR_RANGE, err, errlen, "bounds[%d..%d] = %g,%g is out of range: must be finite, lo < hi, "
+					"magnitude at most 1e15", 2 * d + 1, 2 * d + 2, v[2 * d], v[2 * d + 1]);
+			s->bounds_lo[d] = v[2 * d];
+			s->bounds_hi[d] = v[2 * d + 1];
+		}
+		s->bounds_line = lineno;
+		return MK_OK;
+	}
+	if (!s->bounds_line)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "%s before bounds: a planning scene gives 'bounds' first", kw);
+	double p[7] = {0, 0, 0, 0, 0, 0, 0};
+	mkResult r = mkScene_ParsePose(s, kw, arg, p, err, errlen);
+	if (r != MK_OK) return r;
+	if (!mkScene_InBounds(s, kw, p, err, errlen)) return MK_ERR_RANGE;
+	if (kw[0] == 's') {
+		memcpy(start, p, sizeof p);
+		*start_line = lineno;
+		return MK_OK;
+	}
+	if (!*start_line) return mkFail(MK_ERR_ARGUMENT, err, errlen, "goal without a start: a 'start POSE' line comes first");
+	if (!mkScene_Grow((void **)&s->queries, qcap, s->query_count + 1, sizeof *s->queries))
+		return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	mkScenePlanQuery *q = &s->queries[s->query_count++];
+	memcpy(q->start, start, sizeof q->start);
+	memcpy(q->goal, p, sizeof q->goal);
+	q->start_line = *start_line;
+	q->goal_line = lineno;
+	return MK_OK;
+}
+
 mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 {
 	if (!out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene");
@@ -449,6 +527,8 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 	mkSceneParser P;
 	memset(&P, 0, sizeof P);
 	P.object = -1;
+	int qcap = 0, start_line = 0;
+	double start[7];
 	int lineno = 0, too_long = 0;
 	const char *cur = text;
 	mkResult r = MK_OK;
@@ -481,6 +561,11 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 			char err[1024];
 			mkResult br = mkScene_ParseBodyLine(&s, &P, kw, arg, lineno, err, sizeof err);
 			if (br != MK_OK) BAD(br, "%s", err);
+		} else if (KW("bounds") || KW("start") || KW("goal")) {
+			char kw[16], err[1024];
+			snprintf(kw, sizeof kw, "%.*s", (int)kl, line);
+			mkResult pr = mkScene_ParsePlanLine(&s, &qcap, start, &start_line, kw, arg, lineno, err, sizeof err);
+			if (pr != MK_OK) BAD(pr, "%s", err);
 		} else if (KW("headings") || KW("quaternions") || KW("rotations")) {
 			const char *kw = KW("headings") ? "headings" : KW("quaternions") ? "quaternions" : "rotations";
 			if (s.dim == 2 && !KW("headings"))
@@ -501,7 +586,7 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 				s.rotations_line = lineno;
 			}
 		} else {
-			BAD(MK_ERR_ARGUMENT, "unknown keyword '%.*s': must be one of dim, robot, part, object, obstacle, %s",
+			BAD(MK_ERR_ARGUMENT, "unknown keyword '%.*s': must be one of dim, robot, part, object, obstacle, bounds, start, goal, %s",
 				(int)(kl > 40 ? 40 : kl), line, s.dim == 2 ? "headings" : "quaternions, rotations");
 		}
 #undef KW
@@ -512,7 +597,11 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 		BAD(MK_ERR_ARGUMENT, "object '%s' (line %d) has no obstacle lines: an object is followed by its obstacles",
 			s.objects[P.object].name, s.objects[P.object].line);
 	if (!P.robot_line) s.robot = s.parts[0];
-	if (!orient_line)
+	if (start_line && (!s.query_count || s.queries[s.query_count - 1].start_line != start_line)) {
+		lineno = start_line;
+		BAD(MK_ERR_ARGUMENT, "start without a goal: a 'goal POSE' line follows each start");
+	}
+	if (!orient_line && !s.query_count)
 		BAD(MK_ERR_ARGUMENT, "no orientations: %s", s.dim == 2 ? "a 2D scene needs 'headings N' or 'headings a1,a2,...'"
 			: "a 3D scene needs 'quaternions w,x,y,z;...' or 'rotations FILE'");
 #undef BAD
