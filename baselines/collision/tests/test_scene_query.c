@@ -85,6 +85,15 @@ static void run_threads(const mkScene *s, mkSceneQueryOptions o, const double *p
 	free(other);
 }
 
+/* Parse the scene, draw np poses and answer them on 1, 2 and 3 threads. */
+static void prepare(const char *text, int dim, mkScene *s, double *poses, int np, mkPoseAnswer *ans)
+{
+	char msg[512];
+	ENSURE(mkScene_Parse(text, s, msg, sizeof msg) == MK_OK);
+	random_poses(dim, poses, np);
+	run_threads(s, mkSceneQueryOptions_Default(), poses, np, ans);
+}
+
 static void test_3d(void)
 {
 	enum { NOB = 60, NP = 150 };
@@ -92,11 +101,9 @@ static void test_3d(void)
 	scene3_text(text, sizeof text, NOB);
 	mkScene s;
 	char msg[512];
-	ENSURE(mkScene_Parse(text, &s, msg, sizeof msg) == MK_OK);
 	double poses[NP * 7];
-	random_poses(3, poses, NP);
 	mkPoseAnswer ans[NP];
-	run_threads(&s, mkSceneQueryOptions_Default(), poses, NP, ans);
+	prepare(text, 3, &s, poses, NP, ans);
 	const mkCollider *ref = mkColliders_Find("referee");
 	ENSURE(ref != NULL);
 	mkColliderScratch scratch;
@@ -209,13 +216,10 @@ static void test_2d(void)
 		"obstacle superellipse a=1.5 b=1 eps=0.1 at=5,-3\nobstacle circle a=1 at=-4,-3\nobstacle superellipse a=1 b=2 "
 		"eps=1.7 at=7,6\nheadings 1\n";
 	mkScene s;
-	char msg[512];
-	ENSURE(mkScene_Parse(text, &s, msg, sizeof msg) == MK_OK);
 	double poses[NP * 3];
-	random_poses(2, poses, NP);
 	mkPoseAnswer ans[NP];
+	prepare(text, 2, &s, poses, NP, ans);
 	mkSceneQueryOptions o = mkSceneQueryOptions_Default();
-	run_threads(&s, o, poses, NP, ans);
 	int counts[3] = {0, 0, 0}, bad = 0;
 	double worst_gap = 0.0;
 	for (int k = 0; k < NP; ++k) {
