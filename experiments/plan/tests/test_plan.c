@@ -1,6 +1,6 @@
-/* test_plan.c - every path mink_plan returns (several planners and seeds,
+/* test_plan.c - every path mink_plan returns (several planners,
  * 2D and 3D robots of several parts) is certified free segment by segment
- * by the motion check, and passes an independent dense check: at 400 poses
+ * by the motion check, and passes an independent dense check: at 401 poses
  * per segment, every robot part against every obstacle by the registry's
  * referee (collider_referee.c, Gilbert's iteration on the support maps: a
  * certified lower bound of each pair's signed distance), each bound
@@ -79,7 +79,7 @@ static void check_scene(const char *text, const char *planner, int *paths, int *
 	ENSURE(mkSceneQuery_Create(&s, &qo, &q, msg, sizeof msg) == MK_OK);
 	mkPlanOptions o = mkPlanOptions_Default();
 	o.planner = planner;
-	o.time = strcmp(planner, "RRTstar") == 0 ? 0.5 : 3.0;   /* RRT* uses all of its time */
+	o.time = 20.0;   /* these planners stop at their first path: the budget only bounds a loaded machine's wait */
 	mkColliderScratch scratch;
 	int ps = mkSceneQuery_PoseSize(q);
 	for (int k = 0; k < s.query_count; ++k) {
@@ -116,7 +116,7 @@ static void check_scene(const char *text, const char *planner, int *paths, int *
 
 int main(void)
 {
-	static const char *planners[] = {"RRTConnect", "PRM", "KPIECE1", "RRTstar"};
+	static const char *planners[] = {"RRTConnect", "PRM", "KPIECE1", "RRT"};
 	int paths = 0, bad = 0;
 	for (int d = 0; d < 2; ++d)
 		for (int k = 0; k < 4; ++k) check_scene(d == 0 ? scene2 : scene3, planners[k], &paths, &bad);
