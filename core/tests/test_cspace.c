@@ -70,17 +70,20 @@ static double ref_h3(const mkSceneBody *b, mkMat3 Rot, int placed, mkVec3 u)
 	return h + (placed ? mkVec3_Dot(b->spec.body3.t, u) : 0.0);
 }
 
-/* h of the C-obstacle of obstacle i at orientation o. */
-static double ref_k2(const mkScene *s, int i, int o, mkVec2 u)
+/* h of the C-obstacle of obstacle i against robot part j at orientation o
+ * (R): O (+) (-R M_j B_j) - R t_j. */
+static double ref_k2(const mkScene *s, int i, int j, int o, mkVec2 u)
 {
-	return ref_h2(&s->obstacles[i], mkMat2_Identity(), 1, u)
-		+ ref_h2(&s->robot, mkScene2_Orientation(s, o), 0, mkVec2_Neg(u));
+	mkMat2 R = mkScene2_Orientation(s, o);
+	return ref_h2(&s->obstacles[i], mkMat2_Identity(), 1, u) + ref_h2(&s->parts[j], R, 0, mkVec2_Neg(u))
+		- mkVec2_Dot(mkMat2_MulVec(R, s->parts[j].spec.body2.t), u);
 }
 
-static double ref_k3(const mkScene *s, int i, int o, mkVec3 u)
+static double ref_k3(const mkScene *s, int i, int j, int o, mkVec3 u)
 {
-	return ref_h3(&s->obstacles[i], mkMat3_Identity(), 1, u)
-		+ ref_h3(&s->robot, mkScene3_Orientation(s, o), 0, mkVec3_Neg(u));
+	mkMat3 R = mkScene3_Orientation(s, o);
+	return ref_h3(&s->obstacles[i], mkMat3_Identity(), 1, u) + ref_h3(&s->parts[j], R, 0, mkVec3_Neg(u))
+		- mkVec3_Dot(mkMat3_MulVec(R, s->parts[j].spec.body3.t), u);
 }
 
 static double worst_fold; /* largest fold of an inner 3D surface seen */
@@ -92,7 +95,7 @@ static int cmp_u64(const void *a, const void *b)
 }
 
 /* Check one 2D boundary; returns the largest support gap seen. */
-static double referee2(const mkScene *s, int i, int o, mkBound bound, const double *x, const double *y, int n,
+static double referee2(const mkScene *s, int i, int part, int o, mkBound bound, const double *x, const double *y, int n,
 	double tol, double certified)
 {
 	double scale = 0.0;
@@ -102,7 +105,7 @@ static double referee2(const mkScene *s, int i, int o, mkBound bound, const doub
 	for (int d = 0; d < 20000; ++d) {
 		double t = 2.0 * MK_PI * d / 20000.0;
 		mkVec2 u = {cos(t), sin(t)};
-		double hk = ref_k2(s, i, o, u), hp = -INFINITY;
+		double hk = ref_k2(s, i, part, o, u), hp = -INFINITY;
 		for (int k = 0; k < n; ++k) {
 			double v = u.x * x[k] + u.y * y[k];
 			if (v > hp) hp = v;
@@ -119,7 +122,7 @@ static double referee2(const mkScene *s, int i, int o, mkBound bound, const doub
 			if (mkVec2_Cross(e, f) < -rnd * mkVec2_Length(e)) ++bad_convex;
 			mkVec2 nu = mkVec2_Normalize(mkVec2_Make(e.y, -e.x));
 			if (mkVec2_Length(e) == 0.0) continue;
-			if (ref_k2(s, i, o, nu) > nu.x * x[k] + nu.y * y[k] + rnd) ++bad_edge;
+			if (ref_k2(s, i, part, o, nu) > nu.x * x[k] + nu.y * y[k] + rnd) ++bad_edge;
 		}
 	} else {
 		for (int k = 0; k < n; ++k) { /* counter-clockwise and convex */
@@ -138,7 +141,7 @@ static double referee2(const mkScene *s, int i, int o, mkBound bound, const doub
 	return worst;
 }
 
-static double referee3(const mkScene *s, int i, int o, mkBound bound, const double *x, const double *y,
+static double referee3(const mkScene *s, int i, int part, int o, mkBound bound, const double *x, const double *y,
 	const double *z, int n, const int *faces, int nf, double tol, double certified)
 {
 	double scale = 0.0;
@@ -149,7 +152,7 @@ static double referee3(const mkScene *s, int i, int o, mkBound bound, const doub
 	for (int d = 0; d < D; ++d) { /* Fibonacci sphere */
 		double zz = 1.0 - (2.0 * d + 1.0) / D, r = sqrt(1.0 - zz * zz), ph = d * 2.399963229728653;
 		mkVec3 u = {r * cos(ph), r * sin(ph), zz};
-		double hk = ref_k3(s, i, o, u), hp = -INFINITY;
+		double hk = ref_k3(s, i, part, o, u), hp = -INFINITY;
 		for (int k = 0; k < n; ++k) {
 			double v = u.x * x[k] + u.y * y[k] + u.z * z[k];
 			if (v > hp) hp = v;
@@ -201,7 +204,7 @@ static double referee3(const mkScene *s, int i, int o, mkBound bound, const doub
 			mkVec3 cr = mkVec3_Cross(mkVec3_Sub(pb, pa), mkVec3_Sub(pc, pa));
 			if (mkVec3_Length(cr) < 1e-12) continue;
 			mkVec3 nu = mkVec3_Normalize(cr);
-			if (ref_k3(s, i, o, nu) > mkVec3_Dot(nu, pa) + rnd) ++bad_face;
+			if (ref_k3(s, i, part, o, nu) > mkVec3_Dot(nu, pa) + rnd) ++bad_face;
 		}
 	ENSURE(bad_inside == 0);
 	ENSURE(bad_gap == 0);
@@ -271,8 +274,15 @@ static void test_scene_parse(void)
 		{"dim 3\nrobot sphere a=1\nquaternions 0,0,0,0\n", "line 3: quaternions: item 1 = 0,0,0,0 is out of range"},
 		{"dim 3\nrobot cylinder r=1\nquaternions 1,0,0,0\n", "line 2: robot: cylinder needs h"},
 		{"dim 2\nrobot cylinder r=1 h=2\nheadings 3\n", "line 2: robot: kind 'cylinder' is 3D"},
-		{"dim 2\nrobot circle a=1\nheading 3\n", "line 3: unknown keyword 'heading': must be one of dim, robot, obstacle, headings"},
-		{"dim 2\nrobot circle a=1\nrobot circle a=2\n", "line 3: robot is given twice"},
+		{"dim 2\nrobot circle a=1\nheading 3\n", "line 3: unknown keyword 'heading': must be one of dim, robot, part, object, obstacle, bounds, start, goal, headings"},
+		{"dim 2\nrobot circle a=1\nrobot circle a=2\n", "line 3: robot: the robot is already given on line 2"},
+		{"dim 2\npart circle a=1\nrobot circle a=2\n", "line 3: robot: the robot's parts are given (first on line 2)"},
+		{"dim 2\nrobot circle a=1\npart circle a=2\n", "line 3: part: the robot is already given on line 2"},
+		{"dim 2\npart circle a=1\npart box size=1,-2\n", "line 3: part1.size[2] = -2 is out of range"},
+		{"dim 2\nrobot circle a=1\nobject t\nobject u\n", "line 4: object 't' (line 3) has no obstacle lines"},
+		{"dim 2\nrobot circle a=1\nobject t\nheadings 3\n", "line 4: object 't' (line 3) has no obstacle lines"},
+		{"dim 2\nrobot circle a=1\nobject a/b\n", "line 3: object name 'a/b' is not allowed"},
+		{"dim 2\nrobot circle a=1\nobstacle circle a=1\nobject obstacle0\n", "line 4: object 'obstacle0' is the name of an obstacle of its own"},
 	};
 	for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
 		msg[0] = 0;
@@ -418,7 +428,7 @@ static void test_scene2(void)
 				for (int k = 0; k < 2; ++k) {
 					mkCSpaceBoundary v = mkCSpaceResult_Boundary(&r1, orel, i, (mkBound)k);
 					points += v.count;
-					double w = referee2(&s, i, orel, (mkBound)k, v.x, v.y, v.count, o.tol, v.error);
+					double w = referee2(&s, i, 0, orel, (mkBound)k, v.x, v.y, v.count, o.tol, v.error);
 					worst = fmax(worst, w);
 				}
 		printf("2D scene, T = %g: %ld points in %d boundaries, certified max %.3g, referee's worst gap %.3g\n",
@@ -533,7 +543,7 @@ static void test_points_factor2(void)
 			long b = (long)orel * ad.obstacles + i;
 			pa += ad.count[b];
 			mkCSpaceBoundary v = mkCSpaceResult_Boundary(&ad, orel, i, MK_BOUND_INNER);
-			worst = fmax(worst, referee2(&s, i, orel, MK_BOUND_INNER, v.x, v.y, v.count, o.tol, v.error));
+			worst = fmax(worst, referee2(&s, i, 0, orel, MK_BOUND_INNER, v.x, v.y, v.count, o.tol, v.error));
 			Pair pr;
 			double e1, e2;
 			mkSceneBody2_Model(&s.obstacles[i], 0.25 * o.tol, MK_BOUND_INNER, &pr.ob, &e1, msg, sizeof msg);
@@ -614,7 +624,7 @@ static void test_scene3(void)
 			for (int k = 0; k < 2; ++k) {
 				mkCSpaceBoundary v = mkCSpaceResult_Boundary(&r1, orel, i, (mkBound)k);
 				points[k] += v.count;
-				worst[k] = fmax(worst[k], referee3(&s, i, orel, (mkBound)k, v.x, v.y, v.z, v.count, v.faces,
+				worst[k] = fmax(worst[k], referee3(&s, i, 0, orel, (mkBound)k, v.x, v.y, v.z, v.count, v.faces,
 					v.face_count, o.tol, v.error));
 			}
 	printf("3D scene, T = %g: inner %ld points, outer %ld vertices in %d boundaries each, certified max %.3g, "
@@ -734,6 +744,53 @@ static void test_circles(void)
 	free(x); free(y); free(z); free(faces);
 }
 
+/* Robots of several parts and objects: every part's C-obstacle passes the
+ * referee's support-function checks for O (+) (-R M_j B_j) - R t_j, 1 and
+ * 2 threads alike; the union's rows name the part and the object. */
+static void test_unions(void)
+{
+	static const char *texts[2] = {
+		"dim 2\npart box size=2,1 rot=0.2\npart ellipse a=0.6 b=0.3 rot=1 at=1.5,0.4\npart circle a=0.4 at=-1.2,-0.5\n"
+		"object table\nobstacle box size=4,1 at=5,0\nobstacle circle a=0.3 at=4,2\nobject wall\n"
+		"obstacle superellipse a=1 b=3 eps=0.2 at=-5,1\nheadings 5\n",
+		"dim 3\npart box size=2,1,0.5\npart cylinder r=0.3 h=1 quat=0.9,0.3,0,0 at=1,0.5,0.2\n"
+		"part superquadric a=0.5 b=0.4 c=0.3 eps1=0.3 eps2=0.6 at=-1,0,0.5\nobstacle sphere a=1 at=4,0,0\n"
+		"object shelf\nobstacle box size=1,3,2 quat=1,0.1,0.2,0 at=0,-5,0\nobstacle ellipsoid a=2 b=1 c=1 at=0,0,5\n"
+		"quaternions 1,0,0,0; 0.8,0.2,0.5,0.1\n"};
+	for (int d = 0; d < 2; ++d) {
+		mkScene s;
+		char msg[1024];
+		ENSURE(mkScene_Parse(texts[d], &s, msg, sizeof msg) == MK_OK);
+		ENSURE(s.part_count == 3 && s.object_count == (d == 0 ? 2 : 2));
+		ENSURE(strcmp(s.objects[s.obstacle_object[s.obstacle_count - 1]].name, d == 0 ? "wall" : "shelf") == 0);
+		mkCSpaceOptions o = mkCSpaceOptions_Default();
+		o.tol = d == 0 ? 0.01 : 0.1;
+		o.outer = 1;
+		mkCSpaceResult r1, r2;
+		ENSURE(run_scene(&s, &o, 0, s.orientation_count, &r1, msg, sizeof msg) == MK_OK);
+		o.threads = 2;
+		ENSURE(run_scene(&s, &o, 0, s.orientation_count, &r2, msg, sizeof msg) == MK_OK);
+		ENSURE(r1.parts == 3 && results_equal(&r1, &r2));
+		ENSURE(mkCSpaceResult_MaxError(&r1) <= o.tol);
+		double worst = 0.0;
+		for (int ori = 0; ori < r1.orientations; ++ori)
+			for (int i = 0; i < r1.obstacles; ++i)
+				for (int j = 0; j < r1.parts; ++j)
+					for (int k = 0; k < 2; ++k) {
+						mkCSpaceBoundary v = mkCSpaceResult_PartBoundary(&r1, ori, i, j, (mkBound)k);
+						ENSURE(mkCSpaceResult_PartBoundary(&r2, ori, i, j, (mkBound)k).checksum == v.checksum);
+						worst = fmax(worst, d == 0 ? referee2(&s, i, j, ori, (mkBound)k, v.x, v.y, v.count, o.tol, v.error)
+							: referee3(&s, i, j, ori, (mkBound)k, v.x, v.y, v.z, v.count, v.faces, v.face_count, o.tol,
+								v.error));
+					}
+		printf("%dD robot of 3 parts, T = %g: referee's worst gap %.3g, certified max %.3g\n", d + 2, o.tol, worst,
+			mkCSpaceResult_MaxError(&r1));
+		mkCSpaceResult_Free(&r1);
+		mkCSpaceResult_Free(&r2);
+		mkScene_Free(&s);
+	}
+}
+
 int main(void)
 {
 	test_scene_parse();
@@ -742,5 +799,6 @@ int main(void)
 	test_scene2();
 	test_points_factor2();
 	test_scene3();
+	test_unions();
 	return mk_summary("test_cspace");
 }

@@ -14,6 +14,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "scenefile.h"
 
 #define SCENE_FILE_MAX (1L << 30)
 #define THREADS_MAX 256
@@ -33,6 +34,9 @@ static void mkSceneCmd_Help(FILE *fp)
 		"  # comment\n"
 		"  dim 2|3                              first line\n"
 		"  robot SPEC                           once; its at= is ignored\n"
+		"  part SPEC                            instead of robot: a part of a robot of several\n"
+		"                                       bodies, its pose (at=, rot/quat/M) in the robot's frame\n"
+		"  object NAME                          the obstacle lines that follow form object NAME\n"
 		"  obstacle SPEC                        any number; indices 0, 1, ... in order\n"
 		"  headings N | headings a1,a2,...      2D: angles 2 pi k / N, or these radians\n"
 		"  quaternions w,x,y,z;w,x,y,z;...      3D orientations\n"
@@ -41,7 +45,8 @@ static void mkSceneCmd_Help(FILE *fp)
 		"SPEC as in 'mink sum' (circle, ellipse, superellipse, sphere, ellipsoid,\n"
 		"superquadric) plus 'box size=l,w[,h]' and 'cylinder r=R h=H' (axis z), with the\n"
 		"pose keys rot, shear (2D), quat (3D), M, at. The robot at heading a (rotation R)\n"
-		"is the body with map R M.\n\n");
+		"is the body with map R M. With parts or objects the rows end with part,object:\n"
+		"the C-obstacle of an object is the union of its rows' boundaries.\n\n");
 }
 
 static char *mkSceneCmd_ReadFile(const char *path, long *len, char *msg, size_t msglen)
@@ -95,32 +100,40 @@ typedef struct mkSceneCmd {
 	int open[3];
 	mkSceneCmdSum *sum;
 	long short_of_tol;
+	int unions;       /* parts or objects: the rows end with part,object */
 } mkSceneCmd;
 
-/* Parse the scene file and, for 3D, its rotations file (relative to the
- * scene's folder). Returns 0, or 2 after printing why. */
-static int mkSceneCmd_Load(mkSceneCmd *s)
+/* 1 when the scene has a robot of several parts or `object` lines. */
+static int mkSceneCmd_Unions(const mkScene *s)
+{
+	if (s->part_count > 1) return 1;
+	for (int k = 0; k < s->object_count; ++k)
+		if (s->objects[k].line > 0) return 1;
+	return 0;
+}
+
+int mkSceneCmd_LoadFile(const char *cmd, const char *file, mkScene *scene)
 {
 	char msg[2048];
 	long len = 0;
-	char *text = mkSceneCmd_ReadFile(s->file, &len, msg, sizeof msg);
-	if (!text) { fprintf(stderr, "mink scene: %s\n", msg); return 2; }
-	mkResult r = mkScene_Parse(text, &s->scene, msg, sizeof msg);
+	char *text = mkSceneCmd_ReadFile(file, &len, msg, sizeof msg);
+	if (!text) { fprintf(stderr, "mink %s: %s\n", cmd, msg); return 2; }
+	mkResult r = mkScene_Parse(text, scene, msg, sizeof msg);
 	free(text);
-	if (r != MK_OK) { fprintf(stderr, "mink scene: %s: %s\n", s->file, msg); return 2; }
-	if (!s->scene.rotations_file[0])
+	if (r != MK_OK) { fprintf(stderr, "mink %s: %s: %s\n", cmd, file, msg); return 2; }
+	if (!scene->rotations_file[0])
 		return 0;
 	char path[MK_PATH_MAX];
-	const char *slash = strrchr(s->file, '/');
-	if (s->scene.rotations_file[0] != '/' && slash)
-		snprintf(path, sizeof path, "%.*s/%s", (int)(slash - s->file), s->file, s->scene.rotations_file);
+	const char *slash = strrchr(file, '/');
+	if (scene->rotations_file[0] != '/' && slash)
+		snprintf(path, sizeof path, "%.*s/%s", (int)(slash - file), file, scene->rotations_file);
 	else
-		snprintf(path, sizeof path, "%s", s->scene.rotations_file);
+		snprintf(path, sizeof path, "%s", scene->rotations_file);
 	char *rt = mkSceneCmd_ReadFile(path, &len, msg, sizeof msg);
-	r = rt ? mkScene_SetRotations(&s->scene, rt, path, msg, sizeof msg) : MK_ERR_ARGUMENT;
+	r = rt ? mkScene_SetRotations(scene, rt, path, msg, sizeof msg) : MK_ERR_ARGUMENT;
 	free(rt);
 	if (r != MK_OK) {
-		fprintf(stderr, "mink scene: %s: line %d: rotations: %s\n", s->file, s->scene.rotations_line, msg);
+		fprintf(stderr, "mink %s: %s: line %d: rotations: %s\n", cmd, file, scene->rotations_line, msg);
 		return 2;
 	}
 	return 0;
@@ -154,10 +167,34 @@ static int mkSceneCmd_OpenOutputs(mkSceneCmd *s)
 		}
 		s->open[k] = 1;
 	}
-	fprintf(s->f[0].fp, "obstacle,orientation,kind,k,x,y%s\n", s->scene.dim == 3 ? ",z" : "");
+	s->unions = mkSceneCmd_Unions(&s->scene);
+	const char *tail = s->unions ? ",part,object" : "";
+	fprintf(s->f[0].fp, "obstacle,orientation,kind,k,x,y%s%s\n", s->scene.dim == 3 ? ",z" : "", tail);
 	if (s->open[1])
-		fprintf(s->f[1].fp, "obstacle,orientation,kind,f,i,j,k\n");
+		fprintf(s->f[1].fp, "obstacle,orientation,kind,f,i,j,k%s\n", tail);
 	return 0;
+}
+
+/* The rows of one boundary (obstacle i, robot part j); tail: ",part,object" values or "". */
+static void mkSceneCmd_WriteBoundary(mkSceneCmd *s, const mkCSpaceBoundary *b, int i, int ori, const char *kind,
+	const char *tail)
+{
+	FILE *fo = s->f[0].fp, *ff = s->open[1] ? s->f[1].fp : NULL;
+	for (int j = 0; j < b->count; ++j) {
+		long q = (long)j * b->stride;
+		if (s->scene.dim == 2)
+			fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g%s\n", i, ori, kind, j, b->x[q], b->y[q], tail);
+		else
+			fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g,%.17g%s\n", i, ori, kind, j, b->x[q], b->y[q], b->z[q], tail);
+	}
+	for (int f = 0; ff && f < b->face_count; ++f)
+		fprintf(ff, "%d,%d,%s,%d,%d,%d,%d%s\n", i, ori, kind, f, b->faces[3 * f], b->faces[3 * f + 1],
+			b->faces[3 * f + 2], tail);
+	mkSceneCmdSum *sum = &s->sum[i];
+	sum->points += b->count;
+	sum->error = fmax(sum->error, b->error);
+	sum->model_error = fmax(sum->model_error, b->model_error);
+	sum->seconds += b->seconds;
 }
 
 /* The rows of one computed chunk. */
@@ -165,27 +202,16 @@ static void mkSceneCmd_WriteChunk(mkSceneCmd *s, const mkCSpaceResult *res)
 {
 	static const char *const kinds[] = {"inner", "outer"};
 	int nob = s->scene.obstacle_count;
-	FILE *fo = s->f[0].fp, *ff = s->open[1] ? s->f[1].fp : NULL;
+	char tail[MK_SCENE_NAME_MAX + 32] = "";
 	for (int ori = res->orientation_begin; ori < res->orientation_begin + res->orientations; ++ori)
 		for (int i = 0; i < nob; ++i)
-			for (int k = 0; k < res->bounds; ++k) {
-				mkCSpaceBoundary b = mkCSpaceResult_Boundary(res, ori, i, (mkBound)k);
-				for (int j = 0; j < b.count; ++j) {
-					long q = (long)j * b.stride;
-					if (s->scene.dim == 2)
-						fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g\n", i, ori, kinds[k], j, b.x[q], b.y[q]);
-					else
-						fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g,%.17g\n", i, ori, kinds[k], j, b.x[q], b.y[q], b.z[q]);
+			for (int j = 0; j < res->parts; ++j)
+				for (int k = 0; k < res->bounds; ++k) {
+					mkCSpaceBoundary b = mkCSpaceResult_PartBoundary(res, ori, i, j, (mkBound)k);
+					if (s->unions)
+						snprintf(tail, sizeof tail, ",%d,%s", j, s->scene.objects[s->scene.obstacle_object[i]].name);
+					mkSceneCmd_WriteBoundary(s, &b, i, ori, kinds[k], tail);
 				}
-				for (int f = 0; ff && f < b.face_count; ++f)
-					fprintf(ff, "%d,%d,%s,%d,%d,%d,%d\n", i, ori, kinds[k], f, b.faces[3 * f], b.faces[3 * f + 1],
-						b.faces[3 * f + 2]);
-				mkSceneCmdSum *sum = &s->sum[i];
-				sum->points += b.count;
-				sum->error = fmax(sum->error, b.error);
-				sum->model_error = fmax(sum->model_error, b.model_error);
-				sum->seconds += b.seconds;
-			}
 	s->short_of_tol += mkCSpaceResult_OverTolerance(res);
 }
 
@@ -193,7 +219,11 @@ static void mkSceneCmd_WriteReport(const mkSceneCmd *s)
 {
 	FILE *fr = s->f[2].fp;
 	fprintf(fr, "obstacle,declared,model,model_error,points,certified_error,seconds\n");
-	fprintf(fr, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&s->scene.robot), mkCSpace_ModelName(s->cs, -1));
+	if (s->scene.part_count <= 1)
+		fprintf(fr, "robot,%s,\"%s\",,,,\n", mkSceneBody_KindName(&s->scene.robot), mkCSpace_ModelName(s->cs, -1));
+	for (int j = 0; s->scene.part_count > 1 && j < s->scene.part_count; ++j)
+		fprintf(fr, "part%d,%s,\"%s\",,,,\n", j, mkSceneBody_KindName(&s->scene.parts[j]),
+			mkCSpace_ModelName(s->cs, -1 - j));
 	for (int i = 0; i < s->scene.obstacle_count; ++i)
 		fprintf(fr, "%d,%s,\"%s\",%.6g,%ld,%.6g,%.6f\n", i, mkSceneBody_KindName(&s->scene.obstacles[i]),
 			mkCSpace_ModelName(s->cs, i), s->sum[i].model_error, s->sum[i].points, s->sum[i].error, s->sum[i].seconds);
@@ -206,8 +236,9 @@ static int mkSceneCmd_Compute(mkSceneCmd *s, long begin, long end)
 {
 	char msg[2048];
 	int nob = s->scene.obstacle_count;
-	long budget = s->scene.dim == 2 ? 20000 : 2000; /* (orientation, obstacle) tasks per chunk */
-	long chunk = nob > 0 ? budget / nob : (long)s->scene.orientation_count + 1;
+	long budget = s->scene.dim == 2 ? 20000 : 2000; /* (orientation, obstacle, part) tasks per chunk */
+	long pairs = (long)nob * s->scene.part_count;
+	long chunk = pairs > 0 ? budget / pairs : (long)s->scene.orientation_count + 1;
 	if (chunk < 1)
 		chunk = 1;
 	for (long c0 = begin; c0 < end; c0 += chunk) {
@@ -256,7 +287,7 @@ int mkCmd_Scene(int argc, char **argv)
 			"counter-clockwise); 3D faces go to PATH with .csv replaced by .faces.csv:\n"
 			"obstacle,orientation,kind,f,i,j,k. Written atomically (required)", &s.out),
 		MK_FLAG_PATH("--report", "PATH", "CSV per obstacle: model, model error, points, certified error,\n"
-			"seconds (and a robot row)", &s.report),
+			"seconds (and a robot row, or one row per part)", &s.report),
 		MK_FLAG_SWITCH("--outer", "also the outer boundaries", &s.o.outer),
 		MK_FLAG_LONG("--threads", "K", "worker threads (default 1); the output does not depend on K", &threads, 1,
 			THREADS_MAX),
@@ -270,7 +301,7 @@ int mkCmd_Scene(int argc, char **argv)
 	if (!s.file) { fprintf(stderr, "mink scene: no scene FILE given (usage: mink scene FILE --tol T --out PATH)\n"); return 2; }
 	if ((rc = mkCli_Require("scene", &flags[0])) != MK_CLI_GO || (rc = mkCli_Require("scene", &flags[1])) != MK_CLI_GO)
 		return rc;
-	rc = mkSceneCmd_Load(&s);
+	rc = mkSceneCmd_LoadFile("scene", s.file, &s.scene);
 	if (rc == 0) {
 		s.o.threads = (int)threads;
 		s.o.impl = (mkImpl)impl;

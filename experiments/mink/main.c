@@ -24,6 +24,9 @@ static const mkCommand commands[] = {
 #ifdef MINK_HAVE_COLLIDE
 	{"collide", mkCmd_Collide, "collision status, distance or penetration and witnesses of two bodies"},
 #endif
+#ifdef MINK_HAVE_PLAN
+	{"plan", mkCmd_Plan, "paths for a scene's planning queries (OMPL, certified checks), or --check a path"},
+#endif
 };
 
 static void usage(FILE *f)

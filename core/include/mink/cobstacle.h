@@ -94,24 +94,28 @@ typedef struct mkCSpace mkCSpace;
  * modelled once for the tolerance. The scene must stay alive and unchanged
  * until mkCSpace_Destroy. Fails with MK_ERR_ARGUMENT on bad options (message
  * says which), MK_ERR_RANGE when a model cannot meet the tolerance (e.g. T
- * too small for a box; message "robot: ..." or "obstacle I: ..."),
+ * too small for a box; message "robot: ...", "part J: ..." or "obstacle I: ..."),
+ * MK_ERR_UNSUPPORTED also for a robot of several parts in paper mode;
  * MK_ERR_UNSUPPORTED (outer bounds in paper mode, a kernel not built),
  * MK_ERR_MEMORY. On failure *out is NULL. */
 MK_API mkResult mkCSpace_Create(const mkScene *scene, const mkCSpaceOptions *opt, mkCSpace **out,
 	char *msg, size_t msglen);
 MK_API void mkCSpace_Destroy(mkCSpace *cs);
 MK_API const mkCSpaceOptions *mkCSpace_Options(const mkCSpace *cs);
-/* The model of a body as text for reports: body -1 the robot, 0 ..
- * obstacles - 1 an obstacle. A SMOOTH body is its kind ("ellipse"); a box
+/* The model of a body as text for reports: body -1 the robot (its part 0),
+ * -1 - j its part j, 0 .. obstacles - 1 an obstacle. A SMOOTH body is its kind ("ellipse"); a box
  * or cylinder its model ("superellipse eps=0.0834"), as "inner M1; outer
  * M2" when the options ask for outer bounds. */
 MK_API const char *mkCSpace_ModelName(const mkCSpace *cs, int body);
 
-/* The boundaries of a run, (orientation o, obstacle i, bound k) at index
- * ((o - orientation_begin) * obstacles + i) * bounds + k; bounds is 1
- * (inner) or 2 (inner, outer). Read them with mkCSpaceResult_Boundary. */
+/* The boundaries of a run, (orientation o, obstacle i, robot part j, bound
+ * k) at index (((o - orientation_begin) * obstacles + i) * parts + j) *
+ * bounds + k; bounds is 1 (inner) or 2 (inner, outer), parts the robot's
+ * (1 for a robot of one body). The C-obstacle of obstacle i is the union
+ * over j of its parts' boundaries. Read them with mkCSpaceResult_Boundary
+ * or mkCSpaceResult_PartBoundary. */
 typedef struct mkCSpaceResult {
-	int dim, obstacles, orientations, bounds;
+	int dim, obstacles, orientations, bounds, parts;
 	int orientation_begin;   /* the scene orientation of the run's first */
 	double tol;              /* the options' tolerance */
 	int *count;              /* points of each boundary */
@@ -150,6 +154,9 @@ MK_API mkResult mkCSpace_Run(const mkCSpace *cs, int begin, int end, mkCSpaceRes
 /* The boundary of scene orientation o (orientation_begin <= o <
  * orientation_begin + orientations), obstacle i and bound k. */
 MK_API mkCSpaceBoundary mkCSpaceResult_Boundary(const mkCSpaceResult *r, int o, int i, mkBound k);
+/* The same for robot part j (0 <= j < parts): the C-obstacle of obstacle i
+ * against part j alone, O (+) (-R M_j B_j) - R t_j (mink/scene.h). */
+MK_API mkCSpaceBoundary mkCSpaceResult_PartBoundary(const mkCSpaceResult *r, int o, int i, int j, mkBound k);
 /* Largest error of the result (NaN if any is NaN). */
 MK_API double mkCSpaceResult_MaxError(const mkCSpaceResult *r);
 /* How many boundaries are not certified within the tolerance. */

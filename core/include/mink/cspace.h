@@ -8,5 +8,6 @@
 #include "mink.h"
 #include "scene.h"
 #include "cobstacle.h"
+#include "scenequery.h"
 
 #endif

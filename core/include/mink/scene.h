@@ -15,12 +15,24 @@
  *   # comment (anywhere on a line)
  *   dim 2|3                      first line
  *   robot SPEC                   once; its `at` is ignored
+ *   part SPEC                    instead of robot: one part of a robot of
+ *                                several bodies, placed by its own pose
+ *                                (rot/quat/M, at) in the robot's frame
+ *   object NAME                  the obstacles that follow form object NAME
  *   obstacle SPEC                any number; index 0, 1, ... in order
  *   headings N | headings a1,a2,...       2D: 2 pi k / N, or these radians
  *   quaternions w,x,y,z;w,x,y,z;...       3D
  *   rotations FILE                        3D: rotations read by the caller
+ *   bounds xlo,xhi,ylo,yhi[,zlo,zhi]      planning: the box of the robot's position
+ *   start POSE                            planning: the start of the next queries
+ *   goal POSE                             planning: a query from the last start to POSE
+ * POSE: x,y,theta (2D) or x,y,z,qw,qx,qy,qz (3D). A scene with queries may
+ * omit the orientations.
  * The robot at orientation R (2D: the rotation by the heading) is the body
- * whose map is R M, M the robot's own map.
+ * whose map is R M, M the robot's own map; a robot of parts at orientation R
+ * and position c has part j at c + R t_j with map R M_j (t_j, M_j the part's
+ * pose). Its C-obstacles are the union over parts and obstacles of the
+ * pairs' C-obstacles O (+) (-R M_j B_j) - R t_j.
  *
  * Memory: mkScene_Parse allocates the obstacle and orientation arrays;
  * mkScene_Free releases them. Nothing else here allocates. */
@@ -47,6 +59,8 @@ typedef enum mkSceneKind {
 #define MK_SCENE_HEADINGS_MAX 10000000
 #define MK_SCENE_ANGLE_MAX 1e6
 #define MK_SCENE_LINE_MAX 65536
+#define MK_SCENE_PARTS_MAX 1024
+#define MK_SCENE_NAME_MAX 64   /* object names: 1 .. 63 of [A-Za-z0-9_.-] */
 
 typedef struct mkSceneBody {
 	int dim;
@@ -58,11 +72,35 @@ typedef struct mkSceneBody {
 	double size[3];
 } mkSceneBody;
 
+/* A group of obstacles that form one object (a table of a top and legs). */
+typedef struct mkSceneObject {
+	char name[MK_SCENE_NAME_MAX];
+	int line;   /* the `object` line; 0 for an obstacle that is its own object */
+} mkSceneObject;
+
+/* A planning query: start and goal poses (3 or 7 values, mink/scenequery.h)
+ * and their lines. */
+typedef struct mkScenePlanQuery {
+	double start[7], goal[7];
+	int start_line, goal_line;
+} mkScenePlanQuery;
+
 typedef struct mkScene {
 	int dim;
-	mkSceneBody robot;
+	mkSceneBody robot;   /* parts[0]; from `robot SPEC` as written (its at= unused) */
+	/* The robot's parts (part_count >= 1): `robot SPEC` gives one part at
+	 * the robot's frame (its at= set to 0), `part SPEC` lines one each,
+	 * their at= and map their pose in the robot's frame. A scene built
+	 * by hand may leave part_count 0: the robot is then its one part. */
+	mkSceneBody *parts;
+	int part_count;
 	mkSceneBody *obstacles;
 	int obstacle_count;
+	/* obstacle i belongs to objects[obstacle_object[i]]; an obstacle
+	 * before any `object` line is an object of its own, named obstacleI */
+	int *obstacle_object;
+	mkSceneObject *objects;
+	int object_count;
 	int orientation_count;
 	double *headings;    /* 2D: orientation_count angles (radians) */
 	mkMat3 *rotations;   /* 3D: orientation_count rotation matrices */
@@ -70,6 +108,11 @@ typedef struct mkScene {
 	 * with mkScene_SetRotations); empty when the scene lists quaternions. */
 	char rotations_file[1024];
 	int rotations_line;  /* the line of `rotations FILE`, for messages */
+	/* planning: bounds (bounds_line 0: none) and queries */
+	double bounds_lo[3], bounds_hi[3];
+	int bounds_line;
+	mkScenePlanQuery *queries;
+	int query_count;
 } mkScene;
 
 /* The kind's name: "box", "cylinder" or the SPEC kind's name. */

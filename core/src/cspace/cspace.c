@@ -59,22 +59,22 @@ static void mkCSpace_Describe(const mkCSpace *cs, const mkSceneBody *d, int slot
 	if (d->kind == MK_SCENE_SMOOTH) {
 		snprintf(buf, len, "%s", mkSceneBody_KindName(d));
 	} else if (cs->dim == 2) {
-		mkShape2 m = slot < 0 ? cs->robot2[-1 - slot].shape : cs->obs2[slot].shape;
+		mkShape2 m = slot < 0 ? cs->part2[-1 - slot].shape : cs->obs2[slot].shape;
 		snprintf(buf, len, "%s eps=%.6g", mkShape2_IsEllipse(m) ? "ellipse" : "superellipse", m.eps);
 	} else {
-		mkShape3 m = slot < 0 ? cs->robot3[-1 - slot].shape : cs->obs3[slot].shape;
+		mkShape3 m = slot < 0 ? cs->part3[-1 - slot].shape : cs->obs3[slot].shape;
 		snprintf(buf, len, "%s eps1=%.6g eps2=%.6g", mkShape3_IsEllipsoid(m) ? "ellipsoid" : "superquadric", m.eps1,
 			m.eps2);
 	}
 }
 
-/* The name of body i (-1: the robot), both bounds' models when there are two. */
+/* The name of body i (-1 - j: robot part j), both bounds' models when there are two. */
 static void mkCSpace_Name(const mkCSpace *cs, int i, char *buf, size_t len)
 {
-	const mkSceneBody *d = i < 0 ? &cs->scene->robot : &cs->scene->obstacles[i];
+	const mkSceneBody *d = i < 0 ? &cs->part_body[-1 - i] : &cs->scene->obstacles[i];
 	char a[56], b[56] = "";
-	mkCSpace_Describe(cs, d, i < 0 ? -1 : 2 * i, a, sizeof a);
-	if (cs->bounds == 2) mkCSpace_Describe(cs, d, i < 0 ? -2 : 2 * i + 1, b, sizeof b);
+	mkCSpace_Describe(cs, d, i < 0 ? -1 - 2 * (-1 - i) : 2 * i, a, sizeof a);
+	if (cs->bounds == 2) mkCSpace_Describe(cs, d, i < 0 ? -2 - 2 * (-1 - i) : 2 * i + 1, b, sizeof b);
 	if (cs->bounds == 2 && d->kind != MK_SCENE_SMOOTH) snprintf(buf, len, "inner %s; outer %s", a, b);
 	else snprintf(buf, len, "%s", a);
 }
@@ -87,10 +87,22 @@ static mkResult mkCSpace_Model(mkCSpace *cs, char *msg, size_t msglen)
 	double budget = 0.25 * cs->opt.tol;
 	char sub[512];
 	for (int k = 0; k < cs->bounds; ++k) {
-		mkResult r = cs->dim == 2
-			? mkSceneBody2_Model(&scene->robot, budget, (mkBound)k, &cs->robot2[k], &cs->robot_err[k], sub, sizeof sub)
-			: mkSceneBody3_Model(&scene->robot, budget, (mkBound)k, &cs->robot3[k], &cs->robot_err[k], sub, sizeof sub);
+		mkResult r = MK_OK;
+		for (int j = 0; j < cs->parts && r == MK_OK; ++j) {
+			int q = 2 * j + k;
+			r = cs->dim == 2
+				? mkSceneBody2_Model(&cs->part_body[j], budget, (mkBound)k, &cs->part2[q], &cs->part_err[q], sub, sizeof sub)
+				: mkSceneBody3_Model(&cs->part_body[j], budget, (mkBound)k, &cs->part3[q], &cs->part_err[q], sub, sizeof sub);
+			if (r != MK_OK && cs->parts > 1) return mkFail(r, msg, msglen, "part %d: %s", j, sub);
+		}
+		if (r == MK_OK && scene->part_count == 0) { /* a hand-built scene's robot: its at= unused */
+			if (cs->dim == 2) cs->part2[k].t = mkVec2_Make(0.0, 0.0);
+			else cs->part3[k].t = mkVec3_Make(0.0, 0.0, 0.0);
+		}
 		if (r != MK_OK) return mkFail(r, msg, msglen, "robot: %s", sub);
+		if (cs->dim == 2) cs->robot2[k] = cs->part2[k];
+		else cs->robot3[k] = cs->part3[k];
+		cs->robot_err[k] = cs->part_err[k];
 		for (int i = 0; i < cs->nob; ++i) {
 			r = cs->dim == 2 ? mkSceneBody2_Model(&scene->obstacles[i], budget, (mkBound)k, &cs->obs2[2 * i + k],
 					&cs->obs_err[2 * i + k], sub, sizeof sub)
@@ -99,7 +111,8 @@ static mkResult mkCSpace_Model(mkCSpace *cs, char *msg, size_t msglen)
 			if (r != MK_OK) return mkFail(r, msg, msglen, "obstacle %d: %s", i, sub);
 		}
 	}
-	mkCSpace_Name(cs, -1, cs->robot_name, sizeof cs->robot_name);
+	for (int j = 0; j < cs->parts; ++j) mkCSpace_Name(cs, -1 - j, cs->part_name[j], sizeof cs->part_name[j]);
+	snprintf(cs->robot_name, sizeof cs->robot_name, "%s", cs->part_name[0]);
 	for (int i = 0; i < cs->nob; ++i) mkCSpace_Name(cs, i, cs->model_name[i], sizeof cs->model_name[i]);
 	return MK_OK;
 }
@@ -121,10 +134,13 @@ mkResult mkCSpace_Create(const mkScene *scene, const mkCSpaceOptions *opt, mkCSp
 {
 	if (!out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no result");
 	*out = NULL;
-	if (!scene || !opt || (scene->dim != 2 && scene->dim != 3))
+	if (!scene || !opt || (scene->dim != 2 && scene->dim != 3) || (scene->part_count > 0 && !scene->parts))
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene or options");
 	mkResult r = mkCSpace_CheckOptions(scene->dim, opt, msg, msglen);
 	if (r != MK_OK) return r;
+	if (opt->mode == MK_CSPACE_PAPER && scene->part_count > 1)
+		return mkFail(MK_ERR_UNSUPPORTED, msg, msglen, "the paper's sampling takes a robot of one body, not %d parts",
+			scene->part_count);
 	mkCSpace *cs = calloc(1, sizeof *cs);
 	if (!cs) return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	cs->scene = scene;
@@ -132,12 +148,18 @@ mkResult mkCSpace_Create(const mkScene *scene, const mkCSpaceOptions *opt, mkCSp
 	cs->dim = scene->dim;
 	cs->nob = scene->obstacle_count;
 	cs->bounds = opt->outer ? 2 : 1;
-	size_t nm = (size_t)(2 * cs->nob + 1);
+	cs->parts = scene->part_count > 0 ? scene->part_count : 1;
+	cs->part_body = scene->part_count > 0 ? scene->parts : &scene->robot;
+	size_t nm = (size_t)(2 * cs->nob + 1), np = (size_t)(2 * cs->parts);
 	cs->obs_err = calloc(nm, sizeof(double));
-	if (cs->dim == 2) cs->obs2 = calloc(nm, sizeof(mkBody2));
-	else cs->obs3 = calloc(nm, sizeof(mkBody3));
+	cs->part_err = calloc(np, sizeof(double));
+	if (cs->dim == 2) { cs->obs2 = calloc(nm, sizeof(mkBody2)); cs->part2 = calloc(np, sizeof(mkBody2)); }
+	else { cs->obs3 = calloc(nm, sizeof(mkBody3)); cs->part3 = calloc(np, sizeof(mkBody3)); }
 	cs->model_name = calloc((size_t)cs->nob + 1, sizeof *cs->model_name);
-	if (!cs->obs_err || (!cs->obs2 && !cs->obs3) || !cs->model_name) r = MK_ERR_MEMORY;
+	cs->part_name = calloc((size_t)cs->parts, sizeof *cs->part_name);
+	if (!cs->obs_err || !cs->part_err || (!cs->obs2 && !cs->obs3) || (!cs->part2 && !cs->part3) || !cs->model_name
+		|| !cs->part_name)
+		r = MK_ERR_MEMORY;
 	else r = mkCSpace_Model(cs, msg, msglen);
 	if (r == MK_OK && opt->mode == MK_CSPACE_PAPER) r = mkCSpace_PaperSamples(cs);
 	if (r != MK_OK) {
@@ -153,6 +175,7 @@ void mkCSpace_Destroy(mkCSpace *cs)
 {
 	if (!cs) return;
 	free(cs->obs_err); free(cs->obs2); free(cs->obs3); free(cs->model_name);
+	free(cs->part_err); free(cs->part2); free(cs->part3); free(cs->part_name);
 	for (int d = 0; d < 3; ++d) free(cs->paper_u[d]);
 	free(cs);
 }
@@ -161,8 +184,8 @@ const mkCSpaceOptions *mkCSpace_Options(const mkCSpace *cs) { return &cs->opt; }
 
 const char *mkCSpace_ModelName(const mkCSpace *cs, int body)
 {
-	if (!cs || body < -1 || body >= cs->nob) return "?";
-	return body < 0 ? cs->robot_name : cs->model_name[body];
+	if (!cs || body < -cs->parts || body >= cs->nob) return "?";
+	return body < 0 ? cs->part_name[-1 - body] : cs->model_name[body];
 }
 
 /* ---- results ---- */
@@ -170,7 +193,7 @@ const char *mkCSpace_ModelName(const mkCSpace *cs, int body)
 void mkCSpaceResult_Free(mkCSpaceResult *r)
 {
 	if (!r) return;
-	long nb = (long)r->obstacles * r->orientations * r->bounds;
+	long nb = (long)r->obstacles * r->orientations * r->parts * r->bounds;
 	for (long b = 0; r->points && b < nb; ++b) free(r->points[b]);
 	for (long b = 0; r->faces && b < nb; ++b) free(r->faces[b]);
 	free(r->count); free(r->error); free(r->model_error); free(r->seconds); free(r->checksum);
@@ -181,7 +204,7 @@ void mkCSpaceResult_Free(mkCSpaceResult *r)
 double mkCSpaceResult_MaxError(const mkCSpaceResult *r)
 {
 	double m = 0.0;
-	long nb = (long)r->obstacles * r->orientations * r->bounds;
+	long nb = (long)r->obstacles * r->orientations * r->parts * r->bounds;
 	for (long b = 0; b < nb; ++b) {
 		if (r->error[b] != r->error[b]) return NAN;
 		if (r->error[b] > m) m = r->error[b];
@@ -191,16 +214,21 @@ double mkCSpaceResult_MaxError(const mkCSpaceResult *r)
 
 long mkCSpaceResult_OverTolerance(const mkCSpaceResult *r)
 {
-	long n = 0, nb = (long)r->obstacles * r->orientations * r->bounds;
+	long n = 0, nb = (long)r->obstacles * r->orientations * r->parts * r->bounds;
 	for (long b = 0; b < nb; ++b) n += !(r->error[b] <= r->tol);
 	return n;
 }
 
 mkCSpaceBoundary mkCSpaceResult_Boundary(const mkCSpaceResult *r, int o, int i, mkBound k)
 {
+	return mkCSpaceResult_PartBoundary(r, o, i, 0, k);
+}
+
+mkCSpaceBoundary mkCSpaceResult_PartBoundary(const mkCSpaceResult *r, int o, int i, int part, mkBound k)
+{
 	mkCSpaceBoundary v;
 	memset(&v, 0, sizeof v);
-	long b = ((long)(o - r->orientation_begin) * r->obstacles + i) * r->bounds + (int)k;
+	long b = (((long)(o - r->orientation_begin) * r->obstacles + i) * r->parts + part) * r->bounds + (int)k;
 	v.count = r->count[b];
 	v.error = r->error[b];
 	v.model_error = r->model_error[b];

@@ -54,23 +54,25 @@ static mkResult mkCSpaceJob_Store(mkCSpaceResult *res, long b, const double *px,
 	return MK_OK;
 }
 
-/* One 2D boundary of obstacle i against the robot at scene orientation
- * ori, bound k: its points in w->q, *count and *err. */
-static mkResult mkCSpaceJob_Boundary2(const mkCSpace *cs, mkCSpaceWork *w, int ori, int i, int k, int *count,
+/* One 2D boundary of obstacle i against robot part j at scene orientation
+ * ori, bound k: its points in w->q, *count and *err. The part's offset R t_j
+ * moves the obstacle by -R t_j (the C-obstacle of the robot's position). */
+static mkResult mkCSpaceJob_Boundary2(const mkCSpace *cs, mkCSpaceWork *w, int ori, int i, int j, int k, int *count,
 	double *err)
 {
 	const mkCSpaceOptions *o = &cs->opt;
-	mkBody2 rob = cs->robot2[k];
-	rob.M = mkMat2_Mul(mkScene2_Orientation(cs->scene, ori), rob.M);
+	mkBody2 rob = cs->part2[2 * j + k], ob = cs->obs2[2 * i + k];
+	mkMat2 R = mkScene2_Orientation(cs->scene, ori);
+	rob.M = mkMat2_Mul(R, rob.M);
+	ob.t = mkVec2_Sub(ob.t, mkMat2_MulVec(R, rob.t));
 	rob.t = mkVec2_Make(0.0, 0.0);
-	mkBody2 ob = cs->obs2[2 * i + k];
 	if (o->mode == MK_CSPACE_PAPER) {
 		*count = cs->paper_n;
 		if (!mkCSpaceWork_Batch(w, *count, 2)) return MK_ERR_MEMORY;
 		mkSumOptions so = {MK_SET_CONTACT, o->form, MK_PARAM_SURFACE, o->impl, MK_PRECISION_DOUBLE};
 		return mkSum2_Batch(ob, rob, &so, cs->paper_u[0], cs->paper_u[1], *count, w->q[0], w->q[1], NULL, NULL);
 	}
-	double tol = o->tol - cs->obs_err[2 * i + k] - cs->robot_err[k];
+	double tol = o->tol - cs->obs_err[2 * i + k] - cs->part_err[2 * j + k];
 	mkResult r = mkBoundary2_Run(w, ob, rob, o->impl, (mkBound)k, tol, o->max_points,
 		o->mode == MK_CSPACE_UNIFORM ? o->uniform : 0, NULL, NULL, count, err);
 	if (r != MK_OK) return r;
@@ -81,15 +83,16 @@ static mkResult mkCSpaceJob_Boundary2(const mkCSpace *cs, mkCSpaceWork *w, int o
 
 /* One 3D boundary likewise: its points in p[0..2] (pointers into w), its
  * faces (store = 1) kept in the result. */
-static mkResult mkCSpaceJob_Boundary3(mkCSpaceJob *J, mkCSpaceWork *w, long b, int ori, int i, int k, int *count,
-	double *err, double *p[3])
+static mkResult mkCSpaceJob_Boundary3(mkCSpaceJob *J, mkCSpaceWork *w, long b, int ori, int i, int j, int k,
+	int *count, double *err, double *p[3])
 {
 	const mkCSpace *cs = J->cs;
 	const mkCSpaceOptions *o = &cs->opt;
-	mkBody3 rob = cs->robot3[k];
-	rob.M = mkMat3_Mul(mkScene3_Orientation(cs->scene, ori), rob.M);
+	mkBody3 rob = cs->part3[2 * j + k], ob = cs->obs3[2 * i + k];
+	mkMat3 R = mkScene3_Orientation(cs->scene, ori);
+	rob.M = mkMat3_Mul(R, rob.M);
+	ob.t = mkVec3_Sub(ob.t, mkMat3_MulVec(R, rob.t));
 	rob.t = mkVec3_Make(0.0, 0.0, 0.0);
-	mkBody3 ob = cs->obs3[2 * i + k];
 	mkResult r;
 	if (o->mode == MK_CSPACE_PAPER) {
 		*count = cs->paper_n * cs->paper_n;
@@ -101,7 +104,7 @@ static mkResult mkCSpaceJob_Boundary3(mkCSpaceJob *J, mkCSpaceWork *w, long b, i
 		return r;
 	}
 	int nf = 0;
-	double tol = o->tol - cs->obs_err[2 * i + k] - cs->robot_err[k];
+	double tol = o->tol - cs->obs_err[2 * i + k] - cs->part_err[2 * j + k];
 	r = mkBoundary3_Compute(w, ob, rob, o->impl, (mkBound)k, tol, o->max_points,
 		o->mode == MK_CSPACE_UNIFORM ? o->uniform : -1, o->store, count, &nf, &w->tri2, &w->t2cap, err);
 	if (r != MK_OK) return r;
@@ -116,13 +119,14 @@ static mkResult mkCSpaceJob_Boundary3(mkCSpaceJob *J, mkCSpaceWork *w, long b, i
 	return MK_OK;
 }
 
-/* Task (orientation, obstacle): its boundaries, errors and checksums. */
+/* Task (orientation, obstacle, part): its boundaries, errors and checksums. */
 static mkResult mkCSpaceJob_Task(void *ctx, mkCSpaceWork *w, long task)
 {
 	mkCSpaceJob *J = ctx;
 	const mkCSpace *cs = J->cs;
 	mkCSpaceResult *res = J->res;
-	int orel = (int)(task / cs->nob), i = (int)(task % cs->nob), ori = J->begin + orel;
+	int pj = (int)(task % cs->parts), i = (int)(task / cs->parts % cs->nob);
+	int orel = (int)(task / cs->parts / cs->nob), ori = J->begin + orel;
 	double t0 = mkCSpace_Now();
 	for (int k = 0; k < cs->bounds; ++k) {
 		long b = task * cs->bounds + k;
@@ -130,16 +134,16 @@ static mkResult mkCSpaceJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		double err = NAN, sum = 0.0, *p[3] = {NULL, NULL, NULL};
 		mkResult r;
 		if (cs->dim == 2) {
-			r = mkCSpaceJob_Boundary2(cs, w, ori, i, k, &count, &err);
+			r = mkCSpaceJob_Boundary2(cs, w, ori, i, pj, k, &count, &err);
 			p[0] = w->q[0]; p[1] = w->q[1];
 		} else {
-			r = mkCSpaceJob_Boundary3(J, w, b, ori, i, k, &count, &err, p);
+			r = mkCSpaceJob_Boundary3(J, w, b, ori, i, pj, k, &count, &err, p);
 		}
 		if (r != MK_OK) return r;
 		for (int j = 0; j < count; ++j) sum += p[0][j] + p[1][j] + (p[2] ? p[2][j] : 0.0);
 		if (cs->opt.store && (r = mkCSpaceJob_Store(res, b, p[0], p[1], p[2], count)) != MK_OK) return r;
 		res->count[b] = count;
-		res->model_error[b] = cs->obs_err[2 * i + k] + cs->robot_err[k];
+		res->model_error[b] = cs->obs_err[2 * i + k] + cs->part_err[2 * pj + k];
 		res->error[b] = cs->opt.mode == MK_CSPACE_PAPER ? NAN : err + res->model_error[b];
 		res->checksum[b] = sum;
 		res->seconds[b] = 0.0;
@@ -261,8 +265,9 @@ mkResult mkCSpace_Run(const mkCSpace *cs, int begin, int end, mkCSpaceResult *ou
 	mkCSpaceJob J;
 	memset(&J, 0, sizeof J);
 	J.cs = cs; J.begin = begin; J.nor = end - begin; J.res = out;
-	long nb = (long)cs->nob * J.nor * cs->bounds;
+	long nb = (long)cs->nob * cs->parts * J.nor * cs->bounds;
 	out->dim = cs->dim; out->obstacles = cs->nob; out->orientations = J.nor; out->bounds = cs->bounds;
+	out->parts = cs->parts;
 	out->orientation_begin = begin;
 	out->tol = cs->opt.tol;
 	out->interleaved = cs->opt.interleaved != 0;
@@ -271,7 +276,7 @@ mkResult mkCSpace_Run(const mkCSpace *cs, int begin, int end, mkCSpaceResult *ou
 	if (!mkCSpaceResult_Alloc(out, cs, nb) || (paper && mkCSpaceJob_PaperPlan(&J) != MK_OK)) {
 		r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	} else {
-		long ntasks = paper ? (long)cs->nob * J.nchunks : (long)cs->nob * J.nor;
+		long ntasks = paper ? (long)cs->nob * J.nchunks : (long)cs->nob * cs->parts * J.nor;
 		r = mkCSpacePool_Run(paper ? mkCSpaceJob_PaperTask : mkCSpaceJob_Task, &J, ntasks, cs->opt.threads);
 		if (r != MK_OK) mkFail(r, msg, msglen, "%s while computing boundaries", mkResult_Name(r));
 	}

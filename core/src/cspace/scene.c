@@ -221,6 +221,10 @@ void mkScene_Free(mkScene *s)
 {
 	if (!s) return;
 	free(s->obstacles);
+	free(s->parts);
+	free(s->obstacle_object);
+	free(s->objects);
+	free(s->queries);
 	free(s->headings);
 	free(s->rotations);
 	memset(s, 0, sizeof *s);
@@ -344,6 +348,172 @@ static mkResult mkScene_ParseQuaternions(mkScene *s, int *rcap, const char *arg,
 	}
 }
 
+/* The parser's state of robot, part, object and obstacle lines. */
+typedef struct mkSceneParser {
+	int ocap, pcap, jcap;
+	int robot_line, part_line;
+	int object, object_used;   /* the current `object` (-1: none) and whether an obstacle followed it */
+} mkSceneParser;
+
+/* A new object named name (line 0: an obstacle of its own); its index or -1 when out of memory. */
+static int mkScene_AddObject(mkScene *s, mkSceneParser *P, const char *name, int line)
+{
+	if (!mkScene_Grow((void **)&s->objects, &P->jcap, s->object_count + 1, sizeof *s->objects)) return -1;
+	mkSceneObject *o = &s->objects[s->object_count];
+	snprintf(o->name, sizeof o->name, "%s", name);
+	o->line = line;
+	return s->object_count++;
+}
+
+static mkResult mkScene_ParseObject(mkScene *s, mkSceneParser *P, const char *arg, int lineno, char *err, size_t errlen)
+{
+	size_t n = strlen(arg);
+	if (P->object >= 0 && !P->object_used)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "object '%s' (line %d) has no obstacle lines: an object is followed "
+			"by its obstacles", s->objects[P->object].name, s->objects[P->object].line);
+	int ok = n >= 1 && n < MK_SCENE_NAME_MAX;
+	for (size_t k = 0; ok && k < n; ++k) ok = isalnum((unsigned char)arg[k]) || strchr("_.-", arg[k]) != NULL;
+	if (!ok)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "object name '%.40s' is not allowed: must be 1 to %d characters of "
+			"A-Z, a-z, 0-9, _ . -", arg, MK_SCENE_NAME_MAX - 1);
+	for (int k = 0; k < s->object_count; ++k)
+		if (strcmp(s->objects[k].name, arg) == 0)
+			return s->objects[k].line
+				? mkFail(MK_ERR_ARGUMENT, err, errlen, "object '%s' is given twice (first on line %d): names must differ",
+					arg, s->objects[k].line)
+				: mkFail(MK_ERR_ARGUMENT, err, errlen, "object '%s' is the name of an obstacle of its own: names must "
+					"differ", arg);
+	if ((P->object = mkScene_AddObject(s, P, arg, lineno)) < 0) return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	P->object_used = 0;
+	return MK_OK;
+}
+
+/* A robot, part, object or obstacle line (kw says which) into s. */
+static mkResult mkScene_ParseBodyLine(mkScene *s, mkSceneParser *P, const char *kw, const char *arg, int lineno,
+	char *err, size_t errlen)
+{
+	char what[32];
+	if (strcmp(kw, "object") == 0) return mkScene_ParseObject(s, P, arg, lineno, err, errlen);
+	if (strcmp(kw, "robot") == 0 || strcmp(kw, "part") == 0) {
+		int part = kw[0] == 'p';
+		if (P->robot_line)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "%s: the robot is already given on line %d: a robot is one "
+				"'robot SPEC' line or one or more 'part SPEC' lines", kw, P->robot_line);
+		if (!part && P->part_line)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "robot: the robot's parts are given (first on line %d): a robot "
+				"is one 'robot SPEC' line or one or more 'part SPEC' lines", P->part_line);
+		if (s->part_count >= MK_SCENE_PARTS_MAX)
+			return mkFail(MK_ERR_RANGE, err, errlen, "more than %d robot parts", MK_SCENE_PARTS_MAX);
+		if (!mkScene_Grow((void **)&s->parts, &P->pcap, s->part_count + 1, sizeof *s->parts))
+			return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+		if (part) snprintf(what, sizeof what, "part%d", s->part_count);
+		else snprintf(what, sizeof what, "robot");
+		mkSceneBody *b = &s->parts[s->part_count];
+		mkResult r = mkSceneBody_Parse(arg, s->dim, what, b, err, errlen);
+		if (r != MK_OK) return r;
+		if (!part) { /* robot keeps the text; the part's position is the configuration's */
+			s->robot = *b;
+			if (s->dim == 2) b->spec.body2.t = mkVec2_Make(0.0, 0.0);
+			else b->spec.body3.t = mkVec3_Make(0.0, 0.0, 0.0);
+			P->robot_line = lineno;
+		} else if (!P->part_line) {
+			P->part_line = lineno;
+		}
+		++s->part_count;
+		return MK_OK;
+	}
+	snprintf(what, sizeof what, "obstacle%d", s->obstacle_count);
+	if (s->obstacle_count >= 100000000) return mkFail(MK_ERR_RANGE, err, errlen, "more than 100000000 obstacles");
+	int cap = P->ocap;
+	if (!mkScene_Grow((void **)&s->obstacles, &P->ocap, s->obstacle_count + 1, sizeof *s->obstacles)
+		|| !mkScene_Grow((void **)&s->obstacle_object, &cap, s->obstacle_count + 1, sizeof *s->obstacle_object))
+		return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	mkResult r = mkSceneBody_Parse(arg, s->dim, what, &s->obstacles[s->obstacle_count], err, errlen);
+	if (r != MK_OK) return r;
+	int obj = P->object;
+	if (obj < 0 && (obj = mkScene_AddObject(s, P, what, 0)) < 0) return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	P->object_used = 1;
+	s->obstacle_object[s->obstacle_count++] = obj;
+	return MK_OK;
+}
+
+/* ---- planning problems ---- */
+
+/* A pose "x,y,theta" or "x,y,z,qw,qx,qy,qz" into p, in the bounds when known. */
+static mkResult mkScene_ParsePose(const mkScene *s, const char *kw, const char *arg, double *p, char *err, size_t errlen)
+{
+	int n = s->dim == 2 ? 3 : 7;
+	const char *form = s->dim == 2 ? "x,y,theta" : "x,y,z,qw,qx,qy,qz";
+	if (mkSpecKeys_Numbers(arg, strlen(arg), p, n) != n)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "%s = '%.60s' must be %d comma-separated numbers %s", kw, arg, n, form);
+	for (int k = 0; k < n; ++k)
+		if (!isfinite(p[k]) || fabs(p[k]) > 1e15)
+			return mkFail(MK_ERR_RANGE, err, errlen, "%s[%d] = %g is out of range: must be a finite number of magnitude at "
+				"most 1e15", kw, k + 1, p[k]);
+	if (s->dim == 3 && p[3] == 0.0 && p[4] == 0.0 && p[5] == 0.0 && p[6] == 0.0)
+		return mkFail(MK_ERR_RANGE, err, errlen, "%s: the quaternion qw,qx,qy,qz = 0,0,0,0 is out of range: must be nonzero", kw);
+	return MK_OK;
+}
+
+/* The position of pose p is in the bounds: 1, or 0 with the message. */
+static int mkScene_InBounds(const mkScene *s, const char *kw, const double *p, char *err, size_t errlen)
+{
+	static const char axis[3] = {'x', 'y', 'z'};
+	for (int d = 0; d < s->dim; ++d)
+		if (!(p[d] >= s->bounds_lo[d] && p[d] <= s->bounds_hi[d])) {
+			mkFail(MK_ERR_RANGE, err, errlen, "%s.%c = %g is out of range: must be in the bounds [%g, %g] (line %d)", kw,
+				axis[d], p[d], s->bounds_lo[d], s->bounds_hi[d], s->bounds_line);
+			return 0;
+		}
+	return 1;
+}
+
+/* bounds, start and goal lines. *start: the last start (NULL before one). */
+static mkResult mkScene_ParsePlanLine(mkScene *s, int *qcap, double *start, int *start_line, const char *kw,
+	const char *arg, int lineno, char *err, size_t errlen)
+{
+	if (strcmp(kw, "bounds") == 0) {
+		double v[6];
+		int n = 2 * s->dim;
+		if (s->bounds_line) return mkFail(MK_ERR_ARGUMENT, err, errlen, "bounds are given twice (first on line %d)", s->bounds_line);
+		if (s->query_count || *start_line)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "bounds must come before the first start and goal");
+		if (mkSpecKeys_Numbers(arg, strlen(arg), v, n) != n)
+			return mkFail(MK_ERR_ARGUMENT, err, errlen, "bounds = '%.60s' must be %d comma-separated numbers %s", arg, n,
+				s->dim == 2 ? "xlo,xhi,ylo,yhi" : "xlo,xhi,ylo,yhi,zlo,zhi");
+		for (int d = 0; d < s->dim; ++d) {
+			if (!(isfinite(v[2 * d]) && isfinite(v[2 * d + 1]) && v[2 * d] < v[2 * d + 1] && fabs(v[2 * d]) <= 1e15
+				&& fabs(v[2 * d + 1]) <= 1e15))
+				return mkFail(MK_ERR_RANGE, err, errlen, "bounds[%d..%d] = %g,%g is out of range: must be finite, lo < hi, "
+					"magnitude at most 1e15", 2 * d + 1, 2 * d + 2, v[2 * d], v[2 * d + 1]);
+			s->bounds_lo[d] = v[2 * d];
+			s->bounds_hi[d] = v[2 * d + 1];
+		}
+		s->bounds_line = lineno;
+		return MK_OK;
+	}
+	if (!s->bounds_line)
+		return mkFail(MK_ERR_ARGUMENT, err, errlen, "%s before bounds: a planning scene gives 'bounds' first", kw);
+	double p[7] = {0, 0, 0, 0, 0, 0, 0};
+	mkResult r = mkScene_ParsePose(s, kw, arg, p, err, errlen);
+	if (r != MK_OK) return r;
+	if (!mkScene_InBounds(s, kw, p, err, errlen)) return MK_ERR_RANGE;
+	if (kw[0] == 's') {
+		memcpy(start, p, sizeof p);
+		*start_line = lineno;
+		return MK_OK;
+	}
+	if (!*start_line) return mkFail(MK_ERR_ARGUMENT, err, errlen, "goal without a start: a 'start POSE' line comes first");
+	if (!mkScene_Grow((void **)&s->queries, qcap, s->query_count + 1, sizeof *s->queries))
+		return mkFail(MK_ERR_MEMORY, err, errlen, "out of memory");
+	mkScenePlanQuery *q = &s->queries[s->query_count++];
+	memcpy(q->start, start, sizeof q->start);
+	memcpy(q->goal, p, sizeof q->goal);
+	q->start_line = *start_line;
+	q->goal_line = lineno;
+	return MK_OK;
+}
+
 mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 {
 	if (!out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no scene");
@@ -353,11 +523,15 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 	if (!line) return mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	mkScene s;
 	memset(&s, 0, sizeof s);
-	int ocap = 0, hcap = 0, rcap = 0, robot_line = 0, orient_line = 0;
+	int hcap = 0, rcap = 0, orient_line = 0;
+	mkSceneParser P;
+	memset(&P, 0, sizeof P);
+	P.object = -1;
+	int qcap = 0, start_line = 0;
+	double start[7];
 	int lineno = 0, too_long = 0;
 	const char *cur = text;
 	mkResult r = MK_OK;
-	char sub[900];
 #define BAD(code, ...) do { r = (code); char b_[1024]; snprintf(b_, sizeof b_, __VA_ARGS__); \
 	mkFail(r, msg, msglen, "line %d: %s", lineno, b_); goto done; } while (0)
 	while (mkScene_NextLine(&cur, line, MK_SCENE_LINE_MAX, &too_long)) {
@@ -381,20 +555,17 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 			BAD(MK_ERR_ARGUMENT, "'%.*s' needs a value", (int)(kl > 40 ? 40 : kl), line);
 		if (KW("dim")) {
 			BAD(MK_ERR_ARGUMENT, "dim is given twice (first line only)");
-		} else if (KW("robot")) {
-			if (robot_line) BAD(MK_ERR_ARGUMENT, "robot is given twice (first on line %d): a scene has one robot", robot_line);
-			robot_line = lineno;
-			if (mkSceneBody_Parse(arg, s.dim, "robot", &s.robot, sub, sizeof sub) != MK_OK)
-				BAD(MK_ERR_RANGE, "%s", sub);
-		} else if (KW("obstacle")) {
-			char what[32];
-			snprintf(what, sizeof what, "obstacle%d", s.obstacle_count);
-			if (s.obstacle_count >= 100000000) BAD(MK_ERR_RANGE, "more than 100000000 obstacles");
-			if (!mkScene_Grow((void **)&s.obstacles, &ocap, s.obstacle_count + 1, sizeof *s.obstacles))
-				BAD(MK_ERR_MEMORY, "out of memory");
-			mkResult br = mkSceneBody_Parse(arg, s.dim, what, &s.obstacles[s.obstacle_count], sub, sizeof sub);
-			if (br != MK_OK) BAD(br, "%s", sub);
-			++s.obstacle_count;
+		} else if (KW("robot") || KW("part") || KW("object") || KW("obstacle")) {
+			char kw[16];
+			snprintf(kw, sizeof kw, "%.*s", (int)kl, line);
+			char err[1024];
+			mkResult br = mkScene_ParseBodyLine(&s, &P, kw, arg, lineno, err, sizeof err);
+			if (br != MK_OK) BAD(br, "%s", err);
+		} else if (KW("bounds") || KW("start") || KW("goal")) {
+			char kw[16], err[1024];
+			snprintf(kw, sizeof kw, "%.*s", (int)kl, line);
+			mkResult pr = mkScene_ParsePlanLine(&s, &qcap, start, &start_line, kw, arg, lineno, err, sizeof err);
+			if (pr != MK_OK) BAD(pr, "%s", err);
 		} else if (KW("headings") || KW("quaternions") || KW("rotations")) {
 			const char *kw = KW("headings") ? "headings" : KW("quaternions") ? "quaternions" : "rotations";
 			if (s.dim == 2 && !KW("headings"))
@@ -415,14 +586,22 @@ mkResult mkScene_Parse(const char *text, mkScene *out, char *msg, size_t msglen)
 				s.rotations_line = lineno;
 			}
 		} else {
-			BAD(MK_ERR_ARGUMENT, "unknown keyword '%.*s': must be one of dim, robot, obstacle, %s",
+			BAD(MK_ERR_ARGUMENT, "unknown keyword '%.*s': must be one of dim, robot, part, object, obstacle, bounds, start, goal, %s",
 				(int)(kl > 40 ? 40 : kl), line, s.dim == 2 ? "headings" : "quaternions, rotations");
 		}
 #undef KW
 	}
 	if (!s.dim) BAD(MK_ERR_ARGUMENT, "empty scene: the first line must be 'dim 2' or 'dim 3'");
-	if (!robot_line) BAD(MK_ERR_ARGUMENT, "no robot: a scene needs one line 'robot SPEC'");
-	if (!orient_line)
+	if (!s.part_count) BAD(MK_ERR_ARGUMENT, "no robot: a scene needs one line 'robot SPEC' or 'part SPEC' lines");
+	if (P.object >= 0 && !P.object_used)
+		BAD(MK_ERR_ARGUMENT, "object '%s' (line %d) has no obstacle lines: an object is followed by its obstacles",
+			s.objects[P.object].name, s.objects[P.object].line);
+	if (!P.robot_line) s.robot = s.parts[0];
+	if (start_line && (!s.query_count || s.queries[s.query_count - 1].start_line != start_line)) {
+		lineno = start_line;
+		BAD(MK_ERR_ARGUMENT, "start without a goal: a 'goal POSE' line follows each start");
+	}
+	if (!orient_line && !s.query_count)
 		BAD(MK_ERR_ARGUMENT, "no orientations: %s", s.dim == 2 ? "a 2D scene needs 'headings N' or 'headings a1,a2,...'"
 			: "a 3D scene needs 'quaternions w,x,y,z;...' or 'rotations FILE'");
 #undef BAD

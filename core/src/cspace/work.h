@@ -106,12 +106,15 @@ int mkHull3_Build(mkCSpaceWork *w, int n, int **faces, int *fcap);
 struct mkCSpace {
 	const mkScene *scene;
 	mkCSpaceOptions opt;
-	int dim, nob, bounds;
-	/* models: [bound] for the robot, [i * 2 + bound] for obstacles */
-	mkBody2 robot2[2], *obs2;
-	mkBody3 robot3[2], *obs3;
-	double robot_err[2], *obs_err;
+	int dim, nob, bounds, parts;
+	/* models: [bound] for the robot (part 0), [j * 2 + bound] for part j,
+	 * [i * 2 + bound] for obstacles */
+	mkBody2 robot2[2], *obs2, *part2;
+	mkBody3 robot3[2], *obs3, *part3;
+	double robot_err[2], *obs_err, *part_err;
 	char robot_name[128];
+	char (*part_name)[128];   /* per part */
+	const mkSceneBody *part_body;  /* the scene's parts, or its robot when part_count is 0 */
 	char (*model_name)[128];  /* per obstacle */
 	double *paper_u[3];       /* paper mode: B1's surface parameters */
 	int paper_n;

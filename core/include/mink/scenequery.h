@@ -1,0 +1,145 @@
+/* mink/scenequery.h - a robot (one body or several parts) at given poses
+ * against a scene's obstacles: free / colliding, the nearest obstacle and a
+ * certified lower bound of the clearance, per pose, on every core.
+ *
+ * A pose is 2D (x, y, theta): the robot's position and heading; 3D
+ * (x, y, z, qw, qx, qy, qz): its position and orientation as a quaternion
+ * (normalised here). Part j of the robot (mink/scene.h) is then the body
+ * c + R t_j + R M_j B_j.
+ *
+ * Broad phase: a bounding volume hierarchy of the obstacles' exact
+ * axis-aligned boxes (from the closed-form support function at +-e_i),
+ * built once by median splits; each part's exact box at the pose walks it
+ * nearest first, pruning every node whose box is no nearer than the best
+ * clearance found. Narrow phase: mkCollide3_Normal on the pair (2D bodies
+ * enter as superquadrics whose z = 0 section is the superellipse, eps1 = 1:
+ * both are symmetric about z = 0, so the distance of separated pairs is the
+ * 2D distance, and overlapping sections overlap in 3D).
+ *
+ * Certificates (the declared shapes): a box or cylinder is replaced by its
+ * outer model (which contains it, mink/scene.h) to certify freedom and by
+ * its inner model (inside it) to certify contact. A pair is
+ *  - free when the support-function bound f(n) of the outer models at the
+ *    solver's answer, less a rounding allowance of 1e-12 of the pair's size,
+ *    is positive: it is then a lower bound of the pair's distance;
+ *  - colliding when the inner models (the declared shapes for smooth
+ *    bodies) overlap for certain: a point inside both (the centres, their
+ *    midpoint or the solver's witnesses' midpoint, by the implicit
+ *    functions with a margin of 1e-9), or the solver's certified bracket
+ *    of their signed distance below minus the allowance;
+ *  - uncertain otherwise (touching within the allowance and the model
+ *    error, or a solver that did not converge), never reported free.
+ * A pose is colliding when some pair is (the search stops at the first
+ * colliding pair found), else uncertain when some pair is, else free, with
+ * clearance the smallest lower bound over all pairs, capped at
+ * max_clearance.
+ *
+ * Threads: poses are independent; each is computed the same way by
+ * whichever thread, so the answers do not depend on the thread count.
+ * Memory: mkSceneQuery_Create allocates the prepared query
+ * (mkSceneQuery_Destroy); the answers go into the caller's array. */
+#ifndef MINK_SCENEQUERY_H
+#define MINK_SCENEQUERY_H
+
+#include "scene.h"
+
+MK_EXTERN_C_BEGIN
+
+typedef enum mkPoseStatus {
+	MK_POSE_FREE = 0,
+	MK_POSE_COLLIDING = 1,
+	MK_POSE_UNCERTAIN = 2
+} mkPoseStatus;
+
+/* "free", "colliding", "uncertain". */
+MK_API const char *mkPoseStatus_Name(mkPoseStatus s);
+
+typedef struct mkSceneQueryOptions {
+	int threads;          /* >= 1 */
+	double model_rel;     /* boxes and cylinders: model error as a fraction of the body's reach, in [1e-6, 0.1] */
+	double max_clearance; /* > 0: clearances beyond it are reported as max_clearance (INFINITY: exact nearest) */
+} mkSceneQueryOptions;
+
+/* 1 thread, model_rel 1e-4, max_clearance INFINITY. */
+MK_API mkSceneQueryOptions mkSceneQueryOptions_Default(void);
+
+typedef struct mkPoseAnswer {
+	mkPoseStatus status;
+	int obstacle;     /* free: the nearest obstacle; colliding: one in contact; -1: none nearer than max_clearance */
+	int part;         /* the robot part of that pair; -1 with obstacle */
+	double clearance; /* free: certified lower bound of the distance from the robot to every obstacle (capped);
+	                   * colliding: a lower bound of that pair's signed distance (<= 0); uncertain: the smallest
+	                   * lower bound found (<= 0, -inf when a solver failed) */
+	int pairs;        /* narrow-phase pairs computed */
+} mkPoseAnswer;
+
+typedef struct mkSceneQuery mkSceneQuery;
+
+/* Prepare the scene's obstacles (models, boxes, hierarchy) and robot parts.
+ * The scene must outlive the query. Fails with MK_ERR_ARGUMENT on bad
+ * options (message names the field and range), MK_ERR_RANGE when a model
+ * cannot be made ("obstacle I: ..."), MK_ERR_MEMORY. */
+MK_API mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *opt, mkSceneQuery **out,
+	char *msg, size_t msglen);
+MK_API void mkSceneQuery_Destroy(mkSceneQuery *q);
+
+/* Values per pose: 3 in 2D (x, y, theta), 7 in 3D (x, y, z, qw, qx, qy, qz). */
+MK_API int mkSceneQuery_PoseSize(const mkSceneQuery *q);
+
+/* One pose on the calling thread (no allocation): MK_OK, or MK_ERR_ARGUMENT
+ * for a non-finite pose or a zero quaternion. */
+MK_API mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnswer *out);
+
+/* n poses (pose k at poses + k * PoseSize) on the options' threads into
+ * out[0 .. n). Fails with MK_ERR_ARGUMENT naming the first bad pose. */
+MK_API mkResult mkSceneQuery_Run(const mkSceneQuery *q, const double *poses, long n, mkPoseAnswer *out,
+	char *msg, size_t msglen);
+
+/* The body of robot part j at a pose (3D form; a 2D part as the
+ * superquadric described above) with its inner (bound 0) or outer (1) model:
+ * what the narrow phase uses. 0 on a bad pose or part. */
+MK_API int mkSceneQuery_PartBody(const mkSceneQuery *q, const double *pose, int j, int bound, mkBody3 *out);
+/* Obstacle i's body likewise. */
+MK_API int mkSceneQuery_ObstacleBody(const mkSceneQuery *q, int i, int bound, mkBody3 *out);
+
+/* ---- motions -------------------------------------------------------------
+ * The motion from pose a to pose b moves the position linearly and the
+ * rotation at constant angular velocity along the shorter way (2D: the
+ * heading by the wrapped difference in [-pi, pi]; 3D: slerp between the
+ * unit quaternions, the nearer of q and -q), as OMPL's SE2 and SE3 state
+ * spaces interpolate. Pose a(t), t in [0, 1]. */
+MK_API void mkSceneQuery_Interpolate(const mkSceneQuery *q, const double *a, const double *b, double t, double *out);
+
+/* An upper bound of the distance of every robot point from the robot's
+ * origin (over the parts' outer models). */
+MK_API double mkSceneQuery_RobotRadius(const mkSceneQuery *q);
+
+typedef struct mkMotionAnswer {
+	mkPoseStatus status;   /* free: clearance >= margin certified on all of [0, 1]; colliding: a certified
+	                        * contact at contact_time; uncertain: neither */
+	double clearance;      /* a certified lower bound of the clearance on [0, free_until] */
+	double free_until;     /* the motion is certified to keep clearance >= margin on [0, free_until] */
+	double contact_time;   /* colliding: the first pose found in contact (the first contact is in
+	                        * [free_until, contact_time]); NaN otherwise */
+	int obstacle, part;    /* colliding: the pair in contact; otherwise the nearest pair at the last pose */
+	int poses;             /* poses checked */
+} mkMotionAnswer;
+
+/* Certify the motion a -> b by conservative advancement, never by sampling
+ * it at a resolution: at time t the pose's certified clearance c(t) (a
+ * lower bound) and the bound L = |b_pos - a_pos| + r * angle on how far any
+ * robot point moves per unit of t (r = mkSceneQuery_RobotRadius, angle the
+ * total rotation) give a step dt = (c(t) - margin) / (2 L) on which the
+ * clearance stays at least (c(t) + margin) / 2 > margin. The walk stops at
+ * t = 1 (free), or when c(t) - margin falls below 1e-9 of the robot's
+ * radius plus the motion's length or after max_poses poses: then a pose in
+ * contact at t, or a contact found among 1000 poses evenly spaced on
+ * [t, 1], makes the motion colliding (a witness, never a certificate of
+ * freedom); else it is uncertain. margin >= 0. Returns MK_ERR_ARGUMENT on
+ * a bad pose or margin (out->status uncertain). */
+MK_API mkResult mkSceneQuery_Motion(const mkSceneQuery *q, const double *a, const double *b, double margin,
+	long max_poses, mkMotionAnswer *out);
+
+MK_EXTERN_C_END
+
+#endif

@@ -1,0 +1,154 @@
+/* test_plan.c - every path mink_plan returns (several planners,
+ * 2D and 3D robots of several parts) is certified free segment by segment
+ * by the motion check, and passes an independent dense check: at 401 poses
+ * per segment, every robot part against every obstacle by the registry's
+ * referee (collider_referee.c, Gilbert's iteration on the support maps: a
+ * certified lower bound of each pair's signed distance), each bound
+ * positive and at least the segment's reported clearance. The bodies of
+ * the dense check are placed here from the scene's declared shapes, 2D
+ * ones as the superquadric whose z = 0 section they are (docs/scene.md). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <mink/cspace.h>
+#include <mink/colliders.h>
+#include <mink_plan/plan.h>
+
+#include "ensure.h"
+
+static const char *scene2 =
+	"dim 2\npart superellipse a=1 b=0.3 eps=0.1\npart circle a=0.4 at=1.2,0\n"
+	"object walls\nobstacle superellipse a=10 b=0.5 eps=0.05 at=0,-10\nobstacle superellipse a=10 b=0.5 eps=0.05 at=0,10\n"
+	"obstacle superellipse a=0.5 b=10 eps=0.05 at=-10,0\nobstacle superellipse a=0.5 b=10 eps=0.05 at=10,0\n"
+	"object divider\nobstacle superellipse a=7 b=0.5 eps=0.1 at=-3,0\nobstacle ellipse a=1 b=2 rot=0.3 at=5,5\n"
+	"bounds -9,9,-9,9\nstart -6,-6,0\ngoal -6,6,1.57\ngoal 6,-6,0\n";
+
+static const char *scene3 =
+	"dim 3\npart superquadric a=0.8 b=0.4 c=0.3 eps1=0.2 eps2=0.2\npart sphere a=0.35 at=1.0,0,0.2\n"
+	"obstacle superquadric a=4 b=4 c=0.3 eps1=0.1 eps2=0.1 at=0,0,0\nobstacle ellipsoid a=1 b=1.5 c=2 at=-3,-3,3\n"
+	"obstacle sphere a=1.2 at=3,-3,-2\nobstacle superquadric a=1 b=1 c=3 eps1=0.5 eps2=1.5 at=-2,3,2\n"
+	"bounds -6,6,-6,6,-6,6\nstart -2,-2,-3,1,0,0,0\ngoal 2,2,3,0.7,0.7,0,0\n";
+
+static mkBody3 lift(const mkSceneBody *b)
+{
+	if (b->dim == 3) return b->spec.body3;
+	mkBody2 c = b->spec.body2;
+	mkShape3 s = {c.shape.a, c.shape.b, 1.0, 1.0, c.shape.eps};
+	mkMat3 M = {{{c.M.m[0][0], c.M.m[0][1], 0}, {c.M.m[1][0], c.M.m[1][1], 0}, {0, 0, 1}}};
+	return mkBody3_Make(s, M, mkVec3_Make(c.t.x, c.t.y, 0));
+}
+
+/* The smallest referee bound over (part, obstacle) pairs at pose p. */
+static double dense_pose(const mkScene *s, const double *p, mkColliderScratch *scratch)
+{
+	const mkCollider *ref = mkColliders_Find("referee");
+	mkMat3 R;
+	mkVec3 c;
+	if (s->dim == 2) {
+		mkMat3 r = {{{cos(p[2]), -sin(p[2]), 0}, {sin(p[2]), cos(p[2]), 0}, {0, 0, 1}}};
+		R = r;
+		c = mkVec3_Make(p[0], p[1], 0);
+	} else {
+		R = mkMat3_FromQuat(p[3], p[4], p[5], p[6]);
+		c = mkVec3_Make(p[0], p[1], p[2]);
+	}
+	double lo = INFINITY;
+	for (int j = 0; j < s->part_count; ++j) {
+		mkBody3 part = lift(&s->parts[j]);
+		part.t = mkVec3_Add(c, mkMat3_MulVec(R, part.t));
+		part.M = mkMat3_Mul(R, part.M);
+		for (int i = 0; i < s->obstacle_count; ++i) {
+			mkCollision3 col;
+			if (mkCollider_Run(ref, lift(&s->obstacles[i]), part, scratch, &col) != MK_OK) return -INFINITY;
+			lo = fmin(lo, col.distance);
+		}
+	}
+	return lo;
+}
+
+/* Plan every query of the scene with the planner; check each path. */
+static void check_scene(const char *text, const char *planner, int *paths, int *bad)
+{
+	mkScene s;
+	char msg[1024];
+	ENSURE(mkScene_Parse(text, &s, msg, sizeof msg) == MK_OK);
+	mkSceneQueryOptions qo = mkSceneQueryOptions_Default();
+	mkSceneQuery *q = NULL;
+	ENSURE(mkSceneQuery_Create(&s, &qo, &q, msg, sizeof msg) == MK_OK);
+	mkPlanOptions o = mkPlanOptions_Default();
+	o.planner = planner;
+	o.time = 20.0;   /* these planners stop at their first path: the budget only bounds a loaded machine's wait */
+	mkColliderScratch scratch;
+	int ps = mkSceneQuery_PoseSize(q);
+	for (int k = 0; k < s.query_count; ++k) {
+		mkPlanPath p;
+		int rc = mkPlan_Solve(&s, q, k, &o, &p, msg, sizeof msg);
+		ENSURE(rc == 0);
+		if (rc) { fprintf(stderr, "  %s query %d: %s\n", planner, k, msg); continue; }
+		++*paths;
+		for (int d = 0; d < s.dim; ++d) { /* from the start's position to the goal's */
+			ENSURE(p.poses[d] == s.queries[k].start[d]);
+			ENSURE(p.poses[(long)(p.count - 1) * ps + d] == s.queries[k].goal[d]);
+		}
+		for (int i = 0; i + 1 < p.count; ++i) {
+			const double *a = p.poses + (long)i * ps, *b = a + ps;
+			mkMotionAnswer m;
+			ENSURE(mkSceneQuery_Motion(q, a, b, 0.0, 1000000, &m) == MK_OK);
+			ENSURE(m.status == MK_POSE_FREE);
+			double worst = INFINITY, pose[7];
+			for (int t = 0; t <= 400; ++t) {
+				mkSceneQuery_Interpolate(q, a, b, t / 400.0, pose);
+				worst = fmin(worst, dense_pose(&s, pose, &scratch));
+			}
+			if (!(worst > 0.0) || !(worst >= p.clearance[i] - 1e-9)) {
+				++*bad;
+				fprintf(stderr, "  %s query %d segment %d: dense minimum %.17g, certified clearance %.17g\n", planner, k, i,
+					worst, p.clearance[i]);
+			}
+		}
+		mkPlanPath_Free(&p);
+	}
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+}
+
+int main(void)
+{
+	static const char *planners[] = {"RRTConnect", "PRM", "KPIECE1", "RRT"};
+	int paths = 0, bad = 0;
+	for (int d = 0; d < 2; ++d)
+		for (int k = 0; k < 4; ++k) check_scene(d == 0 ? scene2 : scene3, planners[k], &paths, &bad);
+	ENSURE(bad == 0);
+	ENSURE(paths == 4 * 3);
+	printf("%d paths of 4 planners (2D and 3D robots of 2 parts): %d segments fail the dense referee check\n", paths, bad);
+	/* bad input: a start in collision names its line */
+	mkScene s;
+	char msg[1024];
+	ENSURE(mkScene_Parse("dim 2\nrobot circle a=1\nobstacle circle a=1\nbounds -5,5,-5,5\nstart 0.5,0,0\ngoal 3,3,0\n", &s,
+		msg, sizeof msg) == MK_OK);
+	mkSceneQueryOptions qo = mkSceneQueryOptions_Default();
+	mkSceneQuery *q = NULL;
+	ENSURE(mkSceneQuery_Create(&s, &qo, &q, msg, sizeof msg) == MK_OK);
+	mkPlanOptions o = mkPlanOptions_Default();
+	mkPlanPath p;
+	ENSURE(mkPlan_Solve(&s, q, 0, &o, &p, msg, sizeof msg) == 2);
+	ENSURE(strstr(msg, "line 5: start is in collision") != NULL);
+	o.planner = "NoSuchPlanner";
+	ENSURE(mkPlan_Solve(&s, q, 0, &o, &p, msg, sizeof msg) == 2);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+	/* no path: the goal sealed in a ring of obstacles */
+	ENSURE(mkScene_Parse("dim 2\nrobot circle a=0.5\nobstacle superellipse a=3 b=0.3 eps=0.1 at=0,2\nobstacle superellipse "
+		"a=3 b=0.3 eps=0.1 at=0,-2\nobstacle superellipse a=0.3 b=3 eps=0.1 at=2,0\nobstacle superellipse a=0.3 b=3 eps=0.1 "
+		"at=-2,0\nbounds -8,8,-8,8\nstart -6,-6,0\ngoal 0,0,0\n", &s, msg, sizeof msg) == MK_OK);
+	ENSURE(mkSceneQuery_Create(&s, &qo, &q, msg, sizeof msg) == MK_OK);
+	o = mkPlanOptions_Default();
+	o.time = 0.2;
+	ENSURE(mkPlan_Solve(&s, q, 0, &o, &p, msg, sizeof msg) == 1);
+	ENSURE(strstr(msg, "no path found") != NULL);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+	return mk_summary("test_plan");
+}
