@@ -15,6 +15,9 @@ const char *const mkTradeoff_Columns[] = { "dim", "case", "method", "set", "n", 
 enum { MK_SAMPLING_NORMAL = 0, MK_SAMPLING_SPACED = 1, MK_SAMPLINGS = 2 };
 static const char *const mkSamplingNames[MK_SAMPLINGS] = { "closed-normal@normal-angles", "closed-normal@spaced" };
 
+static int mkCurves(void);
+static const char *mkCurveName(int curve);
+
 void mkTradeoffOptions_Default(mkTradeoffOptions *o)
 {
 	static const int l2[] = { 8, 32, 128, 512, 2048, 8192, 32768, 65536 };
@@ -30,6 +33,8 @@ void mkTradeoffOptions_Default(mkTradeoffOptions *o)
 	o->budget = 1.0;
 	o->repeats = 5;
 	o->threads = 2;
+	for (int i = 0; i < MK_TRADEOFF_CURVES_MAX; ++i)
+		o->curve_on[i] = 1;
 }
 
 int mkTradeoff_ParseLevels(void *options, const char *text, char *msg, size_t msglen)
@@ -74,6 +79,13 @@ void mkTradeoff_Start(mkTradeoffOptions *o, const mkRun *run, int dims, mkMeta *
 			len += (size_t)snprintf(text + len, sizeof text - len, "%s%d", l ? "," : "", o->level[dim][l]);
 		mkMeta_Set(meta, dim == 2 ? "levels_2d" : "levels_3d", o->dim_on[dim] ? text : "off");
 	}
+	char on[2048];
+	size_t len = 0;
+	on[0] = '\0';
+	for (int i = 0; i < mkCurves() && len < sizeof on; ++i)
+		if (o->curve_on[i])
+			len += (size_t)snprintf(on + len, sizeof on - len, "%s%s", len ? "," : "", mkCurveName(i));
+	mkMeta_Set(meta, "methods", on);
 	mkMeta_SetDouble(meta, "budget_seconds", o->budget);
 	mkMeta_SetInt(meta, "repeats", o->repeats);
 	mkMeta_SetInt(meta, "threads", o->threads);
@@ -173,13 +185,23 @@ static void mkNotes_Add(mkNotes *n, int dim, int c, const char *method, const ch
 
 static int mkCurves(void)
 {
-	return mkRegistry_Count() + MK_SAMPLINGS;
+	int n = mkRegistry_Count() + MK_SAMPLINGS;
+	return n < MK_TRADEOFF_CURVES_MAX ? n : MK_TRADEOFF_CURVES_MAX;
 }
 
 static const char *mkCurveName(int curve)
 {
 	int r = mkRegistry_Count();
 	return curve < r ? mkRegistry_At(curve)->name : mkSamplingNames[curve - r];
+}
+
+int mkTradeoff_ParseMethods(void *on, const char *text, char *msg, size_t msglen)
+{
+	const char *names[MK_TRADEOFF_CURVES_MAX];
+	int n = mkCurves();
+	for (int i = 0; i < n; ++i)
+		names[i] = mkCurveName(i);
+	return mkArg_NameList(text, names, n, (int *)on, msg, msglen);
 }
 
 /* One call of curve `curve` on pair k at level n into out. */
@@ -399,6 +421,8 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 	mkCsv *csv, mkNotes *skipped, mkNotes *cut)
 {
 	const char *name = mkCurveName(curve);
+	if (!o->curve_on[curve])
+		return 0;
 	if (curve < mkRegistry_Count() && !(mkRegistry_At(curve)->flags & (p->dim == 2 ? MK_METHOD_2D : MK_METHOD_3D)))
 		return 0;
 	size_t np = (size_t)p->count;
