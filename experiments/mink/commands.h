@@ -10,5 +10,6 @@ int mkCmd_Scene(int argc, char **argv);
 int mkCmd_Methods(int argc, char **argv);
 int mkCmd_Verify(int argc, char **argv);
 int mkCmd_Collide(int argc, char **argv);
+int mkCmd_Score(int argc, char **argv);
 
 #endif
