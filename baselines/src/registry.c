@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include <mink/baselines.h>
+#include <mink/external.h>
 #include <mink/registry.h>
 
 #include "registry_internal.h"
@@ -197,12 +198,12 @@ enum { COUNT = (int)(sizeof table / sizeof table[0]) };
 
 int mkRegistry_Count(void)
 {
-	return COUNT;
+	return COUNT + mkExternal_Count();
 }
 
 const mkMethod *mkRegistry_At(int i)
 {
-	return i >= 0 && i < COUNT ? table[i].method : NULL;
+	return i >= 0 && i < COUNT ? table[i].method : mkExternal_At(i - COUNT);
 }
 
 int mkRegistry_Names(const char **names, int max)
@@ -216,9 +217,36 @@ int mkRegistry_Names(const char **names, int max)
 const mkMethod *mkRegistry_Find(const char *name)
 {
 	if (!name) return NULL;
-	for (int i = 0; i < COUNT; ++i)
-		if (strcmp(table[i].method->name, name) == 0) return table[i].method;
+	for (int i = 0; i < mkRegistry_Count(); ++i)
+		if (strcmp(mkRegistry_At(i)->name, name) == 0) return mkRegistry_At(i);
+	if (strncmp(name, "exec:", 5) == 0) return mkExternal_Find(name, NULL, 0);
 	return NULL;
+}
+
+int mkRegistry_Resolve(const char *list, char *out, size_t outlen, char *msg, size_t msglen)
+{
+	size_t used = 0;
+	if (!list || !out || outlen == 0) return mkRefuse(msg, msglen, "no list given");
+	out[0] = '\0';
+	for (const char *p = list; *p;) {
+		size_t len = strcspn(p, ",");
+		char item[1024];
+		if (len >= sizeof item) return mkRefuse(msg, msglen, "an item of the list is too long");
+		memcpy(item, p, len);
+		item[len] = '\0';
+		const char *name = item;
+		if (strncmp(item, "exec:", 5) == 0) {
+			const mkMethod *m = mkExternal_Find(item, msg, msglen);
+			if (!m) return 0;
+			name = m->name;
+		}
+		int w = snprintf(out + used, outlen - used, "%s%s", used ? "," : "", name);
+		if (w < 0 || (size_t)w >= outlen - used) return mkRefuse(msg, msglen, "the list is too long");
+		used += (size_t)w;
+		p += len;
+		if (*p == ',') ++p;
+	}
+	return 1;
 }
 
 static int runs_in(const mkMethod *m, int dim)
@@ -244,7 +272,7 @@ mkMethodIndexing mkMethod_Indexing(const mkMethod *m)
 {
 	const mkRegistry_Entry *e = mkRegistry_EntryOf(m);
 	if (e) return e->indexing;
-	return m && (m->flags & MK_METHOD_SAMPLED) ? MK_INDEX_UNORDERED : MK_INDEX_PARAMETER;
+	return m && ((m->flags & MK_METHOD_SAMPLED) || mkExternal_Is(m)) ? MK_INDEX_UNORDERED : MK_INDEX_PARAMETER;
 }
 
 int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)

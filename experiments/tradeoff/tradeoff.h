@@ -49,11 +49,12 @@
 #include <mink/mink.h>
 #include <mink/error.h>
 #include <mink/registry.h>
+#include <mink/external.h>
 #include <mink_exp/exp.h>
 
 /* The CSV's columns, ended by NULL, and their schema version. */
 extern const char *const mkTradeoff_Columns[];
-#define MK_TRADEOFF_SCHEMA 1
+#define MK_TRADEOFF_SCHEMA 2
 
 /* The cases, in run order, and their names in the `case` column. */
 enum { MK_TRADEOFF_EE = 0, MK_TRADEOFF_ES = 1, MK_TRADEOFF_SQ = 2, MK_TRADEOFF_CASES = 3 };

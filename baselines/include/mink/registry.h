@@ -66,8 +66,10 @@ MK_API mkResult mkPointSet_Resize(mkPointSet *set, int dim, int count);
 MK_API void mkPointSet_Free(mkPointSet *set);
 
 /* Number of registered methods, the i-th (NULL when i is out of range), and
- * the method of a given name (NULL if unknown). The table is static: the
- * pointers stay valid for the life of the program. */
+ * the method of a given name (NULL if unknown). The table's entries come
+ * first, then the external methods registered so far (mink/external.h): a
+ * name "exec:COMMAND" or "exec:NAME=COMMAND" given to mkRegistry_Find
+ * registers one. The pointers stay valid for the life of the program. */
 MK_API int mkRegistry_Count(void);
 MK_API const mkMethod *mkRegistry_At(int i);
 MK_API const mkMethod *mkRegistry_Find(const char *name);
@@ -83,8 +85,8 @@ typedef enum mkMethodIndexing {
 } mkMethodIndexing;
 
 /* The indexing method m declares in the table; for a method not in the
- * table, MK_INDEX_UNORDERED when it is MK_METHOD_SAMPLED and
- * MK_INDEX_PARAMETER otherwise. */
+ * table, MK_INDEX_UNORDERED when it is MK_METHOD_SAMPLED or external
+ * (mink/external.h) and MK_INDEX_PARAMETER otherwise. */
 MK_API mkMethodIndexing mkMethod_Indexing(const mkMethod *m);
 
 /* Accept every valid pair: the accept function of a method that takes any
@@ -100,6 +102,14 @@ MK_API int mkAcceptAny3(mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msg
 __attribute__((format(printf, 3, 4)))
 #endif
 MK_API int mkRefuse(char *msg, size_t msglen, const char *format, ...);
+
+/* A --methods list as drivers take it ("all", or comma-separated names,
+ * where an item "exec:COMMAND" or "exec:NAME=COMMAND" names an external
+ * method, mink/external.h) rewritten into out with every external item
+ * registered and replaced by its name, so that the list holds registry
+ * names only. Returns 1, or 0 and a message naming the item (an external
+ * method that cannot be registered, or out too small). */
+MK_API int mkRegistry_Resolve(const char *list, char *out, size_t outlen, char *msg, size_t msglen);
 
 /* Resolution limits. Closed forms: n >= 1 in 2D, n >= 2 in 3D (an n x n
  * grid with both poles). Sampled methods need n >= 3 per body (fewer samples

@@ -12,7 +12,7 @@ set(checked 0)
 foreach(want_dim 2 3)
   foreach(want closed-normal hull-qhull edge-sort closed-gradient hull-cgal-epick)
     foreach(row IN LISTS rows)
-      if(row MATCHES "^([23]),[A-Z]+,([^,]+),contact,([0-9]+),[0-9]+,[0-9]+,[^,]+,([^,]+),[^,]+,[^,]+,0,\"([^\"]+)\",\"([^\"]+)\"$"
+      if(row MATCHES "^([23]),[A-Z]+,([^,]+),contact,([0-9]+),[0-9]+,[0-9]+,[^,]+,([^,]+),[^,]+,[^,]+,0,\"([^\"]+)\",\"([^\"]+)\",ok$"
           AND CMAKE_MATCH_1 EQUAL want_dim AND CMAKE_MATCH_2 STREQUAL want)
         set(dim ${CMAKE_MATCH_1})
         set(n ${CMAKE_MATCH_3})
