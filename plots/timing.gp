@@ -31,8 +31,10 @@ set datafile columnheaders
 # the array mnames[1..nmeth] and to `ids` ("|name=11|name=12..."), from
 # which midx(s) reads a name's index + 10 in two fixed-width digits (up to 89
 # methods; never a leading 0, which real() would read as octal). A name must not contain "|" or "=". Key titles are the names
-# themselves, printed as they are (noenhanced); colours and point types
-# cycle through ten.
+# themselves, printed as they are (noenhanced); each method has its own
+# colour and marker (plots/methods.gp), and a panel's key lists only the
+# methods with data in it.
+load 'plots/methods.gp'
 found = "|"
 add_method(s) = strstrt(found, "|" . s . "|") > 0 ? 0 : (found = found . s . "|", 1)
 stats data using (add_method(strcol("method"))) nooutput
@@ -41,7 +43,7 @@ rest = found[2:]
 do for [i = 1:strlen(found)] {
 	if (strlen(rest) > 0) { nmeth = nmeth + 1; rest = rest[strstrt(rest, "|") + 1:] }
 }
-if (nmeth > 89) { print sprintf("timing.gp: %d methods; only the first 89 are drawn", nmeth); nmeth = 89 }
+if (nmeth > mk_styles) { print sprintf("timing.gp: %d methods; only the first %d are drawn", nmeth, mk_styles); nmeth = mk_styles }
 array mnames[nmeth > 0 ? nmeth : 1]
 ids = ""
 rest = found[2:]
@@ -52,8 +54,8 @@ do for [i = 1:nmeth] {
 }
 mpos(s) = strstrt(ids . "|", "|" . s . "=")
 midx(s) = mpos(s) > 0 ? int(real(ids[mpos(s) + strlen(s) + 2:mpos(s) + strlen(s) + 3])) - 10 : 0
-color_of(m) = word("#1b6ca8 #d1495b #edae49 #00798c #6a994e #8e7dbe #5fa8d3 #3d405b #f4845f #2a9d8f", (m - 1) % 10 + 1)
-pt_of(m) = word("7 5 9 11 13 15 7 5 9 11", (m - 1) % 10 + 1) + 0
+color_of(m) = mk_color(m)
+pt_of(m) = mk_pt(m)
 case_title(c) = c == 1 ? "EE: two ellipses / ellipsoids" : c == 2 ? \
 	"ES: superellipse / superquadric and ellipse / ellipsoid" : "SQ: two superellipses / superquadrics"
 

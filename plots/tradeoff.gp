@@ -4,7 +4,9 @@
 # call, over the pairs of each level, on log-log axes; one curve per
 # method found in the data (points joined in order of rising n), and the
 # Pareto front over all methods (no point both faster and more accurate)
-# as a thick grey staircase with open circles. The medians and the front
+# as a thick grey staircase with open circles. Each method has its own
+# colour and marker (plots/methods.gp); a panel's key lists only the
+# methods with points in it. The medians and the front
 # come from plots/tradeoff.awk; levels with a non-finite error are left out.
 # Writes <outdir>/tradeoff.pdf and tradeoff.png (`formats` changes that).
 #
@@ -28,9 +30,21 @@ set print $F
 print system(awk("front"))
 unset print
 
-color_of(m) = word("#1b6ca8 #d1495b #edae49 #00798c #6a994e #8e7dbe #5fa8d3 #3d405b #f4845f #2a9d8f #bc4749 #6d597a", (m - 1) % 12 + 1)
-pt_of(m) = word("7 5 9 11 13 15 7 5 9 11 13 15", (m - 1) % 12 + 1) + 0
 case_name(c) = word("EE ES SQ", c)
+load 'plots/methods.gp'
+if (nmeth > mk_styles) { print sprintf("tradeoff.gp: %d methods; only the first %d are drawn", nmeth, mk_styles); nmeth = mk_styles }
+color_of(m) = mk_color(m)
+pt_of(m) = mk_pt(m)
+# `present` holds "|dim case method|" for every (dim, case, method) with a
+# point, so that a panel's key lists only the methods drawn in it.
+present = "|"
+do for [i = 1:|$P|] {
+	if (words($P[i]) >= 6) {
+		entry = sprintf("%s %s %s", word($P[i], 1), word($P[i], 2), word($P[i], 3))
+		if (strstrt(present, "|" . entry . "|") == 0) { present = present . entry . "|" }
+	}
+}
+shown(d, c, m) = strstrt(present, sprintf("|%d %s %s|", d, case_name(c), word(names, m))) > 0
 case_title(c) = c == 1 ? "EE: two ellipses / ellipsoids" : c == 2 ? \
 	"ES: superellipse / superquadric and ellipse / ellipsoid" : "SQ: two superellipses / superquadrics"
 sel(d, c) = (column(1) == d && strcol(2) eq case_name(c))
@@ -62,7 +76,7 @@ do for [fmt in formats] {
 			plot $F using (sel(d, c) ? $3 : NaN):4 with steps lw 6 lc rgb '#bbbbbb' title "Pareto front", \
 				$F using (sel(d, c) ? $3 : NaN):4 with points pt 6 ps 1.6 lc rgb '#888888' notitle, \
 				for [m = 1:nmeth] $P using (sel(d, c) && strcol(3) eq word(names, m) ? $5 : NaN):6 \
-					with linespoints lw 1.5 pt pt_of(m) ps 0.7 lc rgb color_of(m) title word(names, m)
+					with linespoints lw 1.5 pt pt_of(m) ps 0.7 lc rgb color_of(m) title (shown(d, c, m) ? word(names, m) : "")
 		}
 	}
 	unset multiplot

@@ -681,20 +681,33 @@ mkResult mkReferee3_Support(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet 
 
 /* ---- dispatch -------------------------------------------------------------- */
 
+/* Boundary points in no particular order carry no normal the support check
+ * could use: refused, with a message that says so and where to go. */
+static mkResult mkReferee_Unordered(const mkMethod *m, mkVerdict *v)
+{
+	verdict_init(v, MK_VERDICT_SUPPORT, 0);
+	snprintf(v->message, sizeof v->message,
+		"method %s declares its points unordered (MK_INDEX_UNORDERED): the referee needs each point's normal; "
+		"measure them with the error measure (mink score) instead", m->name);
+	return MK_ERR_UNSUPPORTED;
+}
+
 mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out,
 	const mkRefereeOptions *opt, mkVerdict *v)
 {
 	if (!m || !out || !v || out->dim != 2) return MK_ERR_ARGUMENT;
 	if (m->flags & MK_METHOD_SAMPLED) return mkReferee2_Hull(b1, b2, set, n, out, v);
 	if (n < 1 || out->count != n) return MK_ERR_ARGUMENT;
+	mkMethodIndexing idx = mkMethod_Indexing(m);
+	if (idx == MK_INDEX_UNORDERED) return mkReferee_Unordered(m, v);
 	double *u = malloc(4 * (size_t)n * sizeof *u);
 	if (!u) return MK_ERR_MEMORY;
 	mkResult r = mkSample2_Angles(n, u, u + n);
 	if (r == MK_OK) {
 		double *nx = u + 2 * n, *ny = u + 3 * n;
 		for (int k = 0; k < n; ++k) {
-			double x[2], nn[2];
-			body2_local(&b1, u[k], u[n + k], x, nn);
+			double x[2], nn[2] = {u[k], u[n + k]};
+			if (idx == MK_INDEX_PARAMETER) body2_local(&b1, u[k], u[n + k], x, nn);
 			nx[k] = nn[0];
 			ny[k] = nn[1];
 		}
@@ -710,6 +723,8 @@ mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, 
 	if (!m || !out || !v || out->dim != 3) return MK_ERR_ARGUMENT;
 	if (m->flags & MK_METHOD_SAMPLED) return mkReferee3_Hull(b1, b2, set, n, out, v);
 	if (n < 2 || n > 46340 || out->count != n * n) return MK_ERR_ARGUMENT;
+	mkMethodIndexing idx = mkMethod_Indexing(m);
+	if (idx == MK_INDEX_UNORDERED) return mkReferee_Unordered(m, v);
 	int count = n * n;
 	double *u = malloc(6 * (size_t)count * sizeof *u);
 	if (!u) return MK_ERR_MEMORY;
@@ -717,8 +732,8 @@ mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, 
 	if (r == MK_OK) {
 		double *nx = u + 3 * (size_t)count, *ny = u + 4 * (size_t)count, *nz = u + 5 * (size_t)count;
 		for (int k = 0; k < count; ++k) {
-			double x[3], nn[3];
-			body3_local(&b1, u[k], u[count + k], u[2 * count + k], x, nn);
+			double x[3], nn[3] = {u[k], u[count + k], u[2 * count + k]};
+			if (idx == MK_INDEX_PARAMETER) body3_local(&b1, u[k], u[count + k], u[2 * count + k], x, nn);
 			nx[k] = nn[0];
 			ny[k] = nn[1];
 			nz[k] = nn[2];

@@ -4,15 +4,16 @@
  * sampled.c (hulls of pairwise sums, edge sorting). An entry that is one
  * member of a family (one closed form, one hull library) gets its own run
  * functions below, which bind the family's parameter: an mkMethod's run
- * functions take no context. A method of its own kind can instead define
- * its mkMethod in its own file (mink/registry.h); it then needs only an
- * extern declaration and its line of the table here. */
+ * functions take no context. A method of its own kind defines its mkMethod
+ * in a file of its own, baselines/src/method_*.c, and adds one line to the
+ * table in registry.def (mink/registry.h). */
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include <mink/baselines.h>
+#include <mink/external.h>
 #include <mink/registry.h>
 
 #include "registry_internal.h"
@@ -170,38 +171,39 @@ const mkMethod mkMethod_EdgeSort = {
 	mkAcceptAny2, NULL, mkEdgeSort2_Run, NULL,
 };
 
-/* ---- the table, with each entry's resolution range --------------------------- */
+/* ---- the table, with each entry's indexing and resolution range ------------ */
 
-typedef struct Entry {
+/* Every entry's mkMethod, declared from the table itself, so that a method
+ * defined in a file of its own needs no declaration here. */
+#define MK_REGISTRY_ENTRY(symbol, indexing, nmin2, nmax2, nmin3, nmax3, tol) extern const mkMethod symbol;
+#include "registry.def"
+#undef MK_REGISTRY_ENTRY
+
+typedef struct mkRegistry_Entry {
 	const mkMethod *method;
-	int nmin2, nmax2; /* resolution range in 2D */
-	int nmin3, nmax3; /* and in 3D (grid side) */
-	double tol;       /* stated accuracy of an MK_METHOD_APPROX method */
-} Entry;
+	mkMethodIndexing indexing; /* how its points are indexed */
+	int nmin2, nmax2;          /* resolution range in 2D */
+	int nmin3, nmax3;          /* and in 3D (grid side) */
+	double tol;                /* stated accuracy of an MK_METHOD_APPROX method */
+} mkRegistry_Entry;
 
-static const Entry table[] = {
-	{&mkMethod_ClosedNormal, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
-	{&mkMethod_ClosedGradient, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
-	{&mkMethod_ClosedNormalF32, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, MK_F32_TOL},
-	{&mkMethod_ClosedGradientF32, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, MK_F32_TOL},
-	{&mkMethod_ClosedPaper, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
-	{&mkMethod_Geometric, 1, INT_MAX, 2, MK_CLOSED3_N_MAX, 0},
-	{&mkMethod_HullCgalEpick, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
-	{&mkMethod_HullCgalEpeck, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
-	{&mkMethod_HullQhull, MK_SAMPLED_N_MIN, MK_HULL2_N_MAX, MK_SAMPLED_N_MIN, MK_HULL3_N_MAX, 0},
-	{&mkMethod_EdgeSort, MK_SAMPLED_N_MIN, MK_EDGESORT_N_MAX, 0, 0, 0},
+static const mkRegistry_Entry table[] = {
+#define MK_REGISTRY_ENTRY(symbol, indexing, nmin2, nmax2, nmin3, nmax3, tol) \
+	{&symbol, MK_INDEX_##indexing, nmin2, nmax2, nmin3, nmax3, tol},
+#include "registry.def"
+#undef MK_REGISTRY_ENTRY
 };
 
 enum { COUNT = (int)(sizeof table / sizeof table[0]) };
 
 int mkRegistry_Count(void)
 {
-	return COUNT;
+	return COUNT + mkExternal_Count();
 }
 
 const mkMethod *mkRegistry_At(int i)
 {
-	return i >= 0 && i < COUNT ? table[i].method : NULL;
+	return i >= 0 && i < COUNT ? table[i].method : mkExternal_At(i - COUNT);
 }
 
 int mkRegistry_Names(const char **names, int max)
@@ -215,9 +217,36 @@ int mkRegistry_Names(const char **names, int max)
 const mkMethod *mkRegistry_Find(const char *name)
 {
 	if (!name) return NULL;
-	for (int i = 0; i < COUNT; ++i)
-		if (strcmp(table[i].method->name, name) == 0) return table[i].method;
+	for (int i = 0; i < mkRegistry_Count(); ++i)
+		if (strcmp(mkRegistry_At(i)->name, name) == 0) return mkRegistry_At(i);
+	if (strncmp(name, "exec:", 5) == 0) return mkExternal_Find(name, NULL, 0);
 	return NULL;
+}
+
+int mkRegistry_Resolve(const char *list, char *out, size_t outlen, char *msg, size_t msglen)
+{
+	size_t used = 0;
+	if (!list || !out || outlen == 0) return mkRefuse(msg, msglen, "no list given");
+	out[0] = '\0';
+	for (const char *p = list; *p;) {
+		size_t len = strcspn(p, ",");
+		char item[1024];
+		if (len >= sizeof item) return mkRefuse(msg, msglen, "an item of the list is too long");
+		memcpy(item, p, len);
+		item[len] = '\0';
+		const char *name = item;
+		if (strncmp(item, "exec:", 5) == 0) {
+			const mkMethod *m = mkExternal_Find(item, msg, msglen);
+			if (!m) return 0;
+			name = m->name;
+		}
+		int w = snprintf(out + used, outlen - used, "%s%s", used ? "," : "", name);
+		if (w < 0 || (size_t)w >= outlen - used) return mkRefuse(msg, msglen, "the list is too long");
+		used += (size_t)w;
+		p += len;
+		if (*p == ',') ++p;
+	}
+	return 1;
 }
 
 static int runs_in(const mkMethod *m, int dim)
@@ -226,11 +255,24 @@ static int runs_in(const mkMethod *m, int dim)
 		|| (dim == 3 && (m->flags & MK_METHOD_3D) && m->run3);
 }
 
-double mkMethod_Tolerance(const mkMethod *m)
+static const mkRegistry_Entry *mkRegistry_EntryOf(const mkMethod *m)
 {
 	for (int i = 0; i < COUNT; ++i)
-		if (table[i].method == m) return (m->flags & MK_METHOD_APPROX) ? table[i].tol : 0.0;
-	return 0.0;
+		if (table[i].method == m) return &table[i];
+	return NULL;
+}
+
+double mkMethod_Tolerance(const mkMethod *m)
+{
+	const mkRegistry_Entry *e = mkRegistry_EntryOf(m);
+	return e && (m->flags & MK_METHOD_APPROX) ? e->tol : 0.0;
+}
+
+mkMethodIndexing mkMethod_Indexing(const mkMethod *m)
+{
+	const mkRegistry_Entry *e = mkRegistry_EntryOf(m);
+	if (e) return e->indexing;
+	return m && ((m->flags & MK_METHOD_SAMPLED) || mkExternal_Is(m)) ? MK_INDEX_UNORDERED : MK_INDEX_PARAMETER;
 }
 
 int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)
@@ -238,11 +280,11 @@ int mkMethod_CheckN(const mkMethod *m, int dim, int n, char *msg, size_t msglen)
 	if (!m) return mkRefuse(msg, msglen, "no method given");
 	if (!runs_in(m, dim)) return mkRefuse(msg, msglen, "method %s does not run in %dD", m->name, dim);
 	int lo = 1, hi = INT_MAX;
-	for (int i = 0; i < COUNT; ++i)
-		if (table[i].method == m) {
-			lo = dim == 2 ? table[i].nmin2 : table[i].nmin3;
-			hi = dim == 2 ? table[i].nmax2 : table[i].nmax3;
-		}
+	const mkRegistry_Entry *e = mkRegistry_EntryOf(m);
+	if (e) {
+		lo = dim == 2 ? e->nmin2 : e->nmin3;
+		hi = dim == 2 ? e->nmax2 : e->nmax3;
+	}
 	if (n >= lo && n <= hi) return 1;
 	const char *unit = (m->flags & MK_METHOD_SAMPLED) ? (dim == 2 ? "samples per body" : "grid side per body")
 		: (dim == 2 ? "points" : "grid side");

@@ -8,17 +8,8 @@
 #include <stddef.h>
 #include <mink/mink.h>
 
-/* Accept every valid pair (the bodies are validated by the caller). */
-int mkAcceptAny2(mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen);
-int mkAcceptAny3(mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen);
-
-/* Write a one-line message into msg (when msg is not NULL and msglen > 0),
- * printf-style, and return 0: the answer of an accept or range check that
- * refuses. (registry.c) */
-#if defined(__GNUC__)
-__attribute__((format(printf, 3, 4)))
-#endif
-int mkRefuse(char *msg, size_t msglen, const char *format, ...);
+/* mkAcceptAny2/3 and mkRefuse, which every method uses, are public
+ * (mink/registry.h). */
 
 /* Body 1's surface parameters, the ones every method that is not sampled
  * answers at (mink/registry.h): the n unit vectors of mkSample2_Angles, or

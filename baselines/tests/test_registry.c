@@ -58,6 +58,24 @@ int main(void)
 	ENSURE(mkMethod_Tolerance(&mkMethod_ClosedNormalF32) == MK_F32_TOL);
 	ENSURE(mkMethod_Tolerance(&mkMethod_ClosedGradient) == 0.0);
 	ENSURE(mkMethod_Tolerance(NULL) == 0.0);
+	/* Indexing: the closed forms by body 1's parameter, every sampled method
+	 * unordered; the helpers every method uses. */
+	ENSURE(mkMethod_Indexing(&mkMethod_ClosedNormal) == MK_INDEX_PARAMETER);
+	ENSURE(mkMethod_Indexing(&mkMethod_Geometric) == MK_INDEX_PARAMETER);
+	ENSURE(mkMethod_Indexing(&mkMethod_HullQhull) == MK_INDEX_UNORDERED);
+	for (int i = 0; i < count; ++i) {
+		const mkMethod *m = mkRegistry_At(i);
+		mkMethodIndexing x = mkMethod_Indexing(m);
+		ENSURE(x == MK_INDEX_PARAMETER || x == MK_INDEX_NORMAL || x == MK_INDEX_UNORDERED);
+		if (m->flags & MK_METHOD_SAMPLED) ENSURE(x == MK_INDEX_UNORDERED);
+	}
+	{
+		char msg[64] = "stale";
+		mkBody2 b = mkBody2_Make((mkShape2){1, 1, 1}, mkMat2_Identity(), (mkVec2){0, 0});
+		ENSURE(mkAcceptAny2(b, b, MK_SET_CONTACT, msg, sizeof msg) == 1 && msg[0] == '\0');
+		ENSURE(mkRefuse(msg, sizeof msg, "body2.eps = %g: no", 0.5) == 0 && strcmp(msg, "body2.eps = 0.5: no") == 0);
+		ENSURE(mkRefuse(NULL, 0, "nothing") == 0);
+	}
 
 	/* The geometric formula needs body 2 an ellipse / ellipsoid. */
 	char msg[512];

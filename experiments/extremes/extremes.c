@@ -36,7 +36,10 @@ void mkExtremesOptions_Default(mkExtremesOptions *o)
 int mkExtremes_ParseMethods(void *on, const char *text, char *msg, size_t msglen)
 {
 	const char *names[MK_EXTREMES_METHODS_MAX];
-	return mkArg_NameList(text, names, mkRegistry_Names(names, MK_EXTREMES_METHODS_MAX), (int *)on, msg, msglen);
+	char list[4096];
+	if (!mkRegistry_Resolve(text, list, sizeof list, msg, msglen))
+		return -1;
+	return mkArg_NameList(list, names, mkRegistry_Names(names, MK_EXTREMES_METHODS_MAX), (int *)on, msg, msglen);
 }
 
 long mkExtremes_N(const mkExtremesOptions *o, const mkMethod *m, int dim)

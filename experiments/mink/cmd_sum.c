@@ -6,6 +6,7 @@
 #include <mink/mink.h>
 #include <mink_exp/outfile.h>
 #ifdef MINK_HAVE_REGISTRY
+#include <mink/external.h>
 #include <mink/registry.h>
 #endif
 
@@ -158,7 +159,8 @@ static int run_method(const SumArgs *a, const mkSpec *s1, const mkSpec *s2)
 		: m->run3(s1->body3, s2->body3, a->opt.set, (int)a->n, &ps);
 	int rc = 1;
 	if (r != MK_OK) {
-		fprintf(stderr, "mink sum: method %s failed: %s\n", m->name, mkResult_Name(r));
+		fprintf(stderr, "mink sum: method %s failed: %s%s%s\n", m->name, mkResult_Name(r),
+			mkExternal_Is(m) ? ": " : "", mkExternal_Is(m) ? mkExternal_Message(m) : "");
 	} else {
 		const double *cols[3] = {ps.x, ps.y, ps.z};
 		rc = emit(a, ps.count, cols, a->dim);

@@ -12,6 +12,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "points.h"
 
 static void help(FILE *fp)
 {
@@ -28,136 +29,6 @@ static void help(FILE *fp)
 		"--dense: default 8192 (2D) / 128 (3D grid side).\n"
 		"Points of a method that is not sampled must be in its order: point k belongs\n"
 		"to body 1's surface parameter k (mink/registry.h).\n\n");
-}
-
-/* ---- reading the points ---------------------------------------------------- */
-
-typedef struct Text { char *data; size_t len; } Text;
-
-static int read_all(const char *path, Text *t)
-{
-	FILE *fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
-	if (!fp) {
-		fprintf(stderr, "mink verify: --points %s: %s\n", path, strerror(errno));
-		return -1;
-	}
-	size_t cap = 1 << 16;
-	t->data = malloc(cap);
-	t->len = 0;
-	for (;;) {
-		if (!t->data) break;
-		if (t->len + 1 >= cap) {
-			char *bigger = realloc(t->data, cap *= 2);
-			if (!bigger) {
-				free(t->data);
-				t->data = NULL;
-				break;
-			}
-			t->data = bigger;
-		}
-		size_t got = fread(t->data + t->len, 1, cap - 1 - t->len, fp);
-		t->len += got;
-		if (got == 0) break;
-	}
-	int bad = ferror(fp);
-	if (fp != stdin) fclose(fp);
-	if (!t->data || bad) {
-		fprintf(stderr, "mink verify: --points %s: %s\n", path, t->data ? "read error" : "out of memory");
-		free(t->data);
-		return -1;
-	}
-	t->data[t->len] = '\0';
-	return 0;
-}
-
-/* Split a line at commas in place; returns the field count (at most max). */
-static int split(char *line, char **f, int max)
-{
-	int n = 0;
-	char *s = line;
-	for (;;) {
-		while (*s == ' ' || *s == '\t') ++s;
-		if (n < max) f[n] = s;
-		++n;
-		char *c = strchr(s, ',');
-		char *end = c ? c : s + strlen(s);
-		while (end > s && isspace((unsigned char)end[-1])) --end;
-		*end = '\0';
-		if (!c) break;
-		s = c + 1;
-	}
-	return n;
-}
-
-static int parse_points(char *text, int dim, mkPointSet *out)
-{
-	enum { MAXF = 64 };
-	int col[3] = {0, 1, 2}, header_seen = 0, lineno = 0, count = 0;
-	char *next = text;
-	while (next && *next) {
-		char *line = next, *nl = strchr(line, '\n');
-		if (nl) *nl = '\0';
-		next = nl ? nl + 1 : NULL;
-		++lineno;
-		size_t l = strlen(line);
-		if (l && line[l - 1] == '\r') line[l - 1] = '\0';
-		char *p = line;
-		while (isspace((unsigned char)*p)) ++p;
-		if (!*p || *p == '#') continue;
-		char *f[MAXF];
-		int nf = split(p, f, MAXF);
-		if (nf > MAXF) nf = MAXF;
-		char *end;
-		strtod(f[0], &end);
-		if (!header_seen && (end == f[0] || *end)) {
-			/* A header: find x, y (and z). */
-			static const char *const names[3] = {"x", "y", "z"};
-			for (int c = 0; c < dim; ++c) {
-				col[c] = -1;
-				for (int i = 0; i < nf; ++i)
-					if (strcmp(f[i], names[c]) == 0) col[c] = i;
-				if (col[c] < 0) {
-					fprintf(stderr, "mink verify: --points line %d: the header has no column '%s'\n", lineno,
-						names[c]);
-					return -1;
-				}
-			}
-			header_seen = 1;
-			continue;
-		}
-		header_seen = 1;
-		double v[3] = {0, 0, 0};
-		for (int c = 0; c < dim; ++c) {
-			if (col[c] >= nf) {
-				fprintf(stderr, "mink verify: --points line %d: %d fields, column %d expected\n", lineno, nf,
-					col[c] + 1);
-				return -1;
-			}
-			errno = 0;
-			v[c] = strtod(f[col[c]], &end);
-			if (end == f[col[c]] || *end) {
-				fprintf(stderr, "mink verify: --points line %d: '%s' is not a number\n", lineno, f[col[c]]);
-				return -1;
-			}
-		}
-		if (count == out->count) {
-			int cap = out->count ? 2 * out->count : 1024;
-			if (mkPointSet_Resize(out, dim, cap) != MK_OK) {
-				fprintf(stderr, "mink verify: out of memory reading the points\n");
-				return -1;
-			}
-		}
-		out->x[count] = v[0];
-		out->y[count] = v[1];
-		if (dim == 3) out->z[count] = v[2];
-		++count;
-	}
-	out->count = count;
-	if (!count) {
-		fprintf(stderr, "mink verify: --points holds no points\n");
-		return -1;
-	}
-	return 0;
 }
 
 /* ---- the command ----------------------------------------------------------- */
@@ -208,12 +79,8 @@ int mkCmd_Verify(int argc, char **argv)
 		return 2;
 	}
 
-	Text text;
 	mkPointSet pts = {0};
-	if (read_all(points, &text)) return 2;
-	int bad = parse_points(text.data, (int)dim, &pts);
-	free(text.data);
-	if (bad) {
+	if (mkPoints_Read("verify", points, (int)dim, &pts)) {
 		mkPointSet_Free(&pts);
 		return 2;
 	}
@@ -259,10 +126,14 @@ int mkCmd_Verify(int argc, char **argv)
 	 * scale), not to the rounding allowance of the exact methods. */
 	if (m->flags & MK_METHOD_APPROX)
 		opt.tol_factor = mkMethod_Tolerance(m) / (MK_REFEREE_ULPS * DBL_EPSILON / 2);
-	mkVerdict v;
+	mkVerdict v = {0};
 	mkResult r = dim == 2 ? mkReferee2_Check(m, s1.body2, s2.body2, set, (int)n, &pts, &opt, &v)
 		: mkReferee3_Check(m, s1.body3, s2.body3, set, (int)n, &pts, &opt, &v);
 	mkPointSet_Free(&pts);
+	if (r == MK_ERR_UNSUPPORTED && v.kind == MK_VERDICT_SUPPORT) {
+		fprintf(stderr, "mink verify: %s\n", v.message);
+		return 2;
+	}
 	if (r != MK_OK) {
 		fprintf(stderr, "mink verify: the referee could not run: %s\n", mkResult_Name(r));
 		return 2;

@@ -13,5 +13,6 @@ int mkCmd_Collide(int argc, char **argv);
 /* `mink collide --pairs FILE`: the batched queries (cmd_pairs.c). */
 int mkCmd_CollidePairs(int argc, char **argv);
 int mkCmd_Plan(int argc, char **argv);
+int mkCmd_Score(int argc, char **argv);
 
 #endif

@@ -20,6 +20,7 @@ static const mkCommand commands[] = {
 #ifdef MINK_HAVE_REGISTRY
 	{"methods", mkCmd_Methods, "list the registered methods (closed forms and baselines)"},
 	{"verify", mkCmd_Verify, "put a method's output through the exact (CGAL) referee"},
+	{"score", mkCmd_Score, "the error of any boundary point set against the true sum (mink/score.h)"},
 #endif
 #ifdef MINK_HAVE_COLLIDE
 	{"collide", mkCmd_Collide, "collision status, distance or penetration and witnesses of two bodies"},

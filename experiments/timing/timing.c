@@ -13,6 +13,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include <mink/external.h>
 #include <time.h>
 
 #define MK_LEVEL2_MIN 3
@@ -122,7 +124,12 @@ int mkTiming_ParseCases(void *on, const char *text, char *msg, size_t msglen)
 int mkTiming_ParseMethods(void *on, const char *text, char *msg, size_t msglen)
 {
 	const char *names[MK_TIMING_METHODS_MAX];
-	return mkArg_NameList(text, names, mkRegistry_Names(names, MK_TIMING_METHODS_MAX), (int *)on, msg, msglen);
+	char list[4096];
+	if (!mkRegistry_Resolve(text, list, sizeof list, msg, msglen))
+		return -1;
+	int count = mkRegistry_Names(names, MK_TIMING_METHODS_MAX);
+	/* "all" means the table's methods and the external ones named so far. */
+	return mkArg_NameList(list, names, count, (int *)on, msg, msglen);
 }
 
 /* ---- draws ----------------------------------------------------------------- */
@@ -272,6 +279,10 @@ static mkResult mkTimedCall(const mkMethod *m, int dim, const mkPair *p, int n, 
 	mkResult r = dim == 2 ? m->run2(p->p1, p->p2, MK_SET_CONTACT, n, out)
 		: m->run3(p->q1, p->q2, MK_SET_CONTACT, n, out);
 	*seconds = mkClock_Wall() - t0;
+	/* An external method's time is its own measure of the job, without its
+	 * process and pipes (mink/external.h). */
+	if (mkExternal_Is(m))
+		*seconds = mkExternal_Seconds(m);
 	return r;
 }
 
@@ -345,16 +356,19 @@ static long mkCellAccepted(const mkTimingOptions *o, mkTimingCell cell, mkTiming
 	return accepted;
 }
 
-static void mkTiming_WriteRow(mkCsv *csv, mkTimingCell cell, const char *method, long trial, mkResult r,
+static void mkTiming_WriteRow(mkCsv *csv, mkTimingCell cell, const mkMethod *m, long trial, mkResult r,
 	double seconds, long points_out, long planned, long run, double warmup)
 {
+	const char *method = m->name;
+	/* An external method's failure says what happened: crashed, timeout, ... */
+	const char *status = r != MK_OK && mkExternal_Is(m) ? mkExternal_Status(m) : mkResult_Name(r);
 	mkCsv_Int(csv, cell.dim);
 	mkCsv_Str(csv, mkTiming_CaseNames[cell.c]);
 	mkCsv_Str(csv, method);
 	mkCsv_Int(csv, cell.level);
 	mkCsv_Int(csv, cell.dim == 2 ? cell.level : (long)cell.level * cell.level);
 	mkCsv_Int(csv, trial);
-	mkCsv_Str(csv, mkResult_Name(r));
+	mkCsv_Str(csv, status);
 	mkCsv_Double(csv, seconds);
 	mkCsv_Int(csv, points_out);
 	mkCsv_Int(csv, planned);
@@ -401,11 +415,12 @@ int mkTiming_RunCell(const mkTimingOptions *o, mkTimingCell cell, int first_of_g
 		r = mkTimedCall(m, cell.dim, &pair, cell.level, out, &seconds);
 		if (r != MK_OK) {
 			if (tr->failed_calls < MK_FAIL_REPORTS)
-				fprintf(stderr, "timing: %dD %s level %d %s trial %ld failed: %s\n", cell.dim, cname,
-					cell.level, m->name, t, mkResult_Name(r));
+				fprintf(stderr, "timing: %dD %s level %d %s trial %ld failed: %s%s%s\n", cell.dim, cname,
+					cell.level, m->name, t, mkResult_Name(r), mkExternal_Is(m) ? ": " : "",
+					mkExternal_Is(m) ? mkExternal_Message(m) : "");
 			tr->failed_calls += 1;
 		}
-		mkTiming_WriteRow(csv, cell, m->name, t, r, seconds, r == MK_OK ? out->count : 0, o->trials, run,
+		mkTiming_WriteRow(csv, cell, m, t, r, seconds, r == MK_OK ? out->count : 0, o->trials, run,
 			warmup);
 		tr->rows += 1;
 		done += 1;

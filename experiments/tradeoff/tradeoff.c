@@ -3,17 +3,21 @@
 
 #include <pthread.h>
 #include <stdatomic.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 const char *const mkTradeoff_CaseNames[MK_TRADEOFF_CASES] = { "EE", "ES", "SQ" };
 const char *const mkTradeoff_Columns[] = { "dim", "case", "method", "set", "n", "trial", "points", "seconds",
-	"hausdorff_abs", "hausdorff_rel", "area_rel", "nonfinite", "body1", "body2", NULL };
+	"hausdorff_abs", "hausdorff_rel", "area_rel", "nonfinite", "body1", "body2", "status", NULL };
 
 /* The two samplings of the closed form beyond the registry's (tradeoff.h). */
 enum { MK_SAMPLING_NORMAL = 0, MK_SAMPLING_SPACED = 1, MK_SAMPLINGS = 2 };
 static const char *const mkSamplingNames[MK_SAMPLINGS] = { "closed-normal@normal-angles", "closed-normal@spaced" };
+
+static int mkCurves(void);
+static const char *mkCurveName(int curve);
 
 void mkTradeoffOptions_Default(mkTradeoffOptions *o)
 {
@@ -30,6 +34,8 @@ void mkTradeoffOptions_Default(mkTradeoffOptions *o)
 	o->budget = 1.0;
 	o->repeats = 5;
 	o->threads = 2;
+	for (int i = 0; i < MK_TRADEOFF_CURVES_MAX; ++i)
+		o->curve_on[i] = 1;
 }
 
 int mkTradeoff_ParseLevels(void *options, const char *text, char *msg, size_t msglen)
@@ -74,6 +80,13 @@ void mkTradeoff_Start(mkTradeoffOptions *o, const mkRun *run, int dims, mkMeta *
 			len += (size_t)snprintf(text + len, sizeof text - len, "%s%d", l ? "," : "", o->level[dim][l]);
 		mkMeta_Set(meta, dim == 2 ? "levels_2d" : "levels_3d", o->dim_on[dim] ? text : "off");
 	}
+	char on[2048];
+	size_t len = 0;
+	on[0] = '\0';
+	for (int i = 0; i < mkCurves() && len < sizeof on; ++i)
+		if (o->curve_on[i])
+			len += (size_t)snprintf(on + len, sizeof on - len, "%s%s", len ? "," : "", mkCurveName(i));
+	mkMeta_Set(meta, "methods", on);
 	mkMeta_SetDouble(meta, "budget_seconds", o->budget);
 	mkMeta_SetInt(meta, "repeats", o->repeats);
 	mkMeta_SetInt(meta, "threads", o->threads);
@@ -126,17 +139,12 @@ void mkTradeoff_Pair3(uint64_t seed, int c, long trial, mkBody3 *b1, mkBody3 *b2
 
 void mkTradeoff_Spec2(mkBody2 b, char *buf, size_t len)
 {
-	snprintf(buf, len, "superellipse a=%.17g b=%.17g eps=%.17g M=%.17g,%.17g,%.17g,%.17g at=%.17g,%.17g",
-		b.shape.a, b.shape.b, b.shape.eps, b.M.m[0][0], b.M.m[0][1], b.M.m[1][0], b.M.m[1][1], b.t.x, b.t.y);
+	mkSpec2_Format(b, buf, len);
 }
 
 void mkTradeoff_Spec3(mkBody3 b, char *buf, size_t len)
 {
-	const double *m = &b.M.m[0][0];
-	snprintf(buf, len, "superquadric a=%.17g b=%.17g c=%.17g eps1=%.17g eps2=%.17g "
-		"M=%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g at=%.17g,%.17g,%.17g",
-		b.shape.a, b.shape.b, b.shape.c, b.shape.eps1, b.shape.eps2, m[0], m[1], m[2], m[3], m[4], m[5], m[6],
-		m[7], m[8], b.t.x, b.t.y, b.t.z);
+	mkSpec3_Format(b, buf, len);
 }
 
 /* The pairs of one (dim, case) and their true volumes. */
@@ -173,13 +181,27 @@ static void mkNotes_Add(mkNotes *n, int dim, int c, const char *method, const ch
 
 static int mkCurves(void)
 {
-	return mkRegistry_Count() + MK_SAMPLINGS;
+	int n = mkRegistry_Count() + MK_SAMPLINGS;
+	return n < MK_TRADEOFF_CURVES_MAX ? n : MK_TRADEOFF_CURVES_MAX;
 }
 
 static const char *mkCurveName(int curve)
 {
 	int r = mkRegistry_Count();
 	return curve < r ? mkRegistry_At(curve)->name : mkSamplingNames[curve - r];
+}
+
+int mkTradeoff_ParseMethods(void *on, const char *text, char *msg, size_t msglen)
+{
+	const char *names[MK_TRADEOFF_CURVES_MAX];
+	char list[4096];
+	if (!mkRegistry_Resolve(text, list, sizeof list, msg, msglen))
+		return -1;
+	text = list;
+	int n = mkCurves();
+	for (int i = 0; i < n; ++i)
+		names[i] = mkCurveName(i);
+	return mkArg_NameList(text, names, n, (int *)on, msg, msglen);
 }
 
 /* One call of curve `curve` on pair k at level n into out. */
@@ -283,28 +305,38 @@ static void mkParallel(int threads, long count, void (*fn)(void *ctx, long k), v
 }
 
 /* Time pair k at level n (median of the repeats) into *seconds; the points
- * of the last call are left in out. Single-threaded: nothing else of this
- * run is working while a call is timed. */
-static int mkTimeCall(const mkTradeoffOptions *o, const mkPairs *p, long k, int curve, int n, mkScratch *s,
+ * of the last call are left in out. An external method's time is the one it
+ * reports (mink/external.h), without its process and pipes. Single-threaded:
+ * nothing else of this run is working while a call is timed. Returns the
+ * status of the row: "ok", or the failure, which is the method's (its row
+ * says so), never the run's. */
+static const char *mkTimeCall(const mkTradeoffOptions *o, const mkPairs *p, long k, int curve, int n, mkScratch *s,
 	mkPointSet *out, double *seconds)
 {
 	double t[64];
 	long reps = o->repeats < 64 ? o->repeats : 64, done = 0;
 	mkResult rc = MK_OK;
+	const mkMethod *m = curve < mkRegistry_Count() ? mkRegistry_At(curve) : NULL;
 	for (; done < reps && rc == MK_OK; ++done) {
 		double t0 = mkClock_Wall();
 		rc = mkCall(p, k, curve, n, s, out);
 		t[done] = mkClock_Wall() - t0;
+		if (rc == MK_OK && m && mkExternal_Is(m))
+			t[done] = mkExternal_Seconds(m);
 		if (done == 0 && t[0] > 0.05)
 			reps = 1;
 	}
 	if (rc != MK_OK) {
-		fprintf(stderr, "tradeoff: %dD %s %s n = %d pair %ld: the call failed (%s)\n", p->dim,
-			mkTradeoff_CaseNames[p->c], mkCurveName(curve), n, k, mkResult_Name(rc));
-		return -1;
+		int ext = m && mkExternal_Is(m);
+		fprintf(stderr, "tradeoff: %dD %s %s n = %d pair %ld: the call failed (%s%s%s)\n", p->dim,
+			mkTradeoff_CaseNames[p->c], mkCurveName(curve), n, k, mkResult_Name(rc), ext ? ": " : "",
+			ext ? mkExternal_Message(m) : "");
+		*seconds = NAN;
+		out->count = 0;
+		return ext ? mkExternal_Status(m) : mkResult_Name(rc);
 	}
 	*seconds = mkTradeoff_Median(t, done);
-	return 0;
+	return "ok";
 }
 
 /* A copy of a point set (untimed), into dst's own storage. */
@@ -330,6 +362,7 @@ typedef struct mkLevel {
 	double *seconds;
 	mkDeviation *err;
 	mkResult *rc;
+	const char **status; /* the call's: "ok" or its failure (then not measured) */
 } mkLevel;
 
 static void mkMeasureOne(void *ctx, long i)
@@ -338,13 +371,19 @@ static void mkMeasureOne(void *ctx, long i)
 	const mkPairs *p = L->p;
 	long k = L->pair[i];
 	mkDeviationOptions eo = { 0.0, p->truth[k], p->bound[k] };
+	if (strcmp(L->status[k], "ok") != 0) {
+		L->rc[k] = MK_OK;
+		memset(&L->err[k], 0, sizeof L->err[k]);
+		L->err[k].hausdorff_abs = L->err[k].hausdorff_rel = L->err[k].area_rel = NAN;
+		return;
+	}
 	L->rc[k] = p->dim == 2 ? mkDeviation2_Measure(p->p1[k], p->p2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k])
 	                       : mkDeviation3_Measure(p->q1[k], p->q2[k], MK_SET_CONTACT, &L->pts[k], &eo, &L->err[k]);
 }
 
 /* Write the row of pair k (measured) to csv. */
 static void mkWriteRow(const mkPairs *p, long k, int curve, int n, int points, double seconds, const mkDeviation *e,
-	mkCsv *csv)
+	const char *status, mkCsv *csv)
 {
 	char b1[512], b2[512];
 	if (p->dim == 2) {
@@ -368,6 +407,7 @@ static void mkWriteRow(const mkPairs *p, long k, int curve, int n, int points, d
 	mkCsv_Int(csv, e->nonfinite);
 	mkCsv_Str(csv, b1);
 	mkCsv_Str(csv, b2);
+	mkCsv_Str(csv, status);
 	mkCsv_EndRow(csv);
 }
 
@@ -386,7 +426,7 @@ static int mkLevel_Finish(const mkTradeoffOptions *o, mkLevel *L, int curve, int
 				mkTradeoff_CaseNames[p->c], mkCurveName(curve), n, k, mkResult_Name(L->rc[k]));
 			return -1;
 		}
-		mkWriteRow(p, k, curve, n, L->pts[k].count, L->seconds[k], &L->err[k], csv);
+		mkWriteRow(p, k, curve, n, L->pts[k].count, L->seconds[k], &L->err[k], L->status[k], csv);
 	}
 	return 0;
 }
@@ -399,6 +439,8 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 	mkCsv *csv, mkNotes *skipped, mkNotes *cut)
 {
 	const char *name = mkCurveName(curve);
+	if (!o->curve_on[curve])
+		return 0;
 	if (curve < mkRegistry_Count() && !(mkRegistry_At(curve)->flags & (p->dim == 2 ? MK_METHOD_2D : MK_METHOD_3D)))
 		return 0;
 	size_t np = (size_t)p->count;
@@ -410,7 +452,8 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 	L.seconds = malloc(np * sizeof *L.seconds);
 	L.err = malloc(np * sizeof *L.err);
 	L.rc = malloc(np * sizeof *L.rc);
-	int failed = !L.pair || !L.pts || !L.seconds || !L.err || !L.rc;
+	L.status = malloc(np * sizeof *L.status);
+	int failed = !L.pair || !L.pts || !L.seconds || !L.err || !L.rc || !L.status;
 	for (int l = 0; l < o->level_count[p->dim] && !failed; ++l) {
 		int n = o->level[p->dim][l];
 		long refused = 0;
@@ -436,14 +479,19 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 		if (stop)
 			break;
 		L.count = 0;
+		long fails = 0;
 		for (long k = 0; k < p->count && !failed; ++k) {
 			if (!mkCurveRuns(p, k, curve, n, msg, sizeof msg)) {
 				if (refused++ == 0)
 					snprintf(why, sizeof why, "%s", msg);
 				continue;
 			}
-			failed = mkTimeCall(o, p, k, curve, n, s, out, &L.seconds[k]) != 0;
-			if (!failed && mkPointSet_Copy(&L.pts[k], out) != 0) {
+			L.status[k] = mkTimeCall(o, p, k, curve, n, s, out, &L.seconds[k]);
+			if (strcmp(L.status[k], "ok") != 0 && fails++ == 0) {
+				snprintf(msg, sizeof msg, "n = %d: a call failed (%s; the rows' status says which)", n, L.status[k]);
+				mkNotes_Add(skipped, p->dim, p->c, name, msg);
+			}
+			if (mkPointSet_Copy(&L.pts[k], out) != 0) {
 				fprintf(stderr, "tradeoff: out of memory\n");
 				failed = 1;
 			}
@@ -468,6 +516,7 @@ static int mkCurveRun(const mkTradeoffOptions *o, const mkPairs *p, int curve, m
 	free(L.seconds);
 	free(L.err);
 	free(L.rc);
+	free(L.status);
 	return failed ? -1 : 0;
 }
 

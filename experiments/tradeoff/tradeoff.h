@@ -49,11 +49,12 @@
 #include <mink/mink.h>
 #include <mink/error.h>
 #include <mink/registry.h>
+#include <mink/external.h>
 #include <mink_exp/exp.h>
 
 /* The CSV's columns, ended by NULL, and their schema version. */
 extern const char *const mkTradeoff_Columns[];
-#define MK_TRADEOFF_SCHEMA 1
+#define MK_TRADEOFF_SCHEMA 2
 
 /* The cases, in run order, and their names in the `case` column. */
 enum { MK_TRADEOFF_EE = 0, MK_TRADEOFF_ES = 1, MK_TRADEOFF_SQ = 2, MK_TRADEOFF_CASES = 3 };
@@ -62,6 +63,10 @@ extern const char *const mkTradeoff_CaseNames[MK_TRADEOFF_CASES];
 #define MK_TRADEOFF_LEVELS_MAX 64
 
 #define MK_TRADEOFF_THREADS_MAX 64
+
+/* Curves: the registry's methods, then the two extra samplings of the closed
+ * form ("closed-normal@normal-angles", "closed-normal@spaced"). */
+#define MK_TRADEOFF_CURVES_MAX 64
 
 /* What a run covers; levels indexed by dimension 2, 3 (--n of each level,
  * rising). */
@@ -72,6 +77,7 @@ typedef struct mkTradeoffOptions {
 	double budget;          /* seconds for a level's first call; 0: no cut */
 	long threads;           /* threads of the error measure and the true areas /
 	                           volumes (the timed calls run alone), 1..MK_TRADEOFF_THREADS_MAX */
+	int curve_on[MK_TRADEOFF_CURVES_MAX]; /* 1 for each curve run (--methods) */
 } mkTradeoffOptions;
 
 /* 2D n = 8, 32, 128, 512, 2048, 8192, 32768, 65536; 3D n = 4, 8, ..., 256;
@@ -82,6 +88,10 @@ void mkTradeoffOptions_Default(mkTradeoffOptions *o);
  * rising comma-separated integers (2D 3..1000000, 3D 2..4096), into the
  * mkTradeoffOptions it is given. */
 int mkTradeoff_ParseLevels(void *options, const char *text, char *msg, size_t msglen);
+
+/* Flag callback (MK_FLAG_TEXT): "all" or comma-separated curve names (the
+ * registry's names and the two samplings above), into curve_on. */
+int mkTradeoff_ParseMethods(void *on, const char *text, char *msg, size_t msglen);
 
 /* After the harness parsed the flags: take trials and seed from the run,
  * the dimensions from --dim (0: 2D, 1: 3D, 2: both), and write the run's
@@ -112,8 +122,9 @@ int mkTradeoff_Run(const mkTradeoffOptions *o, mkCsv *csv, mkMeta *meta);
  * case the time each method needs to reach a median hausdorff_rel of 1e-2,
  * 1e-3, 1e-6, 1e-9, the closed form's speed-up over the fastest baseline at
  * equal error and its error ratio at equal time, and where a baseline wins.
- * "Closed form" means the methods whose name begins with "closed-"; every
- * other method is a baseline. The tally is left untouched (the paper
+ * "Closed form" means every registry method that returns boundary points
+ * (not MK_METHOD_SAMPLED, by its flags); sampled methods and methods the
+ * registry does not know are baselines. The tally is left untouched (the paper
  * publishes no such figure). */
 void mkTradeoff_Summary(mkDoc *d, const char *dir, mkTally *tally);
 

@@ -116,10 +116,14 @@ typedef struct mkVerdict {
 
 /* Check the output `out` of method m run on (b1, b2, set, n): the support
  * check for methods that are not MK_METHOD_SAMPLED (out must hold n points
- * in 2D, n*n in 3D), the hull check otherwise. opt may be NULL. Returns
- * MK_OK when the check ran (v->pass holds the verdict), MK_ERR_ARGUMENT on
- * a NULL pointer, a wrong dimension or point count, MK_ERR_MEMORY when the
- * referee cannot allocate. */
+ * in 2D, n*n in 3D), the hull check otherwise. Point k's normal is taken
+ * from the method's declared indexing (mkMethod_Indexing, mink/registry.h):
+ * body 1's normal at u_k (MK_INDEX_PARAMETER) or u_k itself
+ * (MK_INDEX_NORMAL). opt may be NULL. Returns MK_OK when the check ran
+ * (v->pass holds the verdict), MK_ERR_ARGUMENT on a NULL pointer, a wrong
+ * dimension or point count, MK_ERR_MEMORY when the referee cannot
+ * allocate, MK_ERR_UNSUPPORTED (and v->message saying why) for boundary
+ * points declared MK_INDEX_UNORDERED, whose normals it does not know. */
 MK_API mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n,
 	const mkPointSet *out, const mkRefereeOptions *opt, mkVerdict *v);
 MK_API mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n,

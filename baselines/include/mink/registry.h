@@ -19,10 +19,15 @@
  *
  * Conventions every entry keeps, so that the referee (mink/referee.h) can
  * check any of them:
- *  - A method that is not MK_METHOD_SAMPLED returns one boundary point per
- *    surface parameter of body 1: point k belongs to u_k of
- *    mkSample2_Angles(n) (2D) or mkSample3_Grid(n) (3D, n*n points), so that
- *    its outward normal is body 1's normal at u_k.
+ *  - A method that is not MK_METHOD_SAMPLED declares in its table line how
+ *    its points are indexed (mkMethodIndexing below): point k at body 1's
+ *    surface parameter u_k of mkSample2_Angles(n) (2D) or mkSample3_Grid(n)
+ *    (3D, n*n points), so that its outward normal is body 1's normal at u_k
+ *    (MK_INDEX_PARAMETER, the closed forms); or point k where the sum's
+ *    outward normal is u_k itself (MK_INDEX_NORMAL); or in no particular
+ *    order (MK_INDEX_UNORDERED). The referee takes each point's normal from
+ *    this; it cannot judge unordered boundary points (it says so), which
+ *    the error measure (mink/error.h, `mink score`) measures all the same.
  *  - A MK_METHOD_SAMPLED method samples each body at the same parameters
  *    (n per body; 3D an n x n grid per body) as mkSampled2_Bodies /
  *    mkSampled3_Bodies (mink/baselines.h) do, and returns the vertices of
@@ -32,16 +37,18 @@
  *    are p - (q - t2) for p on B1 and q on B2, so B2's translation does not
  *    enter it (as in mink/sum.h); the plus set adds p + q.
  *
- * Adding a method: write one file under baselines/src that defines a
- * `const mkMethod` (name, summary, reference, flags, accepts and run
- * functions), declare it in registry.c and add one line to the table there
- * (with its range of n). (The built-in entries are all defined in
- * registry.c, next to the table, because most are members of a family -
- * one closed form, one hull library - whose run functions only bind the
- * family's parameter; a new member of such a family is one more entry
- * there.) The referee tests (test_referee2, test_referee3) loop over the
- * table, so the new entry is put through the referee on random and extreme
- * pairs without a test of its own. Nothing else changes. */
+ * Adding a method: write one file baselines/src/method_<name>.c that
+ * defines a `const mkMethod` (name, summary, reference, flags, accepts and
+ * run functions; mkAcceptAny2/3 and mkRefuse below help), and add its line
+ * to the table in baselines/src/registry.def (the fields are documented
+ * there: indexing, range of n in 2D and 3D, stated accuracy). The build
+ * compiles every baselines/src/method_*.c; nothing else changes. (The
+ * built-in entries are defined in registry.c, because most are members of
+ * a family - one closed form, one hull library - whose run functions only
+ * bind the family's parameter.) The referee tests (test_referee2,
+ * test_referee3), the registry test, `mink verify` and the experiments
+ * loop over the table, so the new entry is put through the referee on
+ * random and extreme pairs, timed and measured without a test of its own. */
 #ifndef MINK_REGISTRY_H
 #define MINK_REGISTRY_H
 
@@ -59,14 +66,50 @@ MK_API mkResult mkPointSet_Resize(mkPointSet *set, int dim, int count);
 MK_API void mkPointSet_Free(mkPointSet *set);
 
 /* Number of registered methods, the i-th (NULL when i is out of range), and
- * the method of a given name (NULL if unknown). The table is static: the
- * pointers stay valid for the life of the program. */
+ * the method of a given name (NULL if unknown). The table's entries come
+ * first, then the external methods registered so far (mink/external.h): a
+ * name "exec:COMMAND" or "exec:NAME=COMMAND" given to mkRegistry_Find
+ * registers one. The pointers stay valid for the life of the program. */
 MK_API int mkRegistry_Count(void);
 MK_API const mkMethod *mkRegistry_At(int i);
 MK_API const mkMethod *mkRegistry_Find(const char *name);
 /* The names of the first `max` entries, in registry order, into names[];
  * returns how many were written. */
 MK_API int mkRegistry_Names(const char **names, int max);
+
+/* How a method's points are indexed (mink/registry.h, above). */
+typedef enum mkMethodIndexing {
+	MK_INDEX_PARAMETER = 0, /* point k at body 1's surface parameter u_k */
+	MK_INDEX_NORMAL = 1,    /* point k where the sum's outward unit normal is u_k */
+	MK_INDEX_UNORDERED = 2  /* no particular order (every sampled method) */
+} mkMethodIndexing;
+
+/* The indexing method m declares in the table; for a method not in the
+ * table, MK_INDEX_UNORDERED when it is MK_METHOD_SAMPLED or external
+ * (mink/external.h) and MK_INDEX_PARAMETER otherwise. */
+MK_API mkMethodIndexing mkMethod_Indexing(const mkMethod *m);
+
+/* Accept every valid pair: the accept function of a method that takes any
+ * pair (the bodies are validated by the caller). */
+MK_API int mkAcceptAny2(mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen);
+MK_API int mkAcceptAny3(mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen);
+
+/* Write a one-line message into msg (when msg is not NULL and msglen > 0),
+ * printf-style, and return 0: the answer of an accept function that
+ * refuses a pair, e.g.
+ *   return mkRefuse(msg, msglen, "body2.eps = %g: needs an ellipse", eps); */
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+MK_API int mkRefuse(char *msg, size_t msglen, const char *format, ...);
+
+/* A --methods list as drivers take it ("all", or comma-separated names,
+ * where an item "exec:COMMAND" or "exec:NAME=COMMAND" names an external
+ * method, mink/external.h) rewritten into out with every external item
+ * registered and replaced by its name, so that the list holds registry
+ * names only. Returns 1, or 0 and a message naming the item (an external
+ * method that cannot be registered, or out too small). */
+MK_API int mkRegistry_Resolve(const char *list, char *out, size_t outlen, char *msg, size_t msglen);
 
 /* Resolution limits. Closed forms: n >= 1 in 2D, n >= 2 in 3D (an n x n
  * grid with both poles). Sampled methods need n >= 3 per body (fewer samples

@@ -115,6 +115,11 @@ MK_API mkVec2 mkBody2_Gradient(mkBody2 b, mkVec2 x);
 MK_API mkVec3 mkBody3_Gradient(mkBody3 b, mkVec3 x);
 MK_API mkVec2 mkBody2_Point(mkBody2 b, mkVec2 u);
 MK_API mkVec3 mkBody3_Point(mkBody3 b, mkVec3 u);
+/* Support point of the placed body in direction n (any nonzero vector,
+ * not necessarily unit): t + M x_C(M^T n), the translation t included; the
+ * support value is <n, that point>, so it includes <n, t>. (For the contact
+ * set B1 (+) (-B2), where B2's translation drops out, body 2's part in
+ * direction n is b2.t - mkBody2_Support(b2, -n).) */
 MK_API mkVec2 mkBody2_Support(mkBody2 b, mkVec2 n);
 MK_API mkVec3 mkBody3_Support(mkBody3 b, mkVec3 n);
 MK_API double mkBody2_SupportValue(mkBody2 b, mkVec2 n);

@@ -1,5 +1,5 @@
 # run.cmake - the bodies of the timing driver's tests that need more than
-# one command: cmake -DMODE=tiny|cap -DEXE=... -DWORK=... -P run.cmake
+# one command: cmake -DMODE=tiny|cap -DEXE=... -DMINK=... -DWORK=... -P run.cmake
 
 function(mk_fail)
   string(JOIN " " text ${ARGN})
@@ -67,23 +67,87 @@ endfunction()
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
+# The registry's methods per dimension, from `mink methods` (MINK, the mink
+# command): <prefix>_2 and <prefix>_3, lists of names. The tests below
+# derive every row count from them, so that a new method changes no test.
+function(mk_registry prefix)
+  execute_process(COMMAND ${MINK} methods RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+  if(NOT rc EQUAL 0)
+    mk_fail("${MINK} methods exited with ${rc}")
+  endif()
+  # Square brackets (the n ranges) would keep CMake from splitting the list.
+  string(REPLACE "[" "(" out "${out}")
+  string(REPLACE "]" ")" out "${out}")
+  string(REPLACE "\n" ";" lines "${out}")
+  set(two "")
+  set(three "")
+  foreach(line IN LISTS lines)
+    # (each MATCHES resets CMAKE_MATCH_<n>: the groups are kept first)
+    if(line MATCHES "^([a-z0-9][a-z0-9._-]*) +([23D,]+) ")
+      set(mname ${CMAKE_MATCH_1})
+      set(mdims ${CMAKE_MATCH_2})
+      if(mname STREQUAL "name")
+        continue()
+      endif()
+      if(mdims MATCHES "2D")
+        list(APPEND two ${mname})
+      endif()
+      if(mdims MATCHES "3D")
+        list(APPEND three ${mname})
+      endif()
+    endif()
+  endforeach()
+  set(${prefix}_2 "${two}" PARENT_SCOPE)
+  set(${prefix}_3 "${three}" PARENT_SCOPE)
+endfunction()
+
+# The pairs the sidecar says were not accepted ("2D SQ geometric: 6 of 6
+# pairs not accepted"), summed for one dimension (2 or 3) and case over the
+# methods that run in that dimension (the list `methods`; the sidecar also
+# names the methods that do not run there at all).
+function(mk_refused meta dim case methods out)
+  set(n 0)
+  foreach(m IN LISTS methods)
+    if(meta MATCHES "${dim}D ${case} ${m}: ([0-9]+) of [0-9]+ pairs not accepted")
+      math(EXPR n "${n} + ${CMAKE_MATCH_1}")
+    endif()
+  endforeach()
+  set(${out} ${n} PARENT_SCOPE)
+endfunction()
+
 if(MODE STREQUAL "tiny")
-  # 2D levels 5 and 8, 3D levels 3 and 4, 3 trials, cases EE and SQ. Rows
-  # expected, from the registry (10 methods; the geometric one needs body 2
-  # an ellipse, edge sorting runs in 2D only):
-  #   2D EE 10 methods x 2 levels x 3 = 60, 2D SQ 9 x 2 x 3 = 54,
-  #   3D EE 9 x 2 x 3 = 54,                 3D SQ 8 x 2 x 3 = 48;  216 in all.
+  # 2D levels 5 and 8, 3D levels 3 and 4, 3 trials, cases EE and SQ: each
+  # method of a dimension runs 2 levels x 3 trials = 6 pairs per case, less
+  # the pairs it does not accept, which the sidecar lists (the geometric
+  # method needs body 2 an ellipse; a 2D-only method has no 3D rows).
   set(args --trials 3 --seed 7 --cases EE,SQ --levels 2d=5,8 --levels 3d=3:1:4 --budget 1e6)
   mk_run(${args} --out ${WORK}/t.csv)
   mk_read_csv(${WORK}/t.csv t)
+  file(READ ${WORK}/t.csv.meta meta)
+  mk_registry(reg)
+  set(want 0)
+  foreach(dim 2 3)
+    list(LENGTH reg_${dim} nm)
+    foreach(case EE SQ)
+      mk_refused("${meta}" ${dim} ${case} "${reg_${dim}}" refused)
+      math(EXPR want "${want} + ${nm} * 6 - ${refused}")
+      foreach(m IN LISTS reg_${dim})
+        mk_count("${t_header}" "${t_rows}" k dim ${dim} case ${case} method ${m})
+        string(FIND "${meta}" "${dim}D ${case} ${m}: 6 of 6 pairs not accepted" skipped)
+        if(k EQUAL 0 AND skipped LESS 0)
+          mk_fail("no ${dim}D ${case} rows of method ${m}, and the sidecar does not say it refused them")
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
   mk_expect_eq("header" "${t_header}"
     "dim;case;method;level;points_per_body;trial;status;seconds;points_out;trials_planned;trials_run;warmup_seconds")
   list(LENGTH t_rows n)
-  mk_expect_eq("rows" ${n} 216)
+  mk_expect_eq("rows" ${n} ${want})
   mk_count("${t_header}" "${t_rows}" n status ok)
-  mk_expect_eq("rows with status ok" ${n} 216)
+  mk_expect_eq("rows with status ok" ${n} ${want})
   mk_count("${t_header}" "${t_rows}" n trials_run 3)
-  mk_expect_eq("rows whose cell ran all 3 trials" ${n} 216)
+  mk_expect_eq("rows whose cell ran all 3 trials" ${n} ${want})
   mk_count("${t_header}" "${t_rows}" n dim 2 case SQ method geometric)
   mk_expect_eq("2D SQ geometric rows" ${n} 0)
   mk_count("${t_header}" "${t_rows}" n dim 3 method edge-sort)
@@ -101,8 +165,7 @@ if(MODE STREQUAL "tiny")
     endif()
   endforeach()
   # The sidecar says what was skipped and how the clock was used.
-  file(READ ${WORK}/t.csv.meta meta)
-  foreach(want "experiment: timing" "rows: 216" "rotation_draw: paper" "threads: 1"
+  foreach(want "experiment: timing" "rows: ${want}" "rotation_draw: paper" "threads: 1"
       "2D SQ geometric: 6 of 6 pairs not accepted" "3D EE edge-sort: 6 of 6 pairs not accepted"
       "clock: CLOCK_MONOTONIC" "capped_cells: 0" "failed_calls: 0" "levels_2d: 5,8" "levels_3d: 3,4")
     string(FIND "${meta}" "${want}" at)
@@ -118,17 +181,24 @@ if(MODE STREQUAL "tiny")
 
 elseif(MODE STREQUAL "cap")
   # No budget: every cell runs --min-trials (2) of its 5 trials. 2D SQ at
-  # two levels: 9 methods x 2 levels x 2 trials = 36 rows, trials 0 and 1.
+  # two levels: the 2D methods that take SQ pairs (all but those the sidecar
+  # lists as not accepted) x 2 levels x 2 trials, trials 0 and 1.
   mk_run(--trials 5 --min-trials 2 --budget 0 --dim 2 --cases SQ --levels 2d=10,20 --out ${WORK}/c.csv)
   mk_read_csv(${WORK}/c.csv c)
+  file(READ ${WORK}/c.csv.meta meta)
+  mk_registry(reg)
+  list(LENGTH reg_2 nm)
+  mk_refused("${meta}" 2 SQ "${reg_2}" refused)
+  math(EXPR cells "(${nm} * 10 - ${refused}) / 5")
+  math(EXPR want "${cells} * 2")
   list(LENGTH c_rows n)
-  mk_expect_eq("rows" ${n} 36)
+  mk_expect_eq("rows" ${n} ${want})
   mk_count("${c_header}" "${c_rows}" n trials_planned 5 trials_run 2)
-  mk_expect_eq("rows saying 2 of 5 trials ran" ${n} 36)
+  mk_expect_eq("rows saying 2 of 5 trials ran" ${n} ${want})
   mk_count("${c_header}" "${c_rows}" n trial 1)
-  mk_expect_eq("rows of trial 1" ${n} 18)
+  mk_expect_eq("rows of trial 1" ${n} ${cells})
   file(STRINGS ${WORK}/c.csv.meta capped REGEX "^capped_cells: ")
-  mk_expect_eq("capped cells in the sidecar" "${capped}" "capped_cells: 18")
+  mk_expect_eq("capped cells in the sidecar" "${capped}" "capped_cells: ${cells}")
 
 else()
   mk_fail("unknown MODE '${MODE}'")

@@ -1,0 +1,52 @@
+# score.cmake - the body of tradeoff.score: `mink score` gives the same
+# Hausdorff distance, digit for digit, as the tradeoff experiment's measure
+# on the same points. For the first row of each of a few registry methods in
+# the tiny run's CSV, the points are made again with `mink sum --method`
+# from the row's SPEC columns and scored; hausdorff_abs must be the row's.
+# cmake -DCSV=<tradeoff.csv> -DMINK=<mink> -DWORK=<scratch> -P score.cmake
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(STRINGS ${CSV} rows)
+list(REMOVE_AT rows 0)
+set(checked 0)
+foreach(want_dim 2 3)
+  foreach(want closed-normal hull-qhull edge-sort closed-gradient hull-cgal-epick)
+    foreach(row IN LISTS rows)
+      if(row MATCHES "^([23]),[A-Z]+,([^,]+),contact,([0-9]+),[0-9]+,[0-9]+,[^,]+,([^,]+),[^,]+,[^,]+,0,\"([^\"]+)\",\"([^\"]+)\",ok$"
+          AND CMAKE_MATCH_1 EQUAL want_dim AND CMAKE_MATCH_2 STREQUAL want)
+        set(dim ${CMAKE_MATCH_1})
+        set(n ${CMAKE_MATCH_3})
+        set(hd ${CMAKE_MATCH_4})
+        set(b1 "${CMAKE_MATCH_5}")
+        set(b2 "${CMAKE_MATCH_6}")
+        set(pts ${WORK}/${dim}-${want}.csv)
+        execute_process(COMMAND ${MINK} sum --dim ${dim} --method ${want} --n ${n} --body1 "${b1}" --body2 "${b2}"
+          --out ${pts} RESULT_VARIABLE rc ERROR_VARIABLE err)
+        if(NOT rc EQUAL 0)
+          message(FATAL_ERROR "mink sum --method ${want} failed (${rc}): ${err}")
+        endif()
+        execute_process(COMMAND ${MINK} score --dim ${dim} --body1 "${b1}" --body2 "${b2}" --points ${pts} --csv
+          RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+        if(NOT rc EQUAL 0)
+          message(FATAL_ERROR "mink score failed (${rc}): ${err}")
+        endif()
+        string(REPLACE "\n" ";" lines "${out}")
+        list(GET lines 0 head)
+        list(GET lines 1 vals)
+        string(REPLACE "," ";" head "${head}")
+        string(REPLACE "," ";" vals "${vals}")
+        list(FIND head hausdorff_abs i)
+        list(GET vals ${i} got)
+        if(NOT got STREQUAL hd)
+          message(FATAL_ERROR "${dim}D ${want} n = ${n}: mink score gives hausdorff_abs ${got}, the tradeoff row ${hd}")
+        endif()
+        message(STATUS "${dim}D ${want} n = ${n}: hausdorff_abs ${got} in both")
+        math(EXPR checked "${checked} + 1")
+        break()
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(checked LESS 6)
+  message(FATAL_ERROR "only ${checked} rows were compared; the tiny run lacks the methods this test picks")
+endif()
