@@ -1,6 +1,5 @@
 /* cmd_verify.c - `mink verify`: put a method's output (a CSV of points, as
  * `mink sum` writes it) through the referee and print the verdict. */
-#include <ctype.h>
 #include <float.h>
 #include <errno.h>
 #include <stdio.h>
@@ -9,6 +8,7 @@
 
 #include <mink/referee.h>
 #include <mink/registry.h>
+#include <mink_exp/points.h>
 
 #include "cli.h"
 #include "commands.h"
@@ -70,96 +70,6 @@ static int read_all(const char *path, Text *t)
 	return 0;
 }
 
-/* Split a line at commas in place; returns the field count (at most max). */
-static int split(char *line, char **f, int max)
-{
-	int n = 0;
-	char *s = line;
-	for (;;) {
-		while (*s == ' ' || *s == '\t') ++s;
-		if (n < max) f[n] = s;
-		++n;
-		char *c = strchr(s, ',');
-		char *end = c ? c : s + strlen(s);
-		while (end > s && isspace((unsigned char)end[-1])) --end;
-		*end = '\0';
-		if (!c) break;
-		s = c + 1;
-	}
-	return n;
-}
-
-static int parse_points(char *text, int dim, mkPointSet *out)
-{
-	enum { MAXF = 64 };
-	int col[3] = {0, 1, 2}, header_seen = 0, lineno = 0, count = 0;
-	char *next = text;
-	while (next && *next) {
-		char *line = next, *nl = strchr(line, '\n');
-		if (nl) *nl = '\0';
-		next = nl ? nl + 1 : NULL;
-		++lineno;
-		size_t l = strlen(line);
-		if (l && line[l - 1] == '\r') line[l - 1] = '\0';
-		char *p = line;
-		while (isspace((unsigned char)*p)) ++p;
-		if (!*p || *p == '#') continue;
-		char *f[MAXF];
-		int nf = split(p, f, MAXF);
-		if (nf > MAXF) nf = MAXF;
-		char *end;
-		strtod(f[0], &end);
-		if (!header_seen && (end == f[0] || *end)) {
-			/* A header: find x, y (and z). */
-			static const char *const names[3] = {"x", "y", "z"};
-			for (int c = 0; c < dim; ++c) {
-				col[c] = -1;
-				for (int i = 0; i < nf; ++i)
-					if (strcmp(f[i], names[c]) == 0) col[c] = i;
-				if (col[c] < 0) {
-					fprintf(stderr, "mink verify: --points line %d: the header has no column '%s'\n", lineno,
-						names[c]);
-					return -1;
-				}
-			}
-			header_seen = 1;
-			continue;
-		}
-		header_seen = 1;
-		double v[3] = {0, 0, 0};
-		for (int c = 0; c < dim; ++c) {
-			if (col[c] >= nf) {
-				fprintf(stderr, "mink verify: --points line %d: %d fields, column %d expected\n", lineno, nf,
-					col[c] + 1);
-				return -1;
-			}
-			errno = 0;
-			v[c] = strtod(f[col[c]], &end);
-			if (end == f[col[c]] || *end) {
-				fprintf(stderr, "mink verify: --points line %d: '%s' is not a number\n", lineno, f[col[c]]);
-				return -1;
-			}
-		}
-		if (count == out->count) {
-			int cap = out->count ? 2 * out->count : 1024;
-			if (mkPointSet_Resize(out, dim, cap) != MK_OK) {
-				fprintf(stderr, "mink verify: out of memory reading the points\n");
-				return -1;
-			}
-		}
-		out->x[count] = v[0];
-		out->y[count] = v[1];
-		if (dim == 3) out->z[count] = v[2];
-		++count;
-	}
-	out->count = count;
-	if (!count) {
-		fprintf(stderr, "mink verify: --points holds no points\n");
-		return -1;
-	}
-	return 0;
-}
-
 /* ---- the command ----------------------------------------------------------- */
 
 static const char *const mkSetNames[] = { "contact", "plus" };
@@ -211,8 +121,20 @@ int mkCmd_Verify(int argc, char **argv)
 	Text text;
 	mkPointSet pts = {0};
 	if (read_all(points, &text)) return 2;
-	int bad = parse_points(text.data, (int)dim, &pts);
+	mkPoints read;
+	int bad = mkPoints_Parse(text.data, (int)dim, &read, msg, sizeof msg) != 0;
 	free(text.data);
+	if (bad) {
+		fprintf(stderr, "mink verify: --points %s\n", msg);
+	} else if (mkPointSet_Resize(&pts, (int)dim, read.count) != MK_OK) {
+		fprintf(stderr, "mink verify: out of memory reading the points\n");
+		bad = 1;
+	} else {
+		memcpy(pts.x, read.x, (size_t)read.count * sizeof(double));
+		memcpy(pts.y, read.y, (size_t)read.count * sizeof(double));
+		if (dim == 3) memcpy(pts.z, read.z, (size_t)read.count * sizeof(double));
+	}
+	mkPoints_Free(&read);
 	if (bad) {
 		mkPointSet_Free(&pts);
 		return 2;
