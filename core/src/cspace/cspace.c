@@ -198,9 +198,13 @@ long mkCSpaceResult_OverTolerance(const mkCSpaceResult *r)
 
 mkCSpaceBoundary mkCSpaceResult_Boundary(const mkCSpaceResult *r, int o, int i, mkBound k)
 {
+	return mkCSpaceResult_At(r, ((long)(o - r->orientation_begin) * r->obstacles + i) * r->bounds + (int)k);
+}
+
+mkCSpaceBoundary mkCSpaceResult_At(const mkCSpaceResult *r, long b)
+{
 	mkCSpaceBoundary v;
 	memset(&v, 0, sizeof v);
-	long b = ((long)(o - r->orientation_begin) * r->obstacles + i) * r->bounds + (int)k;
 	v.count = r->count[b];
 	v.error = r->error[b];
 	v.model_error = r->model_error[b];
