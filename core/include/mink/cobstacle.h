@@ -30,7 +30,9 @@
  * and error, the robot's model, the tolerance); mkCSpace_Run computes any
  * range of orientations into an mkCSpaceResult; mkCSpaceResult_Boundary
  * reads one boundary in the layout the options chose (one array per
- * coordinate, or interleaved).
+ * coordinate, or interleaved); mkCSpace_Stream hands each boundary to the
+ * caller as it is finished instead of keeping them, and mkCSpace_Estimate
+ * says beforehand about how many points a run will make.
  *
  * Names: one prefix, mkCSpace, for scene runs and single boundaries alike
  * (mkCSpace2_Adaptive, ...): the library is libmink_cspace, and a
@@ -43,8 +45,9 @@
  * count.
  *
  * Memory: mkCSpace_Create allocates the prepared scene (mkCSpace_Destroy
- * releases it), mkCSpace_Run the result (mkCSpaceResult_Free), the
- * single-boundary functions grow the caller's buffers. */
+ * releases it), mkCSpace_Run the result (mkCSpaceResult_Free),
+ * mkCSpace_Stream only what its threads hold (released before it returns),
+ * the single-boundary functions grow the caller's buffers. */
 #ifndef MINK_COBSTACLE_H
 #define MINK_COBSTACLE_H
 
