@@ -158,11 +158,13 @@ static int mkSceneCmd_Estimate(mkSceneCmd *s, long begin, long end)
 		return 0;
 	/* bytes per row: the indices, the kind and %.17g numbers (~22 bytes
 	 * each); memory: a thread's scratch space per point of the largest
-	 * boundary (3D about 400 bytes: normals, points, triangles, edge
-	 * hashes; 2D about 100) and the finished boundaries it may hold */
+	 * boundary (3D about 1000 bytes: normals, points, triangles, edge
+	 * hashes, the outer polytope; 0.96 GB a thread was measured at 10^6
+	 * points with --outer; 2D about 100) and the finished boundaries it
+	 * may hold */
 	int dim = s->scene.dim, bounds = s->o.outer ? 2 : 1;
 	double bytes = e.points * (dim == 3 ? 81.0 : 59.0) + e.faces * 32.0;
-	double held = (dim == 3 ? 400.0 : 100.0) + MK_CSPACE_WINDOW * bounds * (dim == 3 ? 48.0 : 16.0);
+	double held = (dim == 3 ? 1000.0 : 100.0) + MK_CSPACE_WINDOW * bounds * (dim == 3 ? 48.0 : 16.0);
 	double memory = s->o.threads * e.largest * held;
 	fprintf(stderr, "mink scene: %s: the run would compute about %.3g points (largest boundary %.3g), write "
 		"about %.3g MB and hold about %.3g MB: more than --max-points %.6g allows; raise --max-points to run "
