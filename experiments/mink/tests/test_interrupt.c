@@ -254,6 +254,10 @@ int main(int argc, char **argv)
 	snprintf(dr->out[1], sizeof dr->out[1], "%s/driver.csv.meta", dir);
 	char *a2[] = { argv[2], "--trials", "100", "--n", "1000", "--force", "--out", dr->out[0], NULL };
 	memcpy(dr->argv, a2, sizeof a2);
+	/* a run of this test that was itself killed (a ctest timeout) may have
+	 * left its child's temporary files here: they are not this run's */
+	int old = mkIt_Temps(dir);
+	if (old) printf("test_interrupt: removed %d temporary files left by an earlier, killed run\n", old);
 	for (int i = 0; i < 3; ++i) {
 		mkIt_Reference(&cases[i]);
 		int nexact = 0, nout = 0;
