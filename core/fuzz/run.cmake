@@ -1,10 +1,12 @@
 # Runs libFuzzer harnesses briefly, for CTest.
 #
-#   cmake -DNAMES=spec,sum -DBIN_DIR=<dir of fuzz_*> -DCORPUS_ROOT=<seed corpus>
-#         -DWORK_ROOT=<scratch dir> [-DSECONDS=18] -P run.cmake
+#   cmake -DNAMES=spec,sum,... -DBIN_DIR=<dir of fuzz_*> -DCORPUS_ROOT=<seed corpus>
+#         -DWORK_ROOT=<scratch dir> [-DCORPUS_POINTS=<fuzz_points' seeds>]
+#         [-DSECONDS=18] -P run.cmake
 #   cmake -DMISSING="<what to install>" -P run.cmake      (fails with that text)
 #
 # Each harness fuzz_<name> starts from the seed corpus CORPUS_ROOT/<name>
+# (fuzz_points from CORPUS_POINTS: its seeds live beside its source)
 # (read only: new inputs go to WORK_ROOT/<name>), with a fixed seed, and stops
 # after SECONDS seconds (18 by default: about 20 with start-up and the final
 # pass) or 2,000,000 inputs, whichever comes first. A crash,
@@ -24,15 +26,22 @@ foreach(name IN LISTS names)
     message(FATAL_ERROR "fuzz harness ${exe} was not built")
   endif()
   file(MAKE_DIRECTORY "${work}")
+  set(seeds "${CORPUS_ROOT}/${name}")
+  if(name STREQUAL "points")
+    set(seeds "${CORPUS_POINTS}")
+  endif()
+  # the longest input worth trying: a SPEC line, a pair's bytes (fuzz_collide
+  # reads 61), or a few dozen lines of a file
+  set(maxlen 2048)
   if(name STREQUAL "spec")
     set(maxlen 256)
-  else()
-    set(maxlen 2048)
+  elseif(name STREQUAL "collide")
+    set(maxlen 64)
   endif()
   execute_process(
     COMMAND "${exe}" -seed=1 -max_total_time=${SECONDS} -runs=2000000 -max_len=${maxlen}
             -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
-            "-artifact_prefix=${WORK_ROOT}/${name}-" "${work}" "${CORPUS_ROOT}/${name}"
+            "-artifact_prefix=${WORK_ROOT}/${name}-" "${work}" "${seeds}"
     RESULT_VARIABLE rc
     OUTPUT_VARIABLE out
     ERROR_VARIABLE err)

@@ -18,6 +18,9 @@
 
 #define SCENE_FILE_MAX (1L << 30)
 #define THREADS_MAX 256
+/* --max-points: the default cap on a run's estimated points (about 1.4 GB
+ * of output in 3D with faces, 0.6 GB in 2D) */
+#define SCENE_POINTS_DEFAULT 1e7
 
 static void mkSceneCmd_Help(FILE *fp)
 {
@@ -101,6 +104,7 @@ typedef struct mkSceneCmd {
 	mkSceneCmdSum *sum;
 	long short_of_tol;
 	int unions;       /* parts or objects: the rows end with part,object */
+	double max_points;   /* cap on the estimated points of the run */
 } mkSceneCmd;
 
 /* 1 when the scene has a robot of several parts or `object` lines. */
@@ -153,6 +157,34 @@ static int mkSceneCmd_Prepare(mkSceneCmd *s)
 	return 0;
 }
 
+/* Estimate the run's points, output bytes and memory (mkCSpace_Estimate)
+ * and refuse it beyond --max-points. Returns 0, or 2 after printing. */
+static int mkSceneCmd_Estimate(mkSceneCmd *s, long begin, long end)
+{
+	char msg[2048];
+	mkCSpaceEstimate e;
+	if (mkCSpace_Estimate(s->cs, (int)begin, (int)end, &e, msg, sizeof msg) != MK_OK) {
+		fprintf(stderr, "mink scene: %s\n", msg);
+		return 1;
+	}
+	if (e.points <= s->max_points)
+		return 0;
+	/* bytes per row: the indices, the kind and %.17g numbers (~22 bytes
+	 * each); memory: a thread's scratch space per point of the largest
+	 * boundary (3D about 1000 bytes: normals, points, triangles, edge
+	 * hashes, the outer polytope; 0.96 GB a thread was measured at 10^6
+	 * points with --outer; 2D about 100) and the finished boundaries it
+	 * may hold */
+	int dim = s->scene.dim, bounds = s->o.outer ? 2 : 1;
+	double bytes = e.points * (dim == 3 ? 81.0 : 59.0) + e.faces * 32.0;
+	double held = (dim == 3 ? 1000.0 : 100.0) + MK_CSPACE_WINDOW * bounds * (dim == 3 ? 48.0 : 16.0);
+	double memory = s->o.threads * e.largest * held;
+	fprintf(stderr, "mink scene: %s: the run would compute about %.3g points (largest boundary %.3g), write "
+		"about %.3g MB and hold about %.3g MB: more than --max-points %.6g allows; raise --max-points to run "
+		"it anyway, or raise --tol\n", s->file, e.points, e.largest, bytes / 1e6, memory / 1e6, s->max_points);
+	return 2;
+}
+
 static int mkSceneCmd_OpenOutputs(mkSceneCmd *s)
 {
 	char msg[2048], fpath[MK_PATH_MAX];
@@ -175,44 +207,35 @@ static int mkSceneCmd_OpenOutputs(mkSceneCmd *s)
 	return 0;
 }
 
-/* The rows of one boundary (obstacle i, robot part j); tail: ",part,object" values or "". */
-static void mkSceneCmd_WriteBoundary(mkSceneCmd *s, const mkCSpaceBoundary *b, int i, int ori, const char *kind,
-	const char *tail)
+/* The sink of mkCSpace_Stream: one boundary's rows (obstacle i, robot part
+ * j), in the run's order; with parts or objects the rows end with
+ * ",part,object". */
+static int mkSceneCmd_Write(void *user, int ori, int i, int j, mkBound k, const mkCSpaceBoundary *b)
 {
+	static const char *const kinds[] = {"inner", "outer"};
+	mkSceneCmd *s = user;
 	FILE *fo = s->f[0].fp, *ff = s->open[1] ? s->f[1].fp : NULL;
-	for (int j = 0; j < b->count; ++j) {
-		long q = (long)j * b->stride;
+	char tail[MK_SCENE_NAME_MAX + 32] = "";
+	if (s->unions)
+		snprintf(tail, sizeof tail, ",%d,%s", j, s->scene.objects[s->scene.obstacle_object[i]].name);
+	for (int n = 0; n < b->count; ++n) {
+		long q = (long)n * b->stride;
 		if (s->scene.dim == 2)
-			fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g%s\n", i, ori, kind, j, b->x[q], b->y[q], tail);
+			fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g%s\n", i, ori, kinds[k], n, b->x[q], b->y[q], tail);
 		else
-			fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g,%.17g%s\n", i, ori, kind, j, b->x[q], b->y[q], b->z[q], tail);
+			fprintf(fo, "%d,%d,%s,%d,%.17g,%.17g,%.17g%s\n", i, ori, kinds[k], n, b->x[q], b->y[q], b->z[q], tail);
 	}
 	for (int f = 0; ff && f < b->face_count; ++f)
-		fprintf(ff, "%d,%d,%s,%d,%d,%d,%d%s\n", i, ori, kind, f, b->faces[3 * f], b->faces[3 * f + 1],
+		fprintf(ff, "%d,%d,%s,%d,%d,%d,%d%s\n", i, ori, kinds[k], f, b->faces[3 * f], b->faces[3 * f + 1],
 			b->faces[3 * f + 2], tail);
 	mkSceneCmdSum *sum = &s->sum[i];
 	sum->points += b->count;
 	sum->error = fmax(sum->error, b->error);
 	sum->model_error = fmax(sum->model_error, b->model_error);
 	sum->seconds += b->seconds;
-}
-
-/* The rows of one computed chunk. */
-static void mkSceneCmd_WriteChunk(mkSceneCmd *s, const mkCSpaceResult *res)
-{
-	static const char *const kinds[] = {"inner", "outer"};
-	int nob = s->scene.obstacle_count;
-	char tail[MK_SCENE_NAME_MAX + 32] = "";
-	for (int ori = res->orientation_begin; ori < res->orientation_begin + res->orientations; ++ori)
-		for (int i = 0; i < nob; ++i)
-			for (int j = 0; j < res->parts; ++j)
-				for (int k = 0; k < res->bounds; ++k) {
-					mkCSpaceBoundary b = mkCSpaceResult_PartBoundary(res, ori, i, j, (mkBound)k);
-					if (s->unions)
-						snprintf(tail, sizeof tail, ",%d,%s", j, s->scene.objects[s->scene.obstacle_object[i]].name);
-					mkSceneCmd_WriteBoundary(s, &b, i, ori, kinds[k], tail);
-				}
-	s->short_of_tol += mkCSpaceResult_OverTolerance(res);
+	s->short_of_tol += !b->within_tol;
+	/* a full disk stops the run at once */
+	return ferror(fo) || (ff && ferror(ff));
 }
 
 static void mkSceneCmd_WriteReport(const mkSceneCmd *s)
@@ -229,27 +252,17 @@ static void mkSceneCmd_WriteReport(const mkSceneCmd *s)
 			mkCSpace_ModelName(s->cs, i), s->sum[i].model_error, s->sum[i].points, s->sum[i].error, s->sum[i].seconds);
 }
 
-/* Compute the orientations [begin, end) in chunks, so that memory stays
- * bounded (every boundary is computed alone: the chunking changes nothing
- * in the output), and write everything. Returns 0, or 1 after printing. */
+/* Compute the orientations [begin, end), each boundary written as soon as
+ * it and those before it are finished (mkCSpace_Stream: memory bounded by
+ * what the threads hold), and commit everything. Returns 0, or 1 after
+ * printing. */
 static int mkSceneCmd_Compute(mkSceneCmd *s, long begin, long end)
 {
 	char msg[2048];
-	int nob = s->scene.obstacle_count;
-	long budget = s->scene.dim == 2 ? 20000 : 2000; /* (orientation, obstacle, part) tasks per chunk */
-	long pairs = (long)nob * s->scene.part_count;
-	long chunk = pairs > 0 ? budget / pairs : (long)s->scene.orientation_count + 1;
-	if (chunk < 1)
-		chunk = 1;
-	for (long c0 = begin; c0 < end; c0 += chunk) {
-		long c1 = c0 + chunk < end ? c0 + chunk : end;
-		mkCSpaceResult res;
-		if (mkCSpace_Run(s->cs, (int)c0, (int)c1, &res, msg, sizeof msg) != MK_OK) {
-			fprintf(stderr, "mink scene: %s\n", msg);
-			return 1;
-		}
-		mkSceneCmd_WriteChunk(s, &res);
-		mkCSpaceResult_Free(&res);
+	if (mkCSpace_Stream(s->cs, (int)begin, (int)end, mkSceneCmd_Write, s, msg, sizeof msg) != MK_OK) {
+		fprintf(stderr, "mink scene: %s%s\n", msg, ferror(s->f[0].fp) || (s->open[1] && ferror(s->f[1].fp))
+			? " (write error on the output)" : "");
+		return 1;
 	}
 	if (s->open[2])
 		mkSceneCmd_WriteReport(s);
@@ -273,6 +286,7 @@ int mkCmd_Scene(int argc, char **argv)
 	memset(&s, 0, sizeof s);
 	s.o = mkCSpaceOptions_Default();
 	s.o.interleaved = 1; /* the rows' order */
+	s.max_points = SCENE_POINTS_DEFAULT;
 	for (int k = 0; k < 3; ++k)
 		s.f[k].slot = -1;
 	long threads = 1;
@@ -291,6 +305,8 @@ int mkCmd_Scene(int argc, char **argv)
 		MK_FLAG_SWITCH("--outer", "also the outer boundaries", &s.o.outer),
 		MK_FLAG_LONG("--threads", "K", "worker threads (default 1); the output does not depend on K", &threads, 1,
 			THREADS_MAX),
+		MK_FLAG_DOUBLE("--max-points", "N", "refuse a run whose estimated points exceed N (default 1e7),\n"
+			"before it starts, with the estimate of its points, output and memory", &s.max_points, 8, 1e15),
 		MK_FLAG_TEXT("--shard", "I/N", "only block I (0-based) of N of the orientations; the shards'\n"
 			"rows concatenated in order (one header) equal the whole run's", &shard, mkShard_ParseFlag),
 		MK_FLAG_IMPL("--impl", "kernel (default auto)", &impl),
@@ -308,6 +324,8 @@ int mkCmd_Scene(int argc, char **argv)
 		long begin, end;
 		mkShard_Range(shard, s.scene.orientation_count, &begin, &end);
 		rc = mkSceneCmd_Prepare(&s);
+		if (rc == 0)
+			rc = mkSceneCmd_Estimate(&s, begin, end);
 		if (rc == 0)
 			rc = mkSceneCmd_OpenOutputs(&s);
 		if (rc == 0)

@@ -1,6 +1,5 @@
 /* cmd_verify.c - `mink verify`: put a method's output (a CSV of points, as
  * `mink sum` writes it) through the referee and print the verdict. */
-#include <ctype.h>
 #include <float.h>
 #include <errno.h>
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* points.h - reading a point set from a CSV file, for the subcommands that
  * take one (`mink verify`, `mink score`). */
-#ifndef MINK_EXP_POINTS_H
-#define MINK_EXP_POINTS_H
+#ifndef MINK_CLI_POINTS_H
+#define MINK_CLI_POINTS_H
 
 #include <mink/registry.h>
 

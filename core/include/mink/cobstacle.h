@@ -30,7 +30,9 @@
  * and error, the robot's model, the tolerance); mkCSpace_Run computes any
  * range of orientations into an mkCSpaceResult; mkCSpaceResult_Boundary
  * reads one boundary in the layout the options chose (one array per
- * coordinate, or interleaved).
+ * coordinate, or interleaved); mkCSpace_Stream hands each boundary to the
+ * caller as it is finished instead of keeping them, and mkCSpace_Estimate
+ * says beforehand about how many points a run will make.
  *
  * Names: one prefix, mkCSpace, for scene runs and single boundaries alike
  * (mkCSpace2_Adaptive, ...): the library is libmink_cspace, and a
@@ -43,8 +45,9 @@
  * count.
  *
  * Memory: mkCSpace_Create allocates the prepared scene (mkCSpace_Destroy
- * releases it), mkCSpace_Run the result (mkCSpaceResult_Free), the
- * single-boundary functions grow the caller's buffers. */
+ * releases it), mkCSpace_Run the result (mkCSpaceResult_Free),
+ * mkCSpace_Stream only what its threads hold (released before it returns),
+ * the single-boundary functions grow the caller's buffers. */
 #ifndef MINK_COBSTACLE_H
 #define MINK_COBSTACLE_H
 
@@ -162,6 +165,48 @@ MK_API double mkCSpaceResult_MaxError(const mkCSpaceResult *r);
 /* How many boundaries are not certified within the tolerance. */
 MK_API long mkCSpaceResult_OverTolerance(const mkCSpaceResult *r);
 MK_API void mkCSpaceResult_Free(mkCSpaceResult *r);
+
+/* ---- streaming: each boundary handed over as it is finished ----------------
+ * The caller's sink receives boundary (orientation o, obstacle i, bound k)
+ * as a view valid during the call only. A nonzero return stops the run. */
+typedef int mkCSpaceSink(void *user, int o, int i, int part, mkBound k, const mkCSpaceBoundary *b);
+
+/* Compute the orientations [begin, end) as mkCSpace_Run does, with the same
+ * points, faces, errors and checksums, but hand each boundary to sink in
+ * mkCSpace_Run's index order (orientation, then obstacle, then bound) as
+ * soon as it and every boundary before it are finished, instead of keeping
+ * them: the calls are never concurrent, come from any of the run's threads,
+ * and the memory held is the threads' scratch space plus the boundaries of
+ * at most MK_CSPACE_WINDOW * threads (orientation, obstacle) tasks that are
+ * finished but still waiting for an earlier one. Needs store = 1 and the
+ * adaptive or uniform mode (MK_ERR_UNSUPPORTED otherwise). Fails as
+ * mkCSpace_Run, or with MK_ERR_ARGUMENT ("stopped by the caller") when the
+ * sink returned nonzero; the boundaries handed over until then stay
+ * handed over. */
+#define MK_CSPACE_WINDOW 4
+MK_API mkResult mkCSpace_Stream(const mkCSpace *cs, int begin, int end, mkCSpaceSink *sink, void *user,
+	char *msg, size_t msglen);
+
+/* A run's size, estimated before it starts (mkCSpace_Estimate). */
+typedef struct mkCSpaceEstimate {
+	double points;          /* points of all boundaries of the run */
+	double faces;           /* 3D: their triangles (2 per point, less 4 per boundary); 2D: 0 */
+	double largest;         /* points of the largest boundary */
+	long sampled;           /* boundaries computed for the estimate */
+} mkCSpaceEstimate;
+
+/* Estimate the size of mkCSpace_Run(cs, begin, end): the boundaries of the
+ * first orientation for up to 32 obstacles spread evenly over the scene
+ * (all when fewer), each computed with at most 2000 points; a boundary
+ * finished within T counts as it is, one stopped by that cap with error e
+ * as 2000 (e / T) points in 3D, 2000 (e / T)^(1/2) in 2D (the adaptive
+ * sampling's rate: triangles' errors fall as their area, polygon edges' as
+ * their length squared), at most max_points; the sample stands for all
+ * obstacles and orientations. An estimate: within a factor of 4 of the run
+ * in the tests, over rather than under in 3D (2.9 to 3.3 times there); it takes the time of the sample (milliseconds). Fails
+ * as mkCSpace_Run. */
+MK_API mkResult mkCSpace_Estimate(const mkCSpace *cs, int begin, int end, mkCSpaceEstimate *out, char *msg,
+	size_t msglen);
 
 /* ---- single boundaries, for callers with their own bodies ----------------
  * K = b1 (+) (-b2) (the contact space of mink/sum.h). Adaptive inner (outer)

@@ -226,9 +226,13 @@ mkCSpaceBoundary mkCSpaceResult_Boundary(const mkCSpaceResult *r, int o, int i, 
 
 mkCSpaceBoundary mkCSpaceResult_PartBoundary(const mkCSpaceResult *r, int o, int i, int part, mkBound k)
 {
+	return mkCSpaceResult_At(r, (((long)(o - r->orientation_begin) * r->obstacles + i) * r->parts + part) * r->bounds + (int)k);
+}
+
+mkCSpaceBoundary mkCSpaceResult_At(const mkCSpaceResult *r, long b)
+{
 	mkCSpaceBoundary v;
 	memset(&v, 0, sizeof v);
-	long b = (((long)(o - r->orientation_begin) * r->obstacles + i) * r->parts + part) * r->bounds + (int)k;
 	v.count = r->count[b];
 	v.error = r->error[b];
 	v.model_error = r->model_error[b];

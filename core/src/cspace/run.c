@@ -23,6 +23,11 @@ typedef struct mkCSpaceJob {
 	mkMat2 *poses2;
 	mkMat3 *poses3;
 	mkCSpaceResult *res;
+	/* streaming: task t's boundaries in slot t % window of res */
+	long window;
+	mkCSpaceSink *sink;
+	void *user;
+	int stopped;             /* the sink returned nonzero */
 } mkCSpaceJob;
 
 static double mkCSpace_Now(void)
@@ -127,9 +132,10 @@ static mkResult mkCSpaceJob_Task(void *ctx, mkCSpaceWork *w, long task)
 	mkCSpaceResult *res = J->res;
 	int pj = (int)(task % cs->parts), i = (int)(task / cs->parts % cs->nob);
 	int orel = (int)(task / cs->parts / cs->nob), ori = J->begin + orel;
+	long slot = J->window ? task % J->window : task;
 	double t0 = mkCSpace_Now();
 	for (int k = 0; k < cs->bounds; ++k) {
-		long b = task * cs->bounds + k;
+		long b = slot * cs->bounds + k;
 		int count = 0;
 		double err = NAN, sum = 0.0, *p[3] = {NULL, NULL, NULL};
 		mkResult r;
@@ -148,7 +154,7 @@ static mkResult mkCSpaceJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		res->checksum[b] = sum;
 		res->seconds[b] = 0.0;
 	}
-	res->seconds[task * cs->bounds] = mkCSpace_Now() - t0;
+	res->seconds[slot * cs->bounds] = mkCSpace_Now() - t0;
 	return MK_OK;
 }
 
@@ -284,4 +290,105 @@ mkResult mkCSpace_Run(const mkCSpace *cs, int begin, int end, mkCSpaceResult *ou
 	free(J.poses3);
 	if (r != MK_OK) mkCSpaceResult_Free(out);
 	return r;
+}
+
+/* Streaming: hand task t's boundaries to the sink and release them. */
+static mkResult mkCSpaceJob_Emit(void *ctx, mkCSpaceWork *w, long task)
+{
+	(void)w;
+	mkCSpaceJob *J = ctx;
+	const mkCSpace *cs = J->cs;
+	mkCSpaceResult *res = J->res;
+	long slot = task % J->window;
+	int pj = (int)(task % cs->parts), i = (int)(task / cs->parts % cs->nob);
+	int ori = J->begin + (int)(task / cs->parts / cs->nob);
+	for (int k = 0; k < cs->bounds; ++k) {
+		long b = slot * cs->bounds + k;
+		mkCSpaceBoundary v = mkCSpaceResult_At(res, b);
+		if (!J->stopped && J->sink(J->user, ori, i, pj, (mkBound)k, &v) != 0) J->stopped = 1;
+		free(res->points[b]);
+		res->points[b] = NULL;
+		if (res->faces) {
+			free(res->faces[b]);
+			res->faces[b] = NULL;
+		}
+	}
+	return J->stopped ? MK_ERR_ARGUMENT : MK_OK;
+}
+
+mkResult mkCSpace_Stream(const mkCSpace *cs, int begin, int end, mkCSpaceSink *sink, void *user,
+	char *msg, size_t msglen)
+{
+	if (!cs || !sink) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no prepared scene or sink");
+	if (begin < 0 || end > cs->scene->orientation_count || begin > end)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "orientations [%d, %d) are out of range: the scene has %d",
+			begin, end, cs->scene->orientation_count);
+	if (!cs->opt.store || cs->opt.mode == MK_CSPACE_PAPER)
+		return mkFail(MK_ERR_UNSUPPORTED, msg, msglen, "streaming needs stored points and the adaptive or uniform mode");
+	mkCSpaceJob J;
+	memset(&J, 0, sizeof J);
+	mkCSpaceResult res;
+	memset(&res, 0, sizeof res);
+	J.cs = cs; J.begin = begin; J.nor = end - begin; J.res = &res;
+	J.sink = sink; J.user = user;
+	J.window = (long)MK_CSPACE_WINDOW * cs->opt.threads;
+	/* window x 1 "obstacles x orientations": mkCSpaceResult_Free releases window * bounds boundaries */
+	res.dim = cs->dim; res.obstacles = (int)J.window; res.orientations = 1; res.parts = 1; res.bounds = cs->bounds;
+	res.tol = cs->opt.tol;
+	res.interleaved = cs->opt.interleaved != 0;
+	mkResult r;
+	if (!mkCSpaceResult_Alloc(&res, cs, J.window * cs->bounds)) {
+		r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	} else {
+		r = mkCSpacePool_RunOrdered(mkCSpaceJob_Task, mkCSpaceJob_Emit, &J, (long)cs->nob * cs->parts * J.nor, cs->opt.threads,
+			J.window);
+		if (J.stopped) mkFail(r, msg, msglen, "stopped by the caller");
+		else if (r != MK_OK) mkFail(r, msg, msglen, "%s while computing boundaries", mkResult_Name(r));
+	}
+	mkCSpaceResult_Free(&res);
+	return r;
+}
+
+mkResult mkCSpace_Estimate(const mkCSpace *cs, int begin, int end, mkCSpaceEstimate *out, char *msg, size_t msglen)
+{
+	if (!cs || !out) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no prepared scene or estimate");
+	memset(out, 0, sizeof *out);
+	if (begin < 0 || end > cs->scene->orientation_count || begin > end)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "orientations [%d, %d) are out of range: the scene has %d",
+			begin, end, cs->scene->orientation_count);
+	if (begin == end || cs->nob == 0) return MK_OK;
+	enum { SAMPLE_OBSTACLES = 32, SAMPLE_CAP = 2000 };
+	mkCSpace tmp = *cs;
+	int adaptive = cs->opt.mode == MK_CSPACE_ADAPTIVE;
+	if (adaptive && tmp.opt.max_points > SAMPLE_CAP) tmp.opt.max_points = SAMPLE_CAP;
+	tmp.opt.store = 0;
+	mkCSpaceJob J;
+	memset(&J, 0, sizeof J);
+	J.cs = &tmp;
+	mkCSpaceWork w;
+	memset(&w, 0, sizeof w);
+	int ns = cs->nob < SAMPLE_OBSTACLES ? cs->nob : SAMPLE_OBSTACLES;
+	double sum = 0.0;
+	mkResult r = MK_OK;
+	for (int s = 0; s < ns && r == MK_OK; ++s) {
+		int i = (int)((long)s * cs->nob / ns), j = s % cs->parts;
+		for (int k = 0; k < cs->bounds && r == MK_OK; ++k) {
+			int count = 0;
+			double err = NAN, *p[3];
+			r = cs->dim == 2 ? mkCSpaceJob_Boundary2(&tmp, &w, begin, i, j, k, &count, &err)
+				: mkCSpaceJob_Boundary3(&J, &w, 0, begin, i, j, k, &count, &err, p);
+			double ts = cs->opt.tol - cs->obs_err[2 * i + k] - cs->part_err[2 * j + k], n = count;
+			if (adaptive && err > ts)
+				n = fmin(count * (cs->dim == 3 ? err / ts : sqrt(err / ts)), (double)cs->opt.max_points);
+			sum += n;
+			if (n > out->largest) out->largest = n;
+			++out->sampled;
+		}
+	}
+	mkCSpaceWork_Free(&w);
+	if (r != MK_OK) return mkFail(r, msg, msglen, "%s while estimating the run", mkResult_Name(r));
+	double boundaries = (double)cs->nob * cs->parts * (double)(end - begin) * cs->bounds;
+	out->points = sum / (double)out->sampled * boundaries;
+	out->faces = cs->dim == 3 ? 2.0 * out->points - 4.0 * boundaries : 0.0;
+	return MK_OK;
 }

@@ -124,5 +124,12 @@ struct mkCSpace {
  * mkCSpaceWork; the first failure stops the rest and is returned. */
 typedef mkResult mkCSpaceTaskFn(void *ctx, mkCSpaceWork *w, long task);
 mkResult mkCSpacePool_Run(mkCSpaceTaskFn *fn, void *ctx, long ntasks, int threads);
+/* As mkCSpacePool_Run, and each finished task t is handed to emit(ctx, w,
+ * t) in task order, never two at once; a task is started only when fewer
+ * than `window` tasks before it are still to be emitted (window >= 1). */
+mkResult mkCSpacePool_RunOrdered(mkCSpaceTaskFn *fn, mkCSpaceTaskFn *emit, void *ctx, long ntasks, int threads,
+	long window);
+/* Boundary b (the result's index) as a view (cspace.c). */
+mkCSpaceBoundary mkCSpaceResult_At(const mkCSpaceResult *r, long b);
 
 #endif

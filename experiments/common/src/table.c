@@ -170,6 +170,14 @@ static void mkTable_Parse(mkTable *t, const char *path, char *buf)
 	t->present = 1;
 }
 
+void mkTable_FromText(mkTable *t, char *buf, const char *name, long *blank)
+{
+	memset(t, 0, sizeof *t);
+	if (blank)
+		*blank = mkDropBlankLines(buf);
+	mkTable_Parse(t, name, buf);
+}
+
 /* Load path into t. A missing file leaves t->present = 0; a malformed one
  * is reported and treated as missing. */
 void mkTable_Load(mkTable *t, const char *path)
@@ -177,7 +185,7 @@ void mkTable_Load(mkTable *t, const char *path)
 	memset(t, 0, sizeof *t);
 	char *buf = mkReadAll(path);
 	if (buf)
-		mkTable_Parse(t, path, buf);
+		mkTable_FromText(t, buf, path, NULL);
 }
 
 void mkTable_LoadBlocks(mkTable *t, const char *path, long *blank)
@@ -185,10 +193,8 @@ void mkTable_LoadBlocks(mkTable *t, const char *path, long *blank)
 	memset(t, 0, sizeof *t);
 	*blank = 0;
 	char *buf = mkReadAll(path);
-	if (!buf)
-		return;
-	*blank = mkDropBlankLines(buf);
-	mkTable_Parse(t, path, buf);
+	if (buf)
+		mkTable_FromText(t, buf, path, blank);
 }
 
 void mkTable_Free(mkTable *t)

@@ -38,6 +38,11 @@ void mkTable_Load(mkTable *t, const char *path);
 /* As mkTable_Load, for the geometry files: blank lines separate blocks of
  * rows; they are dropped, and those after the header counted in *blank. */
 void mkTable_LoadBlocks(mkTable *t, const char *path, long *blank);
+/* The text of a result already in memory: buf (from malloc, NUL-terminated)
+ * becomes the table's, freed by mkTable_Free (or at once when malformed:
+ * reported on stderr under `name`, t->present = 0). With blank not NULL the
+ * blank lines are dropped and counted as mkTable_LoadBlocks does. */
+void mkTable_FromText(mkTable *t, char *buf, const char *name, long *blank);
 void mkTable_Free(mkTable *t);
 /* The index of the column `name`, or -1. */
 int mkTable_Col(const mkTable *t, const char *name);
