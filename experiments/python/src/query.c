@@ -553,6 +553,7 @@ static PyObject *mkPy_BatchResult(mkPyBatchOut *o, npy_intp n)
 	for (int i = 0; i < 10; ++i)
 		PyStructSequence_SET_ITEM(s, i, a[i] ? (PyObject *)a[i] : (Py_INCREF(Py_None), Py_None));
 	PyStructSequence_SET_ITEM(s, 10, lanes);
+	/* the struct sequence owns the arrays now (they come first in o) */
 	memset(o, 0, offsetof(mkPyBatchOut, contact));
 	return s;
 }
