@@ -11,9 +11,13 @@
 
 const char *const mkCollision_Columns[] = {
 	"pair", "trial", "algorithm", "seconds", "status", "distance", "referee_distance", "error", "agrees",
-	"success", "iterations", "limited", "referee_certain", "certified", NULL
+	"success", "iterations", "limited", "referee_certain", "certified", "path", NULL
 };
 const char *const mkCollision_PairNames[MK_COLLISION_KINDS] = { "ellipsoids", "superquadrics", "near", "deep" };
+/* The batch entries' rows, by mkBatchMode, and the names of mkBatchPath. */
+static const char *const mkBatchEntry[MK_COLLISION_MODES] = { "minksum-batch-status", "minksum-batch-clearance",
+	"minksum-batch-distance", "minksum-batch-full" };
+static const char *const mkPathName[4] = { "separating", "overlap-point", "one-pair", "failed" };
 
 /* The near kind's separations, in units of the size, by (trial / 2) % 12. */
 static const double mkNearSteps[12] = { 1e-1, -1e-1, 1e-2, -1e-2, 1e-3, -1e-3, 1e-4, -1e-4, 1e-5, -1e-5,
@@ -99,6 +103,15 @@ void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK
 		"for overlaps by a branch and bound over the sphere of normals within MK_COLLIDE3_GLOBAL_TOL of the scale; 0: "
 		"its budget ran out, the depth is then a local optimum with a wider bracket); empty for entries that do not");
 	mkMeta_Set(meta, "minksum_build", mkCollide3_Build());
+	mkMeta_Set(meta, "batch_lanes", mkCollide3_BatchLanes());
+	mkMeta_SetDouble(meta, "batch_chunk", MK_COLLISION_CHUNK);
+	mkMeta_SetDouble(meta, "batch_clearance_delta", MK_COLLISION_DELTA);
+	mkMeta_Set(meta, "batch", "rows minksum-batch-<mode>: each pair kind's pairs of a chunk of batch_chunk trials "
+		"(aligned to trial numbers, cut at the run's ends) answered by one mkCollide3_Batch call per mode, before "
+		"the one-pair entries run on the chunk; seconds = the call's time (repeated once when under 1 ms, the "
+		"faster kept) / the chunk's pairs; distance where the mode gives one (distance: non-overlapping pairs, "
+		"full: all); path = where the answer came from (separating, overlap-point, one-pair, failed); "
+		"clearance asked: batch_clearance_delta (length units)");
 	mkMeta_Set(meta, "timer", "CLOCK_MONOTONIC around the entry's run only (prepare untimed), one thread; a run "
 		"under 1 ms is repeated at once on the same pair and the faster of the two kept (the first call after "
 		"the other entries' calls finds its code and the pair out of cache)");
@@ -254,15 +267,15 @@ static void mkCsv_Maybe(mkCsv *csv, double v)
 
 /* The row of one entry on one pair: limited rows (the entry's --limit
  * reached) have status `skipped` and nothing measured. */
-static void mkWriteRow(mkCsv *csv, int kind, long trial, const mkCollider *c, double seconds, mkResult r,
-	const mkCollision3 *out, const mkTruth *truth, long limit, int skipped)
+static void mkWriteRow(mkCsv *csv, int kind, long trial, const char *entry, double seconds, mkResult r,
+	const mkCollision3 *out, const mkTruth *truth, long limit, int skipped, const char *path)
 {
 	const char *status = skipped ? "skipped" : mkStatusName(r, out->status);
 	int failed = strcmp(status, "failed") == 0;
 	double dist = !skipped && !failed && isfinite(out->distance) ? out->distance : NAN;
 	mkCsv_Str(csv, mkCollision_PairNames[kind]);
 	mkCsv_Int(csv, trial);
-	mkCsv_Str(csv, c->name);
+	mkCsv_Str(csv, entry);
 	mkCsv_Maybe(csv, skipped ? NAN : seconds);
 	mkCsv_Str(csv, status);
 	mkCsv_Maybe(csv, dist);
@@ -295,20 +308,23 @@ static void mkWriteRow(mkCsv *csv, int kind, long trial, const mkCollider *c, do
 		mkCsv_Empty(csv);
 	else
 		mkCsv_Int(csv, out->certified);
+	if (path)
+		mkCsv_Str(csv, path);
+	else
+		mkCsv_Empty(csv);
 	mkCsv_EndRow(csv);
 }
 
-int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *csv)
+int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, const mkCollisionChunk *chunk, mkCsv *csv)
 {
 	const mkCollider *referee = mkReferee();
 	mkColliderScratch scratch;
-	mkBody3 b1, b2;
-	if (!referee) {
-		fprintf(stderr, "collision: the collider registry has no referee\n");
+	if (!referee || trial < chunk->begin || trial >= chunk->begin + chunk->count) {
+		fprintf(stderr, "collision: %s trial %ld: %s\n", mkCollision_PairNames[kind], trial,
+			referee ? "not in the chunk drawn" : "the collider registry has no referee");
 		return -1;
 	}
-	if (mkDrawPair(o, kind, trial, referee, &scratch, &b1, &b2) != 0)
-		return -1;
+	mkBody3 b1 = chunk->b1[kind][trial - chunk->begin], b2 = chunk->b2[kind][trial - chunk->begin];
 	mkTruth truth;
 	if (mkCollider_Run(referee, b1, b2, &scratch, &truth.ref) != MK_OK || !isfinite(truth.ref.distance)) {
 		fprintf(stderr, "collision: %s trial %ld: the referee failed\n", mkCollision_PairNames[kind], trial);
@@ -327,7 +343,7 @@ int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *
 		mkCollision3 out;
 		mkCollision3_Clear(&out);
 		if (limit >= 0 && trial >= limit) {
-			mkWriteRow(csv, kind, trial, c, 0.0, MK_OK, &out, &truth, limit, 1);
+			mkWriteRow(csv, kind, trial, c->name, 0.0, MK_OK, &out, &truth, limit, 1, NULL);
 			continue;
 		}
 		mkResult r = c->prepare ? c->prepare(b1, b2, &scratch) : MK_OK;
@@ -346,7 +362,75 @@ int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *
 			if (r2 == MK_OK && s2 < seconds)
 				seconds = s2;
 		}
-		mkWriteRow(csv, kind, trial, c, seconds, r, &out, &truth, limit, 0);
+		mkWriteRow(csv, kind, trial, c->name, seconds, r, &out, &truth, limit, 0, NULL);
+	}
+	int at = (int)(trial - chunk->begin);
+	for (int m = 0; m < MK_COLLISION_MODES; ++m) {
+		mkCollision3 out;
+		mkCollision3_Clear(&out);
+		out.status = chunk->status[m][kind][at];
+		out.distance = chunk->distance[m][kind][at];
+		int path = chunk->path[m][kind][at];
+		mkWriteRow(csv, kind, trial, mkBatchEntry[m], chunk->seconds[m][kind],
+			path == MK_PATH_FAILED ? MK_ERR_CONVERGENCE : MK_OK, &out, &truth, -1, 0, mkPathName[path & 3]);
+	}
+	return 0;
+}
+
+/* The batch entries on one kind's pairs of the chunk: one call per mode. */
+static int mkBatchKind(int kind, mkCollisionChunk *ch)
+{
+	int n = (int)ch->count;
+	mkBatchPairs3 pairs = { n, ch->b1[kind], ch->b2[kind], NULL, NULL };
+	for (int m = 0; m < MK_COLLISION_MODES; ++m) {
+		mkBatchOut3 out = { ch->status[m][kind], ch->distance[m][kind], NULL, NULL, NULL, NULL, NULL, NULL,
+			ch->path[m][kind] };
+		double t0 = mkClock_Wall();
+		mkResult r = mkCollide3_Batch(&pairs, (mkBatchMode)m, MK_COLLISION_DELTA, &out, NULL);
+		double seconds = mkClock_Wall() - t0;
+		if (r != MK_OK && r != MK_ERR_CONVERGENCE) {
+			fprintf(stderr, "collision: %s trials %ld..%ld: mkCollide3_Batch (%s) failed: %s\n",
+				mkCollision_PairNames[kind], ch->begin, ch->begin + n - 1, mkBatchMode_Name((mkBatchMode)m),
+				mkResult_Name(r));
+			return -1;
+		}
+		if (seconds < MK_WARM_BELOW) {
+			/* the same rule as the one-pair entries: a second call, the
+			 * faster kept (the answers are the same: the call is
+			 * deterministic) */
+			t0 = mkClock_Wall();
+			mkCollide3_Batch(&pairs, (mkBatchMode)m, MK_COLLISION_DELTA, &out, NULL);
+			double s2 = mkClock_Wall() - t0;
+			seconds = s2 < seconds ? s2 : seconds;
+		}
+		ch->seconds[m][kind] = n > 0 ? seconds / n : NAN;
+	}
+	return 0;
+}
+
+int mkCollision_Chunk(const mkCollisionOptions *o, const int on[MK_COLLISION_KINDS], long begin, long end,
+	mkCollisionChunk *chunk)
+{
+	const mkCollider *referee = mkReferee();
+	mkColliderScratch scratch;
+	if (!referee) {
+		fprintf(stderr, "collision: the collider registry has no referee\n");
+		return -1;
+	}
+	if (end - begin < 0 || end - begin > MK_COLLISION_CHUNK) {
+		fprintf(stderr, "collision: a chunk of %ld trials: at most %d\n", end - begin, MK_COLLISION_CHUNK);
+		return -1;
+	}
+	chunk->begin = begin;
+	chunk->count = end - begin;
+	for (int k = 0; k < MK_COLLISION_KINDS; ++k) {
+		if (!on[k])
+			continue;
+		for (long t = begin; t < end; ++t)
+			if (mkDrawPair(o, k, t, referee, &scratch, &chunk->b1[k][t - begin], &chunk->b2[k][t - begin]) != 0)
+				return -1;
+		if (mkBatchKind(k, chunk) != 0)
+			return -1;
 	}
 	return 0;
 }

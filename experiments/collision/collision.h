@@ -25,7 +25,18 @@
  *                   size = the smallest semi-axis of the two bodies;
  *  3 deep           the same bodies with centres U(-1,1)^3 and U(-2,2)^3.
  * Kinds 0 and 1 keep the streams of the earlier experiment, so their pairs
- * are the same. */
+ * are the same.
+ *
+ * The batch entries (mink/batch.h): the trials are taken in chunks of
+ * MK_COLLISION_CHUNK (aligned to trial numbers, cut at the run's or shard's
+ * ends), and before the one-pair entries run on a chunk's pairs, each pair
+ * kind's pairs of the chunk are answered by one mkCollide3_Batch call per
+ * mode (rows minksum-batch-<mode>): the call timed as the one-pair runs are
+ * (repeated once when under a millisecond, the faster kept) and its time
+ * divided by the chunk's pairs, the amortised time per pair. Their rows
+ * carry the pair's status, the distance where the mode gives one, and in
+ * column path where the answer came from (separating, overlap-point,
+ * one-pair, failed); the clearance asked is MK_COLLISION_DELTA. */
 #ifndef MINK_EXP_COLLISION_H
 #define MINK_EXP_COLLISION_H
 
@@ -33,7 +44,7 @@
 #include <mink/mink.h>
 #include <mink_exp/exp.h>
 
-#define MK_COLLISION_SCHEMA 4
+#define MK_COLLISION_SCHEMA 5
 #define MK_COLLISION_KINDS 4
 /* Room for --limit pairs (NAME=N). */
 #define MK_COLLISION_LIMITS 8
@@ -52,6 +63,23 @@ typedef struct mkCollisionOptions {
 	long limit_trials[MK_COLLISION_LIMITS];
 } mkCollisionOptions;
 
+/* The batch entries' chunk of trials, and the clearance (length units,
+ * about 1e-2 of the paper pairs' scale) their clearance mode asks. */
+#define MK_COLLISION_CHUNK 64
+#define MK_COLLISION_DELTA 0.25
+#define MK_COLLISION_MODES 4
+
+/* The pairs of a chunk of trials [begin, begin + count) and the batch
+ * entries' answers on them, per mode and pair kind. */
+typedef struct mkCollisionChunk {
+	long begin, count;
+	mkBody3 b1[MK_COLLISION_KINDS][MK_COLLISION_CHUNK], b2[MK_COLLISION_KINDS][MK_COLLISION_CHUNK];
+	mkContact status[MK_COLLISION_MODES][MK_COLLISION_KINDS][MK_COLLISION_CHUNK];
+	double distance[MK_COLLISION_MODES][MK_COLLISION_KINDS][MK_COLLISION_CHUNK];
+	unsigned char path[MK_COLLISION_MODES][MK_COLLISION_KINDS][MK_COLLISION_CHUNK];
+	double seconds[MK_COLLISION_MODES][MK_COLLISION_KINDS]; /* per pair */
+} mkCollisionChunk;
+
 /* Parse one --limit value "NAME=N" (NAME a registry entry, N >= 0) into the
  * options (context); 0, or -1 with the reason in msg. */
 int mkCollision_ParseLimit(void *context, const char *text, char *msg, size_t msglen);
@@ -60,9 +88,16 @@ int mkCollision_ParseLimit(void *context, const char *text, char *msg, size_t ms
  * entry's parameters and library version, the paper's Table 3). */
 void mkCollision_Meta(mkMeta *meta, const mkCollisionOptions *o, const int on[MK_COLLISION_KINDS]);
 
-/* One trial of one pair kind: draw, referee, every entry, its rows.
- * Returns 0, or -1 after printing an error. */
-int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, mkCsv *csv);
+/* Draw the pairs of trials [begin, end) (end - begin <= MK_COLLISION_CHUNK)
+ * of the kinds on, and answer them with the batch entries. Returns 0, or -1
+ * after printing an error. */
+int mkCollision_Chunk(const mkCollisionOptions *o, const int on[MK_COLLISION_KINDS], long begin, long end,
+	mkCollisionChunk *chunk);
+
+/* One trial of one pair kind (its pair drawn in `chunk`): referee, every
+ * one-pair entry, the batch entries' answers, the rows. Returns 0, or -1
+ * after printing an error. */
+int mkCollision_Trial(const mkCollisionOptions *o, int kind, long trial, const mkCollisionChunk *chunk, mkCsv *csv);
 
 /* The section of the tables: <dir>/collision.csv beside the paper's
  * Table 3, and per pair kind and entry the times, success, agreement and

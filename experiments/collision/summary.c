@@ -316,6 +316,96 @@ static void mkCollision_Details(mkDoc *d, const mkTable *t, const mkMeta *m)
 	mkDoc_TableEnd(d);
 }
 
+/* The batch entries (rows minksum-batch-<mode>) and the one-pair entries
+ * they are set beside. */
+static const char *const mkBatchRows[] = { "minksum-batch-status", "minksum-batch-clearance",
+	"minksum-batch-distance", "minksum-batch-full" };
+static const char *const mkBatchPeers[] = { "minksum-normal", "ccd-gjk", "ccd-gjk-epa-1e-10" };
+
+/* Median and mean time (µs) of an entry on a pair kind: NaN without rows. */
+static void mkTimes(mkEntryStat *st, const mkTable *t, const char *pair, const char *entry, double *med, double *mean)
+{
+	mkEntryStat_Load(st, t, pair, entry);
+	*med = mkQuantile(st->us, st->n, 0.5);
+	*mean = st->n ? st->sum / (double)st->n : NAN;
+}
+
+/* "a / b": the peer's time over the batch entry's (its pairs per second
+ * over the peer's), by median and by mean; "—" without both. */
+static void mkFmt_Speedup(char *buf, double pmed, double pmean, double bmed, double bmean)
+{
+	if (isnan(pmed) || isnan(bmed) || !(bmed > 0.0) || !(bmean > 0.0))
+		snprintf(buf, MK_CELL_MAX, "—");
+	else
+		snprintf(buf, MK_CELL_MAX, "%.2f / %.2f", pmed / bmed, pmean / bmean);
+}
+
+/* The rows of entry `entry` on kind `pair` whose path is `path`. */
+static long mkCountPath(const mkTable *t, const char *pair, const char *entry, const char *path)
+{
+	int cpair = mkTable_Col(t, "pair"), calg = mkTable_Col(t, "algorithm"), cpath = mkTable_Col(t, "path");
+	long n = 0;
+	for (long r = 0; cpath >= 0 && r < t->rows; ++r)
+		n += strcmp(mkTable_Str(t, r, cpair), pair) == 0 && strcmp(mkTable_Str(t, r, calg), entry) == 0
+			&& strcmp(mkTable_Str(t, r, cpath), path) == 0;
+	return n;
+}
+
+/* The batch entries' amortised time per pair beside the one-pair entries on
+ * the same pairs, and how many pairs the one-pair query answered. */
+static void mkCollision_Batch(mkDoc *d, const mkTable *t, const mkMeta *m)
+{
+	static const char *const head[] = { "pair", "batch entry", "pairs", "median (µs/pair)", "mean (µs/pair)",
+		"× minksum-normal", "× ccd-gjk", "× ccd-gjk-epa-1e-10", "by the one-pair query", "failed" };
+	int calg = mkTable_Col(t, "algorithm");
+	const char *names[MK_SUMMARY_ENTRIES];
+	int ne = mkEntryNames(t, calg, names), any = 0;
+	for (size_t i = 0; i < MK_COUNT(mkBatchRows); ++i)
+		any |= mkIndexOf(names, ne, mkBatchRows[i]) >= 0;
+	if (!any) {
+		mkDoc_Para(d, "Batch entries (mkCollide3_Batch): not in these results (written before the batch entries).");
+		return;
+	}
+	const char *chunk = mkMeta_Get(m, "batch_chunk"), *lanes = mkMeta_Get(m, "batch_lanes");
+	mkDoc_Para(d, "Batch entries: each kind's pairs answered %s pairs per mkCollide3_Batch call (lanes: %s), the "
+		"call's time divided by its pairs, beside the one-pair entries on the same pairs (× peer = the peer's "
+		"time over the batch entry's, i.e. the batch's pairs per second over the peer's, by median / by mean); "
+		"by the one-pair query = pairs answered by mkCollide3_Normal (status and clearance: the pairs the "
+		"batch's certificates did not settle; distance: those too and every separated pair, whose distance "
+		"it gives; full: every pair).",
+		chunk ? chunk : "(not recorded)", lanes ? lanes : "not recorded");
+	mkDoc_TableBegin(d, "Batch entries: amortised time per pair, against the one-pair entries.", 10, head);
+	size_t room = (size_t)(t->rows > 0 ? t->rows : 1) * sizeof(double);
+	mkEntryStat st = { 0, 0, 0, 0, 0, 0, 0, 0.0, malloc(room), malloc(room), malloc(room) };
+	for (int k = 0; st.us && st.de && st.pe && k < MK_COLLISION_KINDS; ++k) {
+		const char *pair = mkCollision_PairNames[k];
+		double pmed[MK_COUNT(mkBatchPeers)], pmean[MK_COUNT(mkBatchPeers)];
+		for (size_t p = 0; p < MK_COUNT(mkBatchPeers); ++p)
+			mkTimes(&st, t, pair, mkBatchPeers[p], &pmed[p], &pmean[p]);
+		for (size_t b = 0; b < MK_COUNT(mkBatchRows); ++b) {
+			double med, mean;
+			mkTimes(&st, t, pair, mkBatchRows[b], &med, &mean);
+			if (st.n == 0)
+				continue;
+			char c[8][MK_CELL_MAX];
+			snprintf(c[0], MK_CELL_MAX, "%ld", st.n);
+			snprintf(c[1], MK_CELL_MAX, "%.3g", med);
+			snprintf(c[2], MK_CELL_MAX, "%.3g", mean);
+			for (size_t p = 0; p < MK_COUNT(mkBatchPeers); ++p)
+				mkFmt_Speedup(c[3 + p], pmed[p], pmean[p], med, mean);
+			long fb = mkCountPath(t, pair, mkBatchRows[b], "one-pair");
+			snprintf(c[6], MK_CELL_MAX, "%.4f (%ld/%ld)", (double)fb / (double)st.n, fb, st.n);
+			snprintf(c[7], MK_CELL_MAX, "%ld", st.failed);
+			const char *row[10] = { pair, mkBatchRows[b], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7] };
+			mkDoc_Row(d, row);
+		}
+	}
+	free(st.us);
+	free(st.de);
+	free(st.pe);
+	mkDoc_TableEnd(d);
+}
+
 void mkCollision_Summary(mkDoc *d, const char *dir, mkTally *tally)
 {
 	static const char *const columns[] = { "pair", "algorithm", "seconds", "status", "referee_distance", "error",
@@ -328,7 +418,9 @@ void mkCollision_Summary(mkDoc *d, const char *dir, mkTally *tally)
 		mkDoc_Para(d, "Rotation draw: %s.", rot ? rot : "not recorded in the sidecar");
 	}
 	mkCollision_Table3(d, &s.t, usable, tally);
-	if (usable)
+	if (usable) {
 		mkCollision_Details(d, &s.t, &s.m);
+		mkCollision_Batch(d, &s.t, &s.m);
+	}
 	mkSection_End(&s);
 }

@@ -1,6 +1,8 @@
 # run.cmake - the bodies of the collision driver's tests that need more than
 # one command: cmake -DMODE=tiny -DEXE=... -DWORK=... -P run.cmake
 
+cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...)
+cmake_policy(SET CMP0007 NEW)  # list() keeps the empty fields of a CSV row
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 if(NOT MODE STREQUAL "tiny")
@@ -14,44 +16,109 @@ function(mk_run out)
   endif()
 endfunction()
 
-# Every pair kind, 2 trials, Implicit on trial 0 only. The registry has 16
-# entries besides the referee; asc, asc-eigen and fcl take ellipsoids only
-# (colliders.h). Trial 0 of near and deep is an ellipsoid pair, trial 1 a
-# superquadric pair. So: ellipsoids 2 x 16, superquadrics 2 x 13, near and
-# deep 16 + 13 each: 116 rows and the header.
+# Every pair kind, 2 trials, Implicit on trial 0 only. asc, asc-eigen and
+# fcl take ellipsoids only (colliders.h); trial 0 of near and deep is an
+# ellipsoid pair, trial 1 a superquadric pair. So every ellipsoid pair has
+# rows of the same entries, each once, every superquadric pair those but
+# the three; the batch entries and minksum-normal are among them (no count
+# of the registry's entries is assumed).
 mk_run(${WORK}/c.csv --trials 2 --seed 7 --limit implicit=1)
 file(STRINGS ${WORK}/c.csv lines)
 list(GET lines 0 head)
-if(NOT head STREQUAL "pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited,referee_certain,certified")
+if(NOT head STREQUAL "pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited,referee_certain,certified,path")
   message(FATAL_ERROR "header is '${head}'")
 endif()
+set(ell_groups "ellipsoids,0" "ellipsoids,1" "near,0" "deep,0")
+set(sq_groups "superquadrics,0" "superquadrics,1" "near,1" "deep,1")
+set(ell_entries "")
+set(sq_entries "")
+foreach(group IN LISTS ell_groups sq_groups)
+  set(entries "")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^${group},([a-z0-9.-]+),")
+      list(FIND entries "${CMAKE_MATCH_1}" dup)
+      if(NOT dup EQUAL -1)
+        message(FATAL_ERROR "${group}: two rows of ${CMAKE_MATCH_1}")
+      endif()
+      list(APPEND entries "${CMAKE_MATCH_1}")
+    endif()
+  endforeach()
+  foreach(must minksum-normal minksum-batch-status minksum-batch-clearance minksum-batch-distance minksum-batch-full)
+    if(NOT must IN_LIST entries)
+      message(FATAL_ERROR "${group}: no row of ${must}")
+    endif()
+  endforeach()
+  list(SORT entries)
+  if(group IN_LIST ell_groups)
+    if(ell_entries STREQUAL "")
+      set(ell_entries "${entries}")
+    elseif(NOT entries STREQUAL ell_entries)
+      message(FATAL_ERROR "${group}: entries ${entries}, another ellipsoid pair ${ell_entries}")
+    endif()
+  elseif(sq_entries STREQUAL "")
+    set(sq_entries "${entries}")
+  elseif(NOT entries STREQUAL sq_entries)
+    message(FATAL_ERROR "${group}: entries ${entries}, another superquadric pair ${sq_entries}")
+  endif()
+endforeach()
+set(expect_sq "${ell_entries}")
+list(REMOVE_ITEM expect_sq asc asc-eigen fcl)
+if(NOT sq_entries STREQUAL expect_sq)
+  message(FATAL_ERROR "superquadric pairs: entries ${sq_entries}, expected those of ellipsoid pairs but asc, asc-eigen, fcl")
+endif()
+list(LENGTH ell_entries ne)
+list(LENGTH sq_entries ns)
 list(LENGTH lines n)
-if(NOT n EQUAL 117)
-  message(FATAL_ERROR "expected 117 lines, got ${n}")
+math(EXPR expect "1 + 4 * ${ne} + 4 * ${ns}")
+if(NOT n EQUAL expect)
+  message(FATAL_ERROR "expected ${expect} lines (the header, 4 ellipsoid pairs x ${ne}, 4 superquadric pairs x ${ns}), got ${n}")
 endif()
 foreach(line IN LISTS lines)
   if(line MATCHES "^superquadrics,[0-9]+,(asc|asc-eigen|fcl),|^(near|deep),1,(asc|asc-eigen|fcl),")
     message(FATAL_ERROR "an ellipsoid-only entry ran on superquadrics: ${line}")
   endif()
-  if(line MATCHES "^[a-z]+,1,implicit," AND NOT line MATCHES "^[a-z]+,1,implicit,,skipped,,[-0-9.e]+,,,,,1,1,$")
+  if(line MATCHES "^[a-z]+,1,implicit," AND NOT line MATCHES "^[a-z]+,1,implicit,,skipped,,[-0-9.e]+,,,,,1,1,,$")
     message(FATAL_ERROR "implicit past its limit is not a skipped row: ${line}")
   endif()
-  if(line MATCHES "^[a-z]+,0,implicit," AND NOT line MATCHES ",(separated|touching|overlapping|failed),.*,1,1,$")
+  if(line MATCHES "^[a-z]+,0,implicit," AND NOT line MATCHES ",(separated|touching|overlapping|failed),.*,1,1,,$")
     message(FATAL_ERROR "implicit within its limit is not a measured row: ${line}")
   endif()
   # Every row: the referee certain on these pairs (column referee_certain).
-  if(NOT line MATCHES "^pair," AND NOT line MATCHES ",1,[01]?$")
+  if(NOT line MATCHES "^pair," AND NOT line MATCHES ",1,[01]?,[a-z-]*$")
     message(FATAL_ERROR "the referee is not certain: ${line}")
   endif()
   # The entries' own certificates (column certified): minksum-normal
   # certifies every answer here (separated: its witnesses; overlapping: its
   # branch and bound within budget); entries that certify nothing leave it
   # empty.
-  if(line MATCHES "^[a-z]+,[01],minksum-normal," AND NOT line MATCHES ",1,1$")
+  if(line MATCHES "^[a-z]+,[01],minksum-normal," AND NOT line MATCHES ",1,1,$")
     message(FATAL_ERROR "minksum-normal without its certificate: ${line}")
   endif()
-  if(line MATCHES "^[a-z]+,[01],(ccd|gjk|asc|fcl|implicit|common)[a-z0-9.-]*," AND NOT line MATCHES ",$")
+  if(line MATCHES "^[a-z]+,[01],(ccd|gjk|asc|fcl|implicit|common)[a-z0-9.-]*," AND NOT line MATCHES ",,$")
     message(FATAL_ERROR "an entry that certifies nothing has a certified value: ${line}")
+  endif()
+  # The batch entries: the referee's status (agrees 1, every pair decided
+  # here), a path, no failure; a distance within 1e-12 of the scale of the
+  # referee's where the mode gives one (distance: non-overlapping pairs;
+  # full: all), none in status and clearance modes.
+  if(line MATCHES "^[a-z]+,[01],minksum-batch-([a-z]+),")
+    set(mode ${CMAKE_MATCH_1})
+    string(REPLACE "," ";" f "${line}")
+    list(GET f 4 status)
+    list(GET f 5 dist)
+    list(GET f 7 err)
+    list(GET f 8 agrees)
+    list(GET f 14 path)
+    if(NOT agrees STREQUAL "1" OR NOT path MATCHES "^(separating|overlap-point|one-pair)$")
+      message(FATAL_ERROR "batch ${mode}: disagrees with the referee or no path: ${line}")
+    endif()
+    if(mode STREQUAL "full" OR (mode STREQUAL "distance" AND NOT status STREQUAL "overlapping"))
+      if(dist STREQUAL "" OR NOT err LESS 1e-12)
+        message(FATAL_ERROR "batch ${mode}: no distance within 1e-12 of the scale: ${line}")
+      endif()
+    elseif(NOT dist STREQUAL "")
+      message(FATAL_ERROR "batch ${mode}: a distance where the mode gives none: ${line}")
+    endif()
   endif()
   # Every measured row: a time, a status, the referee's distance.
   if(NOT line MATCHES "^pair," AND NOT line MATCHES ",skipped,"

@@ -17,12 +17,24 @@
  *    skipped row of trial 2 counts as a pair);
  *  - my-query's answers carry its own certificate (column certified) on
  *    its 3 rows, 0 on superquadrics trial 1: 1 of 3 without it.
+ *  - these results have no batch entries (no column path): said so.
+ * A second result with the column path and batch entries:
+ *  - superquadrics trials 0..2: minksum-normal 4, 6, 8 µs (median 6, mean
+ *    6), ccd-gjk 1, 2, 6 µs (median 2, mean 3), ccd-gjk-epa-1e-10 2, 3, 4 µs
+ *    (3, 3); minksum-batch-status 0.25 µs per pair on each (paths
+ *    separating, overlap-point, one-pair): × 6 / 0.25 = 24, 2 / 0.25 = 8 by
+ *    median and 3 / 0.25 = 12 by mean, 3 / 0.25 = 12; one-pair 1 of 3;
+ *    minksum-batch-full 2 µs on each (one-pair, one-pair, failed): × 3, 1 and
+ *    1.5, 1.5, one-pair 2 of 3, 1 failed;
+ *  - ellipsoids trial 0: minksum-batch-status 0.5 µs and no peer: "—".
  * A missing result leaves all 11 "not reproduced yet". */
 #include "collision.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "ensure.h"
 #include "summary_text.h"
@@ -71,6 +83,48 @@ int main(int argc, char **argv)
 	mkSummary_Expect(md, "| superquadrics | minksum-normal-lm | 1 | 0 | 5.1e+03 | 5.1e+03 | 1.0000 | 1.0000 (1/1) |");
 	mkSummary_Expect(md, "| superquadrics | my-query | 3 | 0 | 2e+03 | 2e+03 | 1.0000 | 1.0000 (3/3) | "
 		"1e-07 / 1e-07 / 1e-07 | 3e-07 / 4e-07 / 4e-07 |");
+	mkSummary_Expect(md, "Batch entries (mkCollide3_Batch): not in these results (written before the batch entries).");
+	free(md);
+
+	char dir[MK_PATH_MAX - 32]; /* room for /collision.csv.meta in path */
+	snprintf(dir, sizeof dir, "%s/batch", argv[1]);
+	ENSURE(mkdir(dir, 0777) == 0 || errno == EEXIST);
+	snprintf(path, sizeof path, "%s/collision.csv", dir);
+	fp = fopen(path, "w");
+	ENSURE(fp != NULL);
+	fputs("pair,trial,algorithm,seconds,status,distance,referee_distance,error,agrees,success,iterations,limited,"
+		"referee_certain,certified,path\n"
+		"ellipsoids,0,minksum-batch-status,0.5e-6,separated,,0.5,,1,1,,,1,,separating\n"
+		"superquadrics,0,minksum-normal,4e-6,separated,0.5,0.5,0,1,1,3,,1,1,\n"
+		"superquadrics,0,ccd-gjk,1e-6,separated,,0.5,,1,1,,,1,,\n"
+		"superquadrics,0,ccd-gjk-epa-1e-10,2e-6,separated,,0.5,,1,1,,,1,,\n"
+		"superquadrics,0,minksum-batch-status,0.25e-6,separated,,0.5,,1,1,,,1,,separating\n"
+		"superquadrics,0,minksum-batch-full,2e-6,separated,0.5,0.5,0,1,1,,,1,,one-pair\n"
+		"superquadrics,1,minksum-normal,6e-6,overlapping,-0.2,-0.2,0,1,1,3,,1,1,\n"
+		"superquadrics,1,ccd-gjk,2e-6,overlapping,,-0.2,,1,1,,,1,,\n"
+		"superquadrics,1,ccd-gjk-epa-1e-10,3e-6,overlapping,,-0.2,,1,1,,,1,,\n"
+		"superquadrics,1,minksum-batch-status,0.25e-6,overlapping,,-0.2,,1,1,,,1,,overlap-point\n"
+		"superquadrics,1,minksum-batch-full,2e-6,overlapping,-0.2,-0.2,0,1,1,,,1,,one-pair\n"
+		"superquadrics,2,minksum-normal,8e-6,separated,0.1,0.1,0,1,1,3,,1,1,\n"
+		"superquadrics,2,ccd-gjk,6e-6,separated,,0.1,,1,1,,,1,,\n"
+		"superquadrics,2,ccd-gjk-epa-1e-10,4e-6,separated,,0.1,,1,1,,,1,,\n"
+		"superquadrics,2,minksum-batch-status,0.25e-6,separated,,0.1,,1,1,,,1,,one-pair\n"
+		"superquadrics,2,minksum-batch-full,2e-6,failed,,0.1,,0,0,,,1,,failed\n", fp);
+	fclose(fp);
+	snprintf(path, sizeof path, "%s/collision.csv.meta", dir);
+	fp = fopen(path, "w");
+	ENSURE(fp != NULL);
+	fputs("experiment: collision\nseed: 3\ntrials: 3\nrotation_draw: paper\nreferee_margin: 1e-09\nlimits: none\n"
+		"batch_chunk: 64\nbatch_lanes: avx2\n", fp);
+	fclose(fp);
+	tally = (mkTally){ 0, 0, 0 };
+	md = mkSummary_Text(mkCollision_Summary, dir, &tally);
+	mkSummary_Expect(md, "each kind's pairs answered 64 pairs per mkCollide3_Batch call (lanes: avx2)");
+	mkSummary_Expect(md, "| ellipsoids | minksum-batch-status | 1 | 0.5 | 0.5 | — | — | — | 0.0000 (0/1) | 0 |");
+	mkSummary_Expect(md, "| superquadrics | minksum-batch-status | 3 | 0.25 | 0.25 | 24.00 / 24.00 | 8.00 / 12.00 | "
+		"12.00 / 12.00 | 0.3333 (1/3) | 0 |");
+	mkSummary_Expect(md, "| superquadrics | minksum-batch-full | 3 | 2 | 2 | 3.00 / 3.00 | 1.00 / 1.50 | 1.50 / 1.50 | "
+		"0.6667 (2/3) | 1 |");
 	free(md);
 
 	snprintf(path, sizeof path, "%s/none", argv[1]);

@@ -21,9 +21,11 @@ import re as _re
 
 from ._mink import (Body, Boundary, Collision, Deviation, Error, Method, area, collide, impls, methods, run,
                     sample, scene, score, sum, version)
+from ._mink import Batch, collide_batch
 
 __all__ = ["Body", "Boundary", "Collision", "Deviation", "Error", "Method", "area", "collide", "impls",
            "methods", "run", "sample", "scene", "scene_file", "score", "sum", "version"]
+__all__ += ["Batch", "collide_batch"]
 __version__ = version()
 
 

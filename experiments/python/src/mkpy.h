@@ -2,8 +2,8 @@
  * share: the Body type, the exception, argument helpers.
  *
  * Layout: module.c (the module, its exception, enum parsing), body.c (the
- * Body type), sum.c (sum, sample), query.c (collide, score, area, methods,
- * run), scene.c (scene). Every array crossing the boundary is a numpy array
+ * Body type), sum.c (sum, sample), query.c (collide, collide_batch, score,
+ * area, methods, run), scene.c (scene). Every array crossing the boundary is a numpy array
  * of shape (dim, N), one contiguous row per coordinate: the structure of
  * arrays the core's batch functions take, so they read and write numpy's
  * memory directly. */
@@ -70,10 +70,12 @@ PyObject *mkPy_Area(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *mkPy_Methods(PyObject *self, PyObject *args);
 PyObject *mkPy_Run(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *mkPy_Scene(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *mkPy_CollideBatch(PyObject *self, PyObject *args, PyObject *kw);
 extern const char mkPy_SumDoc[], mkPy_SampleDoc[], mkPy_CollideDoc[], mkPy_ScoreDoc[], mkPy_AreaDoc[],
-	mkPy_MethodsDoc[], mkPy_RunDoc[], mkPy_SceneDoc[];
+	mkPy_MethodsDoc[], mkPy_RunDoc[], mkPy_SceneDoc[], mkPy_CollideBatchDoc[];
 
-/* The struct-sequence types of results, made ready by the module. */
+/* The struct-sequence types of results, made ready by the module (query.c's
+ * include mink.Batch). */
 int mkPy_QueryTypesReady(PyObject *module);
 int mkPy_SceneTypesReady(PyObject *module);
 

@@ -158,6 +158,7 @@ static PyMethodDef mkPy_Functions[] = {
 	{"methods", mkPy_Methods, METH_NOARGS, mkPy_MethodsDoc},
 	{"run", MKPY_KW mkPy_Run, METH_VARARGS | METH_KEYWORDS, mkPy_RunDoc},
 	{"scene", MKPY_KW mkPy_Scene, METH_VARARGS | METH_KEYWORDS, mkPy_SceneDoc},
+	{"collide_batch", MKPY_KW mkPy_CollideBatch, METH_VARARGS | METH_KEYWORDS, mkPy_CollideBatchDoc},
 	{"version", mkPy_Version, METH_NOARGS, "version() -> str: the C library's version, MAJOR.MINOR.PATCH."},
 	{"impls", mkPy_Impls, METH_NOARGS, "impls() -> list of str: the kernels this CPU runs (scalar, avx2, avx512)."},
 	{NULL, NULL, 0, NULL}};

@@ -61,6 +61,15 @@ def call_collide():
     mink.collide(S1, S2)
 
 
+def call_collide_batch():
+    mink.collide_batch([S1, S2], [S2, S1, S2], "clearance", index1=[0, 1, 1], index2=[2, 0, 1], delta=0.5)
+
+
+def call_collide_batch_bad_index():
+    with pytest.raises(ValueError):
+        mink.collide_batch([S1], [S2], index1=[0, 3])
+
+
 def call_score():
     mink.score(B1, B2, PTS, truth=AREA[0], truth_bound=AREA[1])
 
@@ -72,7 +81,8 @@ def call_methods():
 @pytest.mark.parametrize("fn, calls", [
     (call_sum, 100000), (call_sum_out_kiss, 100000), (call_sum_n, 100000), (call_body, 100000),
     (call_body_params, 100000), (call_bad_spec, 100000), (call_bad_dtype, 100000), (call_bad_shape, 100000),
-    (call_collide, 100000), (call_score, 5000), (call_methods, 100000)])
+    (call_collide, 100000), (call_score, 5000), (call_methods, 100000),
+    (call_collide_batch, 50000), (call_collide_batch_bad_index, 100000)])
 def test_memory_flat(fn, calls):
     refs = [sys.getrefcount(o) for o in (B1, B2, U, OUT, PTS)]
     for _ in range(2000):
