@@ -11,7 +11,10 @@
  * axis-aligned boxes (from the closed-form support function at +-e_i),
  * built once by median splits; each part's exact box at the pose walks it
  * nearest first, pruning every node whose box is no nearer than the best
- * clearance found. Narrow phase: mkCollide3_Normal on the pair (2D bodies
+ * clearance found. Narrow phase: the candidates, 8 at a time in the walk's
+ * order, screened by mkCollide3_Batch (clearance mode, delta = the
+ * clearance found so far); a pair not certified at least that far gets
+ * mkCollide3_Normal on the pair (2D bodies
  * enter as superquadrics whose z = 0 section is the superellipse, eps1 = 1:
  * both are symmetric about z = 0, so the distance of separated pairs is the
  * 2D distance, and overlapping sections overlap in 3D).
@@ -70,7 +73,7 @@ typedef struct mkPoseAnswer {
 	double clearance; /* free: certified lower bound of the distance from the robot to every obstacle (capped);
 	                   * colliding: a lower bound of that pair's signed distance (<= 0); uncertain: the smallest
 	                   * lower bound found (<= 0, -inf when a solver failed) */
-	int pairs;        /* narrow-phase pairs computed */
+	int pairs;        /* narrow-phase pairs computed (batch screen or one-pair query) */
 } mkPoseAnswer;
 
 typedef struct mkSceneQuery mkSceneQuery;

@@ -10,12 +10,14 @@
 
 #include "base/message.h"
 #include "cspace/work.h"
+#include "mink/batch.h"
 #include "mink/collision.h"
 
 #define MK_SQ_ROUND 1e-12   /* rounding allowance of a pair's bound, times its size */
 #define MK_SQ_LEAF 2        /* obstacles per leaf at most */
 #define MK_SQ_STACK 128     /* traversal stack (depth ~ 2 log2 n) */
 #define MK_SQ_CHUNK 32      /* poses per pool task */
+#define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 
 typedef struct mkSqBox { double lo[3], hi[3]; } mkSqBox;
 
@@ -283,8 +285,8 @@ static int mkSq_Overlap(mkBody3 a, mkBody3 b, const mkCollision3 *c, double tol)
 	return c->certified == 1 && c->bound + c->gap < -tol;
 }
 
-/* The narrow phase of one pair (the one-pair query; the place for a batch):
- * the pair's status and value as the header defines them. */
+/* The narrow phase of one pair (the one-pair query): the pair's status and
+ * value as the header defines them. */
 static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBody3 outer, int smooth, double *value)
 {
 	mkCollision3 c;
@@ -298,6 +300,104 @@ static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBod
 	return mkSq_Overlap(q->obs[2 * i], inner, &c, tol) ? MK_POSE_COLLIDING : MK_POSE_UNCERTAIN;
 }
 
+/* A part's walk of the hierarchy, nearest child first: the stack of nodes
+ * and the leaf being read (order[k .. end)). */
+typedef struct mkSqWalk {
+	int stack[MK_SQ_STACK], top, k, end;
+} mkSqWalk;
+
+/* The walk's next candidates (at most max): obstacles whose box is nearer
+ * than best, in the walk's order (which does not depend on best: best only
+ * prunes). Returns their number, 0 when the walk is over. */
+static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, const mkSqBox *pb, double best, int *idx, int max)
+{
+	int n = 0;
+	while (n < max) {
+		if (w->k < w->end) {
+			int i = q->order[w->k++];
+			if (mkSq_BoxDistance(pb, &q->obox[i]) < best) idx[n++] = i;
+			continue;
+		}
+		if (w->top == 0) break;
+		const mkSqNode *nd = &q->node[w->stack[--w->top]];
+		if (mkSq_BoxDistance(pb, &nd->box) >= best) continue;
+		if (nd->left >= 0) { /* the nearer child is walked first: pushed last */
+			double dl = mkSq_BoxDistance(pb, &q->node[nd->left].box), dr = mkSq_BoxDistance(pb, &q->node[nd->right].box);
+			w->stack[w->top++] = dl <= dr ? nd->right : nd->left;
+			w->stack[w->top++] = dl <= dr ? nd->left : nd->right;
+			continue;
+		}
+		w->k = nd->first;
+		w->end = nd->first + nd->count;
+	}
+	return n;
+}
+
+/* The batch's screen of n candidate pairs (outer models) against the
+ * clearance best: far[m] = 1 when the pair's distance is certified at least
+ * best (a separating direction, MK_PATH_SEPARATING), so that it cannot lower
+ * the pose's clearance; 0 when the one-pair narrow phase must decide. */
+static void mkSq_Screen(const mkSceneQuery *q, const int *idx, int n, const mkBody3 *outer, double best,
+	unsigned char *far)
+{
+	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH];
+	mkContact status[MK_SQ_BATCH];
+	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
+	for (int m = 0; m < n; ++m) { i1[m] = 2 * idx[m] + 1; i2[m] = 0; }
+	mkBatchPairs3 pairs = {n, q->obs, outer, i1, i2};
+	mkBatchOut3 out;
+	memset(&out, 0, sizeof out);
+	out.status = status;
+	out.clear = clear;
+	out.path = path;
+	mkResult r = mkCollide3_Batch(&pairs, MK_BATCH_CLEARANCE, fmax(best, 0.0), &out, NULL);
+	for (int m = 0; m < n; ++m)
+		far[m] = (unsigned char)((r == MK_OK || r == MK_ERR_CONVERGENCE) && path[m] == MK_PATH_SEPARATING && clear[m]);
+}
+
+/* One part against the scene: the pairs in the walk's order, each screened
+ * by the batch (MK_SQ_BATCH at a time, against the clearance found so far)
+ * and, unless certified no nearer than it, answered by mkSq_Pair. The
+ * answers are those of mkSq_Pair on every pair in the walk's order: a pair
+ * the screen set aside cannot change them. Returns 1 when colliding. */
+static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, mkPoseAnswer *out)
+{
+	mkBody3 outer = mkSq_Place(q->part[2 * j + 1], R, c), inner = mkSq_Place(q->part[2 * j], R, c);
+	int smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
+	mkSqBox pb = mkSq_BodyBox(outer);
+	mkSqWalk w;
+	w.top = w.k = w.end = 0;
+	w.stack[w.top++] = 0;
+	int idx[MK_SQ_BATCH];
+	unsigned char far[MK_SQ_BATCH];
+	for (;;) {
+		/* no clearance yet (max_clearance infinite): the first pair alone */
+		int n = mkSq_Collect(q, &w, &pb, *best, idx, isfinite(*best) ? MK_SQ_BATCH : 1);
+		if (n == 0) return 0;
+		if (isfinite(*best)) mkSq_Screen(q, idx, n, &outer, *best, far);
+		else memset(far, 0, sizeof far);
+		for (int m = 0; m < n; ++m) {
+			int i = idx[m];
+			if (mkSq_BoxDistance(&pb, &q->obox[i]) >= *best) continue;
+			++out->pairs;
+			if (far[m]) continue;
+			double v;
+			mkPoseStatus s = mkSq_Pair(q, i, inner, outer, smooth, &v);
+			if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
+			if (v < *best || s == MK_POSE_COLLIDING) {
+				*best = v;
+				out->obstacle = i;
+				out->part = j;
+			}
+			if (s == MK_POSE_COLLIDING) {
+				out->status = MK_POSE_COLLIDING;
+				out->clearance = v;
+				return 1;
+			}
+		}
+	}
+}
+
 mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnswer *out)
 {
 	mkMat3 R;
@@ -309,41 +409,8 @@ mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnsw
 	if (!mkSq_Pose(q, pose, &R, &c)) { out->status = MK_POSE_UNCERTAIN; out->clearance = NAN; return MK_ERR_ARGUMENT; }
 	if (q->nob == 0) return MK_OK;
 	double best = q->opt.max_clearance;
-	for (int j = 0; j < q->parts; ++j) {
-		mkBody3 outer = mkSq_Place(q->part[2 * j + 1], R, c), inner = mkSq_Place(q->part[2 * j], R, c);
-		int smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
-		mkSqBox pb = mkSq_BodyBox(outer);
-		int stack[MK_SQ_STACK], top = 0;
-		stack[top++] = 0;
-		while (top > 0) {
-			const mkSqNode *n = &q->node[stack[--top]];
-			if (mkSq_BoxDistance(&pb, &n->box) >= best) continue;
-			if (n->left >= 0) { /* the nearer child is walked first: pushed last */
-				double dl = mkSq_BoxDistance(&pb, &q->node[n->left].box), dr = mkSq_BoxDistance(&pb, &q->node[n->right].box);
-				stack[top++] = dl <= dr ? n->right : n->left;
-				stack[top++] = dl <= dr ? n->left : n->right;
-				continue;
-			}
-			for (int k = n->first; k < n->first + n->count; ++k) {
-				int i = q->order[k];
-				if (mkSq_BoxDistance(&pb, &q->obox[i]) >= best) continue;
-				double v;
-				mkPoseStatus s = mkSq_Pair(q, i, inner, outer, smooth, &v);
-				++out->pairs;
-				if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
-				if (v < best || s == MK_POSE_COLLIDING) {
-					best = v;
-					out->obstacle = i;
-					out->part = j;
-				}
-				if (s == MK_POSE_COLLIDING) {
-					out->status = MK_POSE_COLLIDING;
-					out->clearance = v;
-					return MK_OK;
-				}
-			}
-		}
-	}
+	for (int j = 0; j < q->parts; ++j)
+		if (mkSq_PartPose(q, j, R, c, &best, out)) return MK_OK;
 	out->clearance = best;
 	return MK_OK;
 }
