@@ -11,7 +11,8 @@
 #define MK_PLANNING_LIST_MAX 8
 
 typedef struct mkPlanningList {
-	char text[1024];
+	char given[1024];   /* as given */
+	char text[1024];    /* split: the items point into it */
 	const char *item[MK_PLANNING_LIST_MAX];
 	int count;
 } mkPlanningList;
@@ -23,6 +24,7 @@ static int mkPlanningList_Split(mkPlanningList *l, const char *text, char *msg, 
 		snprintf(msg, msglen, "is too long: must be under %zu characters", sizeof l->text);
 		return -1;
 	}
+	strcpy(l->given, text);
 	strcpy(l->text, text);
 	l->count = 0;
 	for (char *p = l->text, *next; p; p = next) {
@@ -99,8 +101,8 @@ int main(int argc, char **argv)
 		mkRun_End(&run, 1);
 		return 2;
 	}
-	mkMeta_Set(&run.meta, "scenes", scenes.text);
-	mkMeta_Set(&run.meta, "planners", planners.text);
+	mkMeta_Set(&run.meta, "scenes", scenes.given);
+	mkMeta_Set(&run.meta, "planners", planners.given);
 	mkMeta_SetDouble(&run.meta, "budget_s", budget);
 	mkMeta_SetInt(&run.meta, "mesh_res", res);
 	mkMeta_Set(&run.meta, "fcl_version", mkPlanFcl_Version());
