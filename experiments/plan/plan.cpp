@@ -31,14 +31,12 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "plan_internal.h"
+
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
-namespace {
-
-constexpr long kMaxPoses = 1000000;  // poses per certified motion at most
-
-using Factory = std::function<ob::PlannerPtr(const ob::SpaceInformationPtr &)>;
+namespace mkplan {
 
 const std::map<std::string, Factory> &mkPlanners()
 {
@@ -84,6 +82,74 @@ void mkPlanFromPose(int dim, const double *p, ob::State *s)
 	auto &r = st->rotation();
 	r.w = p[3] / n; r.x = p[4] / n; r.y = p[5] / n; r.z = p[6] / n;
 }
+
+int mkPlanFail(int code, char *msg, size_t len, const std::string &text)
+{
+	if (msg && len) std::snprintf(msg, len, "%s", text.c_str());
+	return code;
+}
+
+void mkPlanSeedOnce(unsigned long seed)
+{
+	static bool seeded = false;   // OMPL takes a seed only before its first random number
+	if (!seeded) { ompl::RNG::setSeed(seed); seeded = true; }
+}
+
+ob::StateSpacePtr mkPlanSpace(const mkScene *scene)
+{
+	int dim = scene->dim;
+	ob::RealVectorBounds bounds(dim);
+	for (int d = 0; d < dim; ++d) { bounds.setLow(d, scene->bounds_lo[d]); bounds.setHigh(d, scene->bounds_hi[d]); }
+	if (dim == 2) { auto s = std::make_shared<ob::SE2StateSpace>(); s->setBounds(bounds); return s; }
+	auto s = std::make_shared<ob::SE3StateSpace>();
+	s->setBounds(bounds);
+	return s;
+}
+
+int mkPlanCopyPath(int dim, og::PathGeometric &path, mkPlanPath *out)
+{
+	int n = (int)path.getStateCount(), ps = dim == 2 ? 3 : 7;
+	out->count = n;
+	out->pose_size = ps;
+	out->poses = static_cast<double *>(std::malloc((size_t)n * ps * sizeof(double) + 1));
+	out->clearance = static_cast<double *>(std::malloc((size_t)n * sizeof(double) + 1));
+	if (!out->poses || !out->clearance) return 0;
+	for (int i = 0; i < n; ++i) mkPlanToPose(dim, path.getState(i), out->poses + (size_t)i * ps);
+	return 1;
+}
+
+ob::PlannerStatus mkPlanRun(og::SimpleSetup &ss, int dim, const mkScenePlanQuery &pq, const mkPlanOptions *o,
+	double *seconds)
+{
+	auto space = ss.getStateSpace();
+	ob::ScopedState<> start(space), goal(space);
+	mkPlanFromPose(dim, pq.start, start.get());
+	mkPlanFromPose(dim, pq.goal, goal.get());
+	ss.setStartAndGoalStates(start, goal);
+	ss.setPlanner(mkPlanners().at(o->planner)(ss.getSpaceInformation()));
+	ss.setup();
+	auto t0 = std::chrono::steady_clock::now();
+	ob::PlannerStatus st = ss.solve(o->time);
+	*seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	return st;
+}
+
+int mkPlanNoPath(int k, const mkScenePlanQuery &pq, const mkPlanOptions *o, const char *with, ob::PlannerStatus st,
+	char *msg, size_t len)
+{
+	char buf[256];
+	std::snprintf(buf, sizeof buf, "query %d (lines %d-%d): no path found by %s%s in %g s (%s)", k, pq.start_line,
+		pq.goal_line, o->planner, with, o->time, st.asString().c_str());
+	return mkPlanFail(1, msg, len, buf);
+}
+
+}  // namespace mkplan
+
+using namespace mkplan;
+
+namespace {
+
+constexpr long kMaxPoses = 1000000;  // poses per certified motion at most
 
 struct mkPlanCounts { long states = 0, motions = 0; };
 
@@ -139,12 +205,6 @@ private:
 	double margin_;
 	mkPlanCounts *n_;
 };
-
-int mkPlanFail(int code, char *msg, size_t len, const std::string &text)
-{
-	if (msg && len) std::snprintf(msg, len, "%s", text.c_str());
-	return code;
-}
 
 // Start or goal: in collision or too close is bad input, named by its line.
 int mkPlanCheckEnd(const mkSceneQuery *q, const double *p, const char *what, int line, double margin, char *msg,
@@ -212,44 +272,21 @@ int mkPlan_Solve(const mkScene *scene, const mkSceneQuery *q, int k, const mkPla
 	if (!bad) bad = mkPlanCheckEnd(q, pq.goal, "goal", pq.goal_line, o->clearance, msg, msglen);
 	if (bad) return bad;
 	ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-	static bool seeded = false;   // OMPL takes a seed only before its first random number
-	if (!seeded) { ompl::RNG::setSeed(o->seed); seeded = true; }
-	ob::StateSpacePtr space;
-	ob::RealVectorBounds bounds(dim);
-	for (int d = 0; d < dim; ++d) { bounds.setLow(d, scene->bounds_lo[d]); bounds.setHigh(d, scene->bounds_hi[d]); }
-	if (dim == 2) { auto s = std::make_shared<ob::SE2StateSpace>(); s->setBounds(bounds); space = s; }
-	else { auto s = std::make_shared<ob::SE3StateSpace>(); s->setBounds(bounds); space = s; }
+	mkPlanSeedOnce(o->seed);
+	ob::StateSpacePtr space = mkPlanSpace(scene);
 	og::SimpleSetup ss(space);
 	auto si = ss.getSpaceInformation();
 	mkPlanCounts counts;
 	ss.setStateValidityChecker(std::make_shared<mkPlanValidity>(si, q, dim, o->clearance, &counts));
 	si->setMotionValidator(std::make_shared<mkPlanMotion>(si, q, dim, o->clearance, &counts));
-	ob::ScopedState<> start(space), goal(space);
-	mkPlanFromPose(dim, pq.start, start.get());
-	mkPlanFromPose(dim, pq.goal, goal.get());
-	ss.setStartAndGoalStates(start, goal);
-	ss.setPlanner(mkPlanners().at(o->planner)(si));
-	ss.setup();
-	auto t0 = std::chrono::steady_clock::now();
-	ob::PlannerStatus st = ss.solve(o->time);
-	out->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	ob::PlannerStatus st = mkPlanRun(ss, dim, pq, o, &out->seconds);
 	out->states_checked = counts.states;
 	out->motions_checked = counts.motions;
-	if (st != ob::PlannerStatus::EXACT_SOLUTION) {
-		char buf[256];
-		std::snprintf(buf, sizeof buf, "query %d (lines %d-%d): no path found by %s in %g s (%s)", k, pq.start_line,
-			pq.goal_line, o->planner, o->time, st.asString().c_str());
-		return mkPlanFail(1, msg, msglen, buf);
-	}
+	if (st != ob::PlannerStatus::EXACT_SOLUTION) return mkPlanNoPath(k, pq, o, "", st, msg, msglen);
 	if (o->simplify) ss.simplifySolution();
 	og::PathGeometric &path = ss.getSolutionPath();
-	int n = (int)path.getStateCount();
-	out->count = n;
-	out->pose_size = ps;
-	out->poses = static_cast<double *>(std::malloc((size_t)n * ps * sizeof(double) + 1));
-	out->clearance = static_cast<double *>(std::malloc((size_t)n * sizeof(double) + 1));
-	if (!out->poses || !out->clearance) { mkPlanPath_Free(out); return mkPlanFail(3, msg, msglen, "out of memory"); }
-	for (int i = 0; i < n; ++i) mkPlanToPose(dim, path.getState(i), out->poses + (size_t)i * ps);
+	if (!mkPlanCopyPath(dim, path, out)) { mkPlanPath_Free(out); return mkPlanFail(3, msg, msglen, "out of memory"); }
+	int n = out->count;
 	for (int i = 0; i + 1 < n; ++i) {
 		mkMotionAnswer m;
 		mkSceneQuery_Motion(q, out->poses + (size_t)i * ps, out->poses + (size_t)(i + 1) * ps, o->clearance, kMaxPoses, &m);
