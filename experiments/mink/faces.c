@@ -1,6 +1,7 @@
 /* faces.c - reading and checking the triangles of `mink score --faces`. */
 #include "faces.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -50,7 +51,7 @@ static int mkFaces_Read(const char *path, int npts, mkFaces_List *f)
 		++lineno;
 		int n = mkFaces_Split(buf, field, 64);
 		if (n == 0 || field[0][0] == '#') continue;
-		if (!data && !(field[0][0] >= '0' && field[0][0] <= '9')) { /* a header */
+		if (!data && isalpha((unsigned char)field[0][0])) { /* a header */
 			for (int c = 0; c < n; ++c)
 				for (int k = 0; k < 3; ++k)
 					if (strcmp(field[c], (const char *[]){"i", "j", "k"}[k]) == 0) col[k] = c;
