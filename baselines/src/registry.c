@@ -7,6 +7,7 @@
  * functions take no context. A method of its own kind defines its mkMethod
  * in a file of its own, baselines/src/method_*.c, and adds one line to the
  * table in registry.def (mink/registry.h). */
+#include <ctype.h>
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -223,6 +224,67 @@ const mkMethod *mkRegistry_Find(const char *name)
 	return NULL;
 }
 
+/* Append name to the comma-separated list out (used characters so far). */
+static int mkRegistry_Append(char *out, size_t outlen, size_t *used, const char *name, char *msg, size_t msglen)
+{
+	int w = snprintf(out + *used, outlen - *used, "%s%s", *used ? "," : "", name);
+	if (w < 0 || (size_t)w >= outlen - *used) return mkRefuse(msg, msglen, "the list is too long");
+	*used += (size_t)w;
+	return 1;
+}
+
+/* One line of a methods file, trimmed, registered; its name appended. */
+static int mkRegistry_FileLine(const char *path, int lineno, char *line, char *out, size_t outlen, size_t *used,
+	char *msg, size_t msglen)
+{
+	char item[1024], why[512];
+	size_t len = strcspn(line, "=");
+	if (!line[len] || len == 0)
+		return mkRefuse(msg, msglen, "%s line %d: NAME: expected NAME=COMMAND, got '%.60s'", path, lineno, line);
+	const char *cmd = line + len + 1;
+	while (*cmd == ' ' || *cmd == '\t') ++cmd;
+	if (!*cmd) return mkRefuse(msg, msglen, "%s line %d: COMMAND: empty after '='", path, lineno);
+	while (len > 0 && (line[len - 1] == ' ' || line[len - 1] == '\t')) --len;
+	int w = snprintf(item, sizeof item, "exec:%.*s=%s", (int)len, line, cmd);
+	if (w < 0 || (size_t)w >= sizeof item)
+		return mkRefuse(msg, msglen, "%s line %d: COMMAND: longer than %d characters", path, lineno,
+			(int)sizeof item - 8);
+	for (size_t i = 0; i < len; ++i)
+		if (len > 100 || (!isalnum((unsigned char)line[i]) && !strchr("._-", line[i])))
+			return mkRefuse(msg, msglen, "%s line %d: NAME '%.*s': must be 1 to 100 letters, digits, '.', '_', '-'",
+				path, lineno, (int)len, line);
+	const mkMethod *m = mkExternal_Find(item, why, sizeof why);
+	if (!m) return mkRefuse(msg, msglen, "%s line %d: NAME=COMMAND: %s", path, lineno, why);
+	return mkRegistry_Append(out, outlen, used, m->name, msg, msglen);
+}
+
+/* A methods file: one NAME=COMMAND per line, # comments and blank lines
+ * skipped; every method registered and its name appended to out. */
+static int mkRegistry_File(const char *path, char *out, size_t outlen, size_t *used, char *msg, size_t msglen)
+{
+	FILE *fp = fopen(path, "r");
+	if (!fp) return mkRefuse(msg, msglen, "methods file %s cannot be opened", path);
+	char line[1200];
+	int lineno = 0, count = 0, ok = 1;
+	while (ok && fgets(line, sizeof line, fp)) {
+		++lineno;
+		size_t len = strlen(line);
+		if (len == sizeof line - 1 && line[len - 1] != '\n' && !feof(fp)) {
+			ok = mkRefuse(msg, msglen, "%s line %d: longer than %d characters", path, lineno, (int)sizeof line - 2);
+			break;
+		}
+		while (len > 0 && strchr(" \t\r\n", line[len - 1])) line[--len] = '\0';
+		char *p = line + strspn(line, " \t");
+		if (!*p || *p == '#') continue;
+		ok = mkRegistry_FileLine(path, lineno, p, out, outlen, used, msg, msglen);
+		count += ok;
+	}
+	if (ok && ferror(fp)) ok = mkRefuse(msg, msglen, "methods file %s: read error", path);
+	fclose(fp);
+	if (ok && count == 0) ok = mkRefuse(msg, msglen, "methods file %s names no method", path);
+	return ok;
+}
+
 int mkRegistry_Resolve(const char *list, char *out, size_t outlen, char *msg, size_t msglen)
 {
 	size_t used = 0;
@@ -235,14 +297,15 @@ int mkRegistry_Resolve(const char *list, char *out, size_t outlen, char *msg, si
 		memcpy(item, p, len);
 		item[len] = '\0';
 		const char *name = item;
-		if (strncmp(item, "exec:", 5) == 0) {
+		if (item[0] == '@') {
+			if (!mkRegistry_File(item + 1, out, outlen, &used, msg, msglen)) return 0;
+			name = NULL;
+		} else if (strncmp(item, "exec:", 5) == 0) {
 			const mkMethod *m = mkExternal_Find(item, msg, msglen);
 			if (!m) return 0;
 			name = m->name;
 		}
-		int w = snprintf(out + used, outlen - used, "%s%s", used ? "," : "", name);
-		if (w < 0 || (size_t)w >= outlen - used) return mkRefuse(msg, msglen, "the list is too long");
-		used += (size_t)w;
+		if (name && !mkRegistry_Append(out, outlen, &used, name, msg, msglen)) return 0;
 		p += len;
 		if (*p == ',') ++p;
 	}

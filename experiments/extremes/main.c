@@ -38,7 +38,9 @@ int main(int argc, char **argv)
 			mkGridNames),
 		MK_FLAG_CHOICE("--dim", "2|3|both", "which dimensions (default both)", &dims, mkDimNames),
 		MK_FLAG_CHOICE("--set", "contact|plus|both", "which sets (default both)", &sets, mkSetNames),
-		MK_FLAG_TEXT("--methods", "LIST", "comma-separated registry names, or all (default all)", o.method_on,
+		MK_FLAG_TEXT("--methods", "LIST", "comma-separated registry names, exec:NAME=COMMAND\n"
+			"(external methods), @FILE (a methods file: docs/compare.md), or all\n"
+			"(default all)", o.method_on,
 			mkExtremes_ParseMethods),
 		MK_FLAG_LONG("--n2", "N", "closed forms in 2D: parameters on body 1, 1..100000 (default 64)", &o.n2, 1,
 			100000),

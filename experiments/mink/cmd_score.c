@@ -8,11 +8,13 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "faces.h"
 #include "points.h"
 
 static void help(FILE *fp)
 {
-	fprintf(fp, "usage: mink score --dim 2|3 --body1 SPEC --body2 SPEC --points FILE [--set contact|plus] [--csv]\n"
+	fprintf(fp, "usage: mink score --dim 2|3 --body1 SPEC --body2 SPEC --points FILE [--set contact|plus]\n"
+		"                  [--faces FILE] [--csv]\n"
 		"\n"
 		"Measure how far the points in FILE are from the true boundary of the contact\n"
 		"set B1 (+) (-B2) (default; body 2's translation drops out) or of B1 (+) B2\n"
@@ -28,6 +30,15 @@ static void help(FILE *fp)
 		"--points: a CSV with a header naming columns x, y (and z), as 'mink sum'\n"
 		"writes, or no header and x, y[, z] first; '-' for standard input; lines\n"
 		"starting with # are skipped. Bad input names the file, line and column.\n"
+		"--faces (3D): the points' triangles, one i,j,k per line (0-based point\n"
+		"indices; a header naming i, j, k selects those columns, so the .faces.csv of\n"
+		"'mink scene' reads as it is). The measure takes the points' convex hull, so\n"
+		"the faces are checked to close a convex surface over the points (every edge\n"
+		"shared by two triangles in opposite directions, no point outside a triangle's\n"
+		"plane by more than 1e-9 of the points' extent), which makes them that hull's\n"
+		"boundary: the figures are then those of the faces, and the volume they\n"
+		"enclose is printed (CSV: columns faces, faces_volume at the end). Faces that\n"
+		"fail the check, or a bad index (file, line, column, allowed range): exit 2.\n"
 		"--csv: one header line and one row instead of the text.\n"
 		"Exit status: 0 when measured, 2 on bad input.\n\n");
 }
@@ -39,16 +50,18 @@ static const char *const mkScoreColumns =
 	"off_boundary_max,off_boundary_rel,off_boundary_bound,worst_point,measure_rel,measure_bound,"
 	"support_gap,worst_dir_x,worst_dir_y,worst_dir_z,worst_signed,inside,encloses,allowance";
 
-static void mkScore_PrintCsv(const mkScore *s)
+static void mkScore_PrintCsv(const mkScore *s, const mkFaces_Check *faces)
 {
 	const mkDeviation *d = &s->dev;
-	printf("%s\n", mkScoreColumns);
+	printf("%s%s\n", mkScoreColumns, faces ? ",faces,faces_volume" : "");
 	printf("%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
-		"%.17g,%d,%d,%.17g\n",
+		"%.17g,%d,%d,%.17g",
 		d->points, d->nonfinite, d->vertices, d->size, d->hausdorff_abs, d->hausdorff_rel, d->hausdorff_bound,
 		d->gap_in, d->gap_out, d->off_boundary_max, d->off_boundary_rel, d->off_boundary_bound, d->worst,
 		d->area_rel, d->area_bound, s->support_gap, s->worst_dir[0], s->worst_dir[1], s->worst_dir[2],
 		s->worst_signed, s->inside, s->encloses, s->allowance);
+	if (faces) printf(",%d,%.17g", faces->faces, faces->volume);
+	printf("\n");
 }
 
 static void mkScore_PrintText(const mkScore *s, int dim)
@@ -73,7 +86,7 @@ static void mkScore_PrintText(const mkScore *s, int dim)
 
 int mkCmd_Score(int argc, char **argv)
 {
-	const char *spec1 = NULL, *spec2 = NULL, *points = NULL;
+	const char *spec1 = NULL, *spec2 = NULL, *points = NULL, *faces = NULL;
 	long dim = 0;
 	int setc = 0, csv = 0;
 	mkFlag flags[] = {
@@ -83,6 +96,8 @@ int mkCmd_Score(int argc, char **argv)
 		MK_FLAG_TEXT("--points", "FILE", "the points as CSV (x,y[,z]), '-' for standard input (required)", &points,
 			NULL),
 		MK_FLAG_CHOICE("--set", "contact|plus", "the set the points are of (default contact)", &setc, mkScoreSetNames),
+		MK_FLAG_TEXT("--faces", "FILE", "3D: the points' triangles (i,j,k per line), checked to close\n"
+			"a convex surface over them", &faces, NULL),
 		MK_FLAG_SWITCH("--csv", "one header line and one row of figures", &csv),
 	};
 	int rc = mkCli_Parse("score", flags, MK_COUNT(flags), argc, argv, help);
@@ -102,6 +117,16 @@ int mkCmd_Score(int argc, char **argv)
 		mkPointSet_Free(&pts);
 		return 2;
 	}
+	mkFaces_Check fc = {0};
+	if (faces && dim != 3) {
+		fprintf(stderr, "mink score: --faces is for --dim 3 only (2D boundaries need no triangles)\n");
+		mkPointSet_Free(&pts);
+		return 2;
+	}
+	if (faces && mkFaces_Check3(faces, &pts, &fc)) {
+		mkPointSet_Free(&pts);
+		return 2;
+	}
 	mkScore s;
 	mkResult r = dim == 2 ? mkScore2_Points(s1.body2, s2.body2, set, &pts, NULL, &s)
 		: mkScore3_Points(s1.body3, s2.body3, set, &pts, NULL, &s);
@@ -111,9 +136,12 @@ int mkCmd_Score(int argc, char **argv)
 		return 2;
 	}
 	if (csv)
-		mkScore_PrintCsv(&s);
+		mkScore_PrintCsv(&s, faces ? &fc : NULL);
 	else
 		mkScore_PrintText(&s, (int)dim);
+	if (faces && !csv)
+		printf("faces              %d triangles, a closed convex surface over the points; volume %.17g\n",
+			fc.faces, fc.volume);
 	if (fflush(stdout)) {
 		fprintf(stderr, "mink score: writing to standard output failed\n");
 		return 2;

@@ -27,7 +27,9 @@ int main(int argc, char **argv)
 		MK_FLAG_CHOICE("--dim", "2|3|both", "which dimensions (default both)", &dims, mkDimNames),
 		MK_FLAG_TEXT("--cases", "LIST", "comma-separated EE, ES, SQ, or all (default all)", o.case_on,
 			mkTiming_ParseCases),
-		MK_FLAG_TEXT("--methods", "LIST", "comma-separated registry names, or all (default all)", o.method_on,
+		MK_FLAG_TEXT("--methods", "LIST", "comma-separated registry names, exec:NAME=COMMAND\n"
+			"(external methods), @FILE (a methods file: docs/compare.md), or all\n"
+			"(default all)", o.method_on,
 			mkTiming_ParseMethods),
 		MK_FLAG_REPEAT("--levels", "2d=LIST|3d=LIST", "2D levels: points per body, 3..100000;\n"
 			"3D levels: grid side n (n x n points per body), 3..3000;\n"

@@ -32,7 +32,8 @@ int main(int argc, char **argv)
 		MK_FLAG_LONG("--repeats", "R", "timed calls per row (median), 1..64; a call over 50 ms\n"
 			"is timed once (default 5)", &o.repeats, 1, 64),
 		MK_FLAG_TEXT("--methods", "LIST", "comma-separated registry names and closed-normal@normal-angles,\n"
-			"closed-normal@spaced, or all (default all)", o.curve_on, mkTradeoff_ParseMethods),
+			"closed-normal@spaced, exec:NAME=COMMAND (external methods), @FILE (a methods\n"
+			"file: docs/compare.md), or all (default all)", o.curve_on, mkTradeoff_ParseMethods),
 		MK_FLAG_LONG("--threads", "T", "threads for the error measure and the true areas/volumes,\n"
 			"1..64; the timed calls always run alone (default 2)", &o.threads, 1, MK_TRADEOFF_THREADS_MAX),
 	};

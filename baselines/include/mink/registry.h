@@ -105,10 +105,12 @@ MK_API int mkRefuse(char *msg, size_t msglen, const char *format, ...);
 
 /* A --methods list as drivers take it ("all", or comma-separated names,
  * where an item "exec:COMMAND" or "exec:NAME=COMMAND" names an external
- * method, mink/external.h) rewritten into out with every external item
- * registered and replaced by its name, so that the list holds registry
- * names only. Returns 1, or 0 and a message naming the item (an external
- * method that cannot be registered, or out too small). */
+ * method, mink/external.h, and an item "@FILE" names a methods file: one
+ * NAME=COMMAND per line, lines starting with # and blank lines skipped)
+ * rewritten into out with every external item registered and replaced by
+ * its name, so that the list holds registry names only. Returns 1, or 0 and
+ * a message naming the item (an external method that cannot be registered,
+ * or out too small; for a file, the file, the line and the field). */
 MK_API int mkRegistry_Resolve(const char *list, char *out, size_t outlen, char *msg, size_t msglen);
 
 /* Resolution limits. Closed forms: n >= 1 in 2D, n >= 2 in 3D (an n x n

@@ -111,3 +111,37 @@ foreach(want "^2,EE,garbage,contact,8,0,0,nan,nan,nan,nan,0,.*,garbage$" "^3,SQ,
     message(FATAL_ERROR "tradeoff: no row matching '${want}'")
   endif()
 endforeach()
+
+# A methods file (--methods @FILE): comments and blank lines skipped, every
+# NAME=COMMAND line a method in the run's rows; a bad line named with its
+# file, line and field, exit 2.
+file(WRITE ${WORK}/methods.txt "# two external methods\n\n  support=python3 ${SRC}/docs/compare/support.py\n"
+  "crash = sh ${ext}/crash.sh\n")
+run(0 ${TIMING} --trials 1 --seed 3 --cases EE --dim 2 --levels 2d=8 --budget 1e6
+  --methods "closed-normal,@${WORK}/methods.txt" --out ${WORK}/timing-file.csv)
+file(STRINGS ${WORK}/timing-file.csv rows)
+foreach(want "2,EE,support,8,8,0,ok," "2,EE,crash,8,8,0,crashed," "2,EE,closed-normal,8,8,0,ok,")
+  string(FIND "${rows}" "${want}" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "timing with a methods file: no row '${want}' in\n${rows}")
+  endif()
+endforeach()
+foreach(case "bad_name|ok=sh a.sh\n\n#c\nmy method=sh b.sh\n|methods-bad_name.txt line 4: NAME .my method.: must be 1 to 100 letters"
+    "no_eq|# x\nsh b.sh\n|methods-no_eq.txt line 2: NAME: expected NAME=COMMAND"
+    "no_cmd|x=  \n|methods-no_cmd.txt line 1: COMMAND: empty"
+    "empty|# nothing\n\n|methods-empty.txt names no method")
+  string(REPLACE "|" ";" case "${case}")
+  list(GET case 0 tag)
+  list(GET case 1 text)
+  list(GET case 2 want)
+  file(WRITE ${WORK}/methods-${tag}.txt "${text}")
+  run(2 ${TRADEOFF} --trials 1 --seed 3 --levels 2d=8 --budget 0 --repeats 1
+    --methods "closed-normal,@${WORK}/methods-${tag}.txt" --out ${WORK}/tradeoff-bad.csv)
+  if(NOT err MATCHES "${want}")
+    message(FATAL_ERROR "methods file ${tag}: '${err}' does not say '${want}'")
+  endif()
+endforeach()
+run(2 ${TIMING} --methods "@${WORK}/no-such-file.txt" --out ${WORK}/t.csv)
+if(NOT err MATCHES "no-such-file.txt cannot be opened")
+  message(FATAL_ERROR "missing methods file: ${err}")
+endif()
