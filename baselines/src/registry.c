@@ -9,7 +9,6 @@
  * table in registry.def (mink/registry.h). */
 #include <ctype.h>
 #include <limits.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -367,33 +366,4 @@ int mkMethod3_Accepts(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, char
 	if (!m || !runs_in(m, 3) || !m->accepts3)
 		return mkRefuse(msg, msglen, "method %s does not run in 3D", m ? m->name : "(none)");
 	return m->accepts3(b1, b2, set, msg, msglen);
-}
-
-int mkRefuse(char *msg, size_t msglen, const char *format, ...)
-{
-	if (msg && msglen) {
-		va_list args;
-		va_start(args, format);
-		vsnprintf(msg, msglen, format, args);
-		va_end(args);
-	}
-	return 0;
-}
-
-int mkAcceptAny2(mkBody2 b1, mkBody2 b2, mkSet set, char *msg, size_t msglen)
-{
-	(void)b1;
-	(void)b2;
-	(void)set;
-	if (msg && msglen) msg[0] = '\0';
-	return 1;
-}
-
-int mkAcceptAny3(mkBody3 b1, mkBody3 b2, mkSet set, char *msg, size_t msglen)
-{
-	(void)b1;
-	(void)b2;
-	(void)set;
-	if (msg && msglen) msg[0] = '\0';
-	return 1;
 }
