@@ -8,6 +8,7 @@
 
 #include <mink/referee.h>
 #include <mink/registry.h>
+#include <mink/score.h>
 
 #include "cli.h"
 #include "commands.h"
@@ -27,7 +28,58 @@ static void help(FILE *fp)
 		"follows from the number of points (N in 2D, N x N in 3D) and is checked.\n"
 		"--dense: default 8192 (2D) / 128 (3D grid side).\n"
 		"Points of a method that is not sampled must be in its order: point k belongs\n"
-		"to body 1's surface parameter k (mink/registry.h).\n\n");
+		"to body 1's surface parameter k, or the sum's normal k (mink/registry.h).\n"
+		"A method that is not sampled and whose points are unordered (an external\n"
+		"exec: method, or a registry method declaring MK_INDEX_UNORDERED) is judged\n"
+		"by the error measure ('mink score'): it passes when every point lies within\n"
+		"--tol of the sum's size off the true boundary (default: the method's stated\n"
+		"tolerance, or for an exact method the measure's rounding allowance; an\n"
+		"external method states none, so --tol is required for it).\n\n");
+}
+
+/* ---- unordered points: judged by the error measure ------------------------- */
+
+/* Points with no index to check them by: pass when every point lies within
+ * tol (relative to the sum's size; < 0: the method's stated tolerance) off
+ * the true boundary, by the error measure (mink/score.h), which shares
+ * nothing with the method. Returns the exit status. */
+static int mkVerify_Unordered(const mkMethod *m, int dim, const mkSpec *s1, const mkSpec *s2, mkSet set,
+	const mkPointSet *pts, double tol, int quiet)
+{
+	mkScore sc;
+	mkResult r = dim == 2 ? mkScore2_Points(s1->body2, s2->body2, set, pts, NULL, &sc)
+		: mkScore3_Points(s1->body3, s2->body3, set, pts, NULL, &sc);
+	if (r != MK_OK) {
+		fprintf(stderr, "mink verify: the error measure could not run: %s\n", mkResult_Name(r));
+		return 2;
+	}
+	const char *whose = "--tol";
+	if (tol < 0.0) {
+		tol = mkMethod_Tolerance(m);
+		whose = "stated by the method";
+		if (tol <= 0.0 && (m->flags & MK_METHOD_EXACT)) {
+			tol = sc.allowance / sc.dev.size;
+			whose = "the measure's rounding allowance, for an exact method";
+		}
+		if (tol <= 0.0) {
+			fprintf(stderr, "mink verify: method %s declares its points unordered and states no accuracy: give --tol "
+				"T, the largest distance off the boundary to allow, relative to the sum's size (1e-17 to 1)\n", m->name);
+			return 2;
+		}
+	}
+	int pass = sc.dev.nonfinite == 0 && sc.dev.off_boundary_rel <= tol;
+	if (!quiet) {
+		printf("method %s, %dD, %s set, %d points, unordered: judged by the error measure\n", m->name, dim,
+			mkSet_Name(set), pts->count);
+		printf("%s: largest distance off the boundary %.3g of the size (tolerance %.3g, %s); Hausdorff %.3g of the "
+			"size; %d non-finite points\n", pass ? "PASS" : "FAIL", sc.dev.off_boundary_rel, tol, whose,
+			sc.dev.hausdorff_rel, sc.dev.nonfinite);
+		if (fflush(stdout)) {
+			fprintf(stderr, "mink verify: writing to standard output failed\n");
+			return 2;
+		}
+	}
+	return pass ? 0 : 1;
 }
 
 /* ---- the command ----------------------------------------------------------- */
@@ -38,6 +90,7 @@ int mkCmd_Verify(int argc, char **argv)
 {
 	const char *spec1 = NULL, *spec2 = NULL, *method = NULL, *points = NULL;
 	long dim = 0, n = 0, dense = 0;
+	double tol = 0.0;
 	int quiet = 0, setc = 0;
 	mkFlag flags[] = {
 		MK_FLAG_LONG("--dim", "2|3", "dimension (required)", &dim, 2, 3),
@@ -50,6 +103,8 @@ int mkCmd_Verify(int argc, char **argv)
 		MK_FLAG_LONG("--n", "N", "the method's resolution (default: from the point count)", &n, 1, 100000000),
 		MK_FLAG_LONG("--dense", "K", "the referee's dense samples, 8..1048576", &dense, 8, 1 << 20),
 		MK_FLAG_SWITCH("--quiet", "print nothing; only the exit status", &quiet),
+		MK_FLAG_DOUBLE("--tol", "T", "unordered points: largest distance off the boundary allowed,\n"
+			"relative to the sum's size (default: what the method states)", &tol, 1e-17, 1.0),
 	};
 	int rc = mkCli_Parse("verify", flags, MK_COUNT(flags), argc, argv, help);
 	if (rc != MK_CLI_GO)
@@ -82,6 +137,12 @@ int mkCmd_Verify(int argc, char **argv)
 	if (mkPoints_Read("verify", points, (int)dim, &pts)) {
 		mkPointSet_Free(&pts);
 		return 2;
+	}
+
+	if (mkMethod_Indexing(m) == MK_INDEX_UNORDERED && !(m->flags & MK_METHOD_SAMPLED)) {
+		rc = mkVerify_Unordered(m, (int)dim, &s1, &s2, set, &pts, flags[9].given ? tol : -1.0, quiet);
+		mkPointSet_Free(&pts);
+		return rc;
 	}
 
 	/* The resolution: given, or (not sampled) read off the point count. */

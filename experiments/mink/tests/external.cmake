@@ -58,10 +58,24 @@ foreach(d 2 3)
   endforeach()
 endforeach()
 
-# mink verify takes it, and says why it cannot judge unordered points.
+# mink verify takes it: unordered points, judged by the error measure against
+# --tol (an external method states no accuracy, so --tol is required); the
+# exact support points pass at 1e-13, and fail with one point far off.
 run(2 ${MINK} verify --dim 2 --method ${support} --body1 ${B1} --body2 ${B2} --points ${WORK}/support2contact.csv)
-if(NOT err MATCHES "declares its points unordered")
+if(NOT err MATCHES "declares its points unordered and states no accuracy: give --tol")
   message(FATAL_ERROR "verify: ${err}")
+endif()
+run(0 ${MINK} verify --dim 2 --method ${support} --body1 ${B1} --body2 ${B2} --points ${WORK}/support2contact.csv
+  --tol 1e-13)
+if(NOT out MATCHES "unordered: judged by the error measure\nPASS: largest distance off the boundary [0-9.e-]+ of the size")
+  message(FATAL_ERROR "verify --tol: ${out}")
+endif()
+file(READ ${WORK}/support2contact.csv vtext)
+file(WRITE ${WORK}/support2contact_off.csv "${vtext}1000,1000\n")
+run(1 ${MINK} verify --dim 2 --method ${support} --body1 ${B1} --body2 ${B2} --points ${WORK}/support2contact_off.csv
+  --tol 1e-13)
+if(NOT out MATCHES "\nFAIL: largest distance off the boundary")
+  message(FATAL_ERROR "verify --tol, a point off the boundary: ${out}")
 endif()
 
 # Failures: exit 1 from mink sum, with the reason.
