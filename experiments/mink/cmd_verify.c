@@ -64,8 +64,6 @@ static int mkVerify_Report(const mkMethod *m, int dim, mkSet set, int n, mkResul
 
 /* ---- the command ----------------------------------------------------------- */
 
-static const char *const mkSetNames[] = { "contact", "plus" };
-
 int mkCmd_Verify(int argc, char **argv)
 {
 	const char *spec1 = NULL, *spec2 = NULL, *method = NULL, *points = NULL;
@@ -79,7 +77,7 @@ int mkCmd_Verify(int argc, char **argv)
 		MK_FLAG_TEXT("--method", "NAME", "the method that made the points (required; 'mink methods')", &method, NULL),
 		MK_FLAG_TEXT("--points", "FILE", "the points as CSV (x,y[,z] first), '-' for standard input (required)",
 			&points, NULL),
-		MK_FLAG_CHOICE("--set", "contact|plus", "the set the points are of (default contact)", &setc, mkSetNames),
+		MK_FLAG_SET("--set", "the set the points are of (default contact)", &setc),
 		MK_FLAG_LONG("--n", "N", "the method's resolution (default: from the point count)", &n, 1, 100000000),
 		MK_FLAG_LONG("--dense", "K", "the referee's dense samples, 8..1048576", &dense, 8, 1 << 20),
 		MK_FLAG_SWITCH("--quiet", "print nothing; only the exit status", &quiet),
