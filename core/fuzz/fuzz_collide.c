@@ -30,8 +30,9 @@
  *  - the batch, on the pair both ways round (twice, through index arrays):
  *    a lower bound is at most L, an upper bound at least L, a separating
  *    direction's f is its lower bound, an overlap point lies in both bodies,
- *    a "not clear" answer has L <= delta, a distance is at least L and at
- *    most its witnesses' distance; the same three status checks as above;
+ *    a "not clear" answer has L <= delta, a certified distance lies in its
+ *    bracket and is at least L (less the bracket's width), every distance
+ *    at most its witnesses' distance; the same three status checks as above;
  *    and a certain status (separated or overlapping) equals the swapped
  *    pair's and the one-pair query's where those are certain too.
  * A violation aborts, which libFuzzer reports as a crash with its input. */
@@ -284,7 +285,11 @@ static void fuzzCheckBatch(const mkBody3 *m, const fuzzBody *f, mkBatchMode mode
 		if (st[k] == MK_CONTACT_SEPARATED) FUZZ_CHECK(!fuzzCommonPoint(a, b), "batch separated");
 		if (mode == MK_BATCH_CLEARANCE && clear[k] == 0) FUZZ_CHECK(L <= delta + tol, "batch clearance");
 		if ((mode == MK_BATCH_DISTANCE || mode == MK_BATCH_FULL) && isfinite(dist[k])) {
-			FUZZ_CHECK(L <= dist[k] + tol, "batch distance");
+			/* certified (a finite bracket): the distance lies in it, so no direction does better; an
+			 * overlap whose depth search ran out of budget has a local optimum and no bracket */
+			if (isfinite(lo[k]) && isfinite(up[k]))
+				FUZZ_CHECK(dist[k] >= lo[k] - tol && dist[k] <= up[k] + tol && L <= dist[k] + (up[k] - lo[k]) + tol,
+					"batch distance");
 			if (st[k] == MK_CONTACT_SEPARATED) {
 				double w1[3] = { p1[k].x, p1[k].y, p1[k].z }, w2[3] = { p2[k].x, p2[k].y, p2[k].z };
 				FUZZ_CHECK(fuzzGauge(a, w1) <= 1.0 + 1e-6 && fuzzGauge(b, w2) <= 1.0 + 1e-6, "batch witnesses");
