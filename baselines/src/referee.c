@@ -702,9 +702,9 @@ static mkResult mkReferee_Measured(const mkMethod *m, mkResult r, const mkDeviat
 	}
 	if (!(rel > 0.0)) {
 		snprintf(v->message, sizeof v->message,
-			"method %s declares its points unordered and states no accuracy: give the largest distance off the "
-			"boundary to allow, relative to the sum's size (mkRefereeOptions.unordered_tol; mink verify --tol)",
-			m->name);
+			"method %s declares its points unordered and states no accuracy: give --tol T "
+			"(mkRefereeOptions.unordered_tol), the largest distance off the boundary to allow, relative to the "
+			"sum's size (1e-17 to 1)", m->name);
 		return MK_ERR_UNSUPPORTED;
 	}
 	v->extent = d->size;
@@ -716,9 +716,9 @@ static mkResult mkReferee_Measured(const mkMethod *m, mkResult r, const mkDeviat
 	v->nonfinite = d->nonfinite;
 	v->pass = d->nonfinite == 0 && d->off_boundary_max <= v->tol + d->off_boundary_bound;
 	snprintf(v->message, sizeof v->message,
-		"%s: %s, %d unordered points judged by the error measure: largest distance off the boundary %.3g of the "
-		"size (tolerance %.3g, %s); Hausdorff %.3g of the size; %d non-finite points", v->pass ? "PASS" : "FAIL",
-		m->name, d->points, d->off_boundary_rel, rel, whose, d->hausdorff_rel, d->nonfinite);
+		"%s: largest distance off the boundary %.3g of the size (tolerance %.3g, %s); Hausdorff %.3g of the "
+		"size; %d non-finite points (%s, %d unordered points, by the error measure)", v->pass ? "PASS" : "FAIL",
+		d->off_boundary_rel, rel, whose, d->hausdorff_rel, d->nonfinite, m->name, d->points);
 	return MK_OK;
 }
 
