@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include <mink/baselines.h>
+#include <mink/error.h>
 #include <mink/referee.h>
 #include <mink/registry.h>
 
@@ -682,14 +683,43 @@ mkResult mkReferee3_Support(mkBody3 b1, mkBody3 b2, mkSet set, const mkPointSet 
 /* ---- dispatch -------------------------------------------------------------- */
 
 /* Boundary points in no particular order carry no normal the support check
- * could use: refused, with a message that says so and where to go. */
-static mkResult mkReferee_Unordered(const mkMethod *m, mkVerdict *v)
+ * could use: they are judged by the error measure (mink/error.h, code of its
+ * own), each point's distance off the true boundary against the tolerance
+ * plus the measure's own bound on that distance. The tolerance, relative to
+ * the sum's size: opt->unordered_tol when given, else the method's stated
+ * one, else for an exact method the rounding allowance; a method with none
+ * of these is refused (MK_ERR_UNSUPPORTED, the message saying what to give). */
+static mkResult mkReferee_Measured(const mkMethod *m, mkResult r, const mkDeviation *d, const mkRefereeOptions *opt,
+	mkVerdict *v)
 {
-	verdict_init(v, MK_VERDICT_SUPPORT, 0);
+	verdict_init(v, MK_VERDICT_MEASURE, d->points);
+	if (r != MK_OK) return r;
+	double rel = opt && opt->unordered_tol > 0.0 ? opt->unordered_tol : mkMethod_Tolerance(m);
+	const char *whose = opt && opt->unordered_tol > 0.0 ? "given" : "stated by the method";
+	if (!(rel > 0.0) && (m->flags & MK_METHOD_EXACT)) {
+		rel = (opt && opt->tol_factor > 0.0 ? opt->tol_factor : 1.0) * MK_REFEREE_ULPS * (DBL_EPSILON / 2);
+		whose = "the rounding allowance, for an exact method";
+	}
+	if (!(rel > 0.0)) {
+		snprintf(v->message, sizeof v->message,
+			"method %s declares its points unordered and states no accuracy: give --tol T "
+			"(mkRefereeOptions.unordered_tol), the largest distance off the boundary to allow, relative to the "
+			"sum's size (1e-17 to 1)", m->name);
+		return MK_ERR_UNSUPPORTED;
+	}
+	v->extent = d->size;
+	v->tol = rel * d->size;
+	v->depth = d->off_boundary_max;
+	v->excess = d->off_boundary_max;
+	v->gap = d->off_boundary_bound;
+	v->worst = d->worst;
+	v->nonfinite = d->nonfinite;
+	v->pass = d->nonfinite == 0 && d->off_boundary_max <= v->tol + d->off_boundary_bound;
 	snprintf(v->message, sizeof v->message,
-		"method %s declares its points unordered (MK_INDEX_UNORDERED): the referee needs each point's normal; "
-		"measure them with the error measure (mink score) instead", m->name);
-	return MK_ERR_UNSUPPORTED;
+		"%s: largest distance off the boundary %.3g of the size (tolerance %.3g, %s); Hausdorff %.3g of the "
+		"size; %d non-finite points (%s, %d unordered points, by the error measure)", v->pass ? "PASS" : "FAIL",
+		d->off_boundary_rel, rel, whose, d->hausdorff_rel, d->nonfinite, m->name, d->points);
+	return MK_OK;
 }
 
 mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n, const mkPointSet *out,
@@ -697,9 +727,13 @@ mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, 
 {
 	if (!m || !out || !v || out->dim != 2) return MK_ERR_ARGUMENT;
 	if (m->flags & MK_METHOD_SAMPLED) return mkReferee2_Hull(b1, b2, set, n, out, v);
-	if (n < 1 || out->count != n) return MK_ERR_ARGUMENT;
 	mkMethodIndexing idx = mkMethod_Indexing(m);
-	if (idx == MK_INDEX_UNORDERED) return mkReferee_Unordered(m, v);
+	if (idx == MK_INDEX_UNORDERED) {
+		mkDeviation d = {0};
+		mkResult r = out->count >= 1 ? mkDeviation2_Measure(b1, b2, set, out, NULL, &d) : MK_ERR_ARGUMENT;
+		return mkReferee_Measured(m, r, &d, opt, v);
+	}
+	if (n < 1 || out->count != n) return MK_ERR_ARGUMENT;
 	double *u = malloc(4 * (size_t)n * sizeof *u);
 	if (!u) return MK_ERR_MEMORY;
 	mkResult r = mkSample2_Angles(n, u, u + n);
@@ -722,9 +756,13 @@ mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, 
 {
 	if (!m || !out || !v || out->dim != 3) return MK_ERR_ARGUMENT;
 	if (m->flags & MK_METHOD_SAMPLED) return mkReferee3_Hull(b1, b2, set, n, out, v);
-	if (n < 2 || n > 46340 || out->count != n * n) return MK_ERR_ARGUMENT;
 	mkMethodIndexing idx = mkMethod_Indexing(m);
-	if (idx == MK_INDEX_UNORDERED) return mkReferee_Unordered(m, v);
+	if (idx == MK_INDEX_UNORDERED) {
+		mkDeviation d = {0};
+		mkResult r = out->count >= 1 ? mkDeviation3_Measure(b1, b2, set, out, NULL, &d) : MK_ERR_ARGUMENT;
+		return mkReferee_Measured(m, r, &d, opt, v);
+	}
+	if (n < 2 || n > 46340 || out->count != n * n) return MK_ERR_ARGUMENT;
 	int count = n * n;
 	double *u = malloc(6 * (size_t)count * sizeof *u);
 	if (!u) return MK_ERR_MEMORY;

@@ -3,7 +3,7 @@
  * argument (2 or 3; CTest runs both, as test_referee2 and test_referee3).
  * The referee's verdicts are the assertions; the figures are printed.
  * Boundary points a method declares unordered (mkMethod_Indexing) are
- * judged by the error measure, the referee having no normals for them.
+ * judged by the referee with the error measure, having no normals.
  * 2D: closed forms at 512 points, sampled methods at 96 samples per body
  * (9216 pairwise sums). 3D: closed forms on a 16 x 16 grid, sampled methods
  * on an 8 x 8 grid per body (4096 pairwise sums: the exact hull check costs
@@ -23,26 +23,6 @@
 static Case2 c2[16];
 static Case3 c3[16];
 
-/* Boundary points declared unordered carry no normals for the referee
- * (it refuses them): they are judged by the error measure instead, each
- * point's distance off the true boundary within the allowance (plus the
- * measure's own bound), reported as the verdict's depth. */
-static void judge_unordered(const mkMethod *m, int dim, int k, mkSet set, const mkPointSet *out,
-	const mkRefereeOptions *opt, mkVerdict *v)
-{
-	mkDeviation d;
-	mkResult r = dim == 2 ? mkDeviation2_Measure(c2[k].a, c2[k].b, set, out, NULL, &d)
-		: mkDeviation3_Measure(c3[k].a, c3[k].b, set, out, NULL, &d);
-	ENSURE(r == MK_OK);
-	double factor = opt && opt->tol_factor > 0 ? opt->tol_factor : 1.0;
-	v->extent = d.size;
-	v->tol = factor * MK_REFEREE_ULPS * (DBL_EPSILON / 2) * d.size;
-	v->depth = d.off_boundary_max;
-	v->excess = d.off_boundary_max;
-	v->pass = r == MK_OK && d.nonfinite == 0 && d.off_boundary_max <= v->tol + d.off_boundary_bound;
-	snprintf(v->message, sizeof v->message, "%s (unordered, by the error measure): %s", m->name, d.message);
-}
-
 /* Case k's name when method m takes it (then also run and checked, the
  * verdict in *v); NULL when m refuses the pair. */
 static const char *run_case(const mkMethod *m, int dim, int k, mkSet set, int n, mkPointSet *out,
@@ -50,22 +30,15 @@ static const char *run_case(const mkMethod *m, int dim, int k, mkSet set, int n,
 {
 	char msg[256];
 	memset(v, 0, sizeof *v);
-	int unordered = !(m->flags & MK_METHOD_SAMPLED) && mkMethod_Indexing(m) == MK_INDEX_UNORDERED;
 	if (dim == 2) {
 		if (!mkMethod2_Accepts(m, c2[k].a, c2[k].b, set, msg, sizeof msg)) return NULL;
 		ENSURE(m->run2(c2[k].a, c2[k].b, set, n, out) == MK_OK);
-		if (unordered)
-			judge_unordered(m, dim, k, set, out, opt, v);
-		else
-			ENSURE(mkReferee2_Check(m, c2[k].a, c2[k].b, set, n, out, opt, v) == MK_OK);
+		ENSURE(mkReferee2_Check(m, c2[k].a, c2[k].b, set, n, out, opt, v) == MK_OK);
 		return c2[k].name;
 	}
 	if (!mkMethod3_Accepts(m, c3[k].a, c3[k].b, set, msg, sizeof msg)) return NULL;
 	ENSURE(m->run3(c3[k].a, c3[k].b, set, n, out) == MK_OK);
-	if (unordered)
-		judge_unordered(m, dim, k, set, out, opt, v);
-	else
-		ENSURE(mkReferee3_Check(m, c3[k].a, c3[k].b, set, n, out, opt, v) == MK_OK);
+	ENSURE(mkReferee3_Check(m, c3[k].a, c3[k].b, set, n, out, opt, v) == MK_OK);
 	return c3[k].name;
 }
 
@@ -82,7 +55,7 @@ int main(int argc, char **argv)
 	 * dense grid per body (3D): the local bounds at each support point do
 	 * the sharp work, the dense samples only back them up, so fewer than the
 	 * defaults (8192, 128 x 128) keep the test quick. */
-	mkRefereeOptions opt = {dim == 2 ? 4096 : 48, 0, 0};
+	mkRefereeOptions opt = {dim == 2 ? 4096 : 48, 0, 0, 0};
 	const double allowance = MK_REFEREE_ULPS * DBL_EPSILON / 2; /* of the scale */
 	for (int i = 0; i < mkRegistry_Count(); ++i) {
 		const mkMethod *m = mkRegistry_At(i);

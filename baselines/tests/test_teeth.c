@@ -27,7 +27,7 @@ static mkPointSet copy(const mkPointSet *p)
 static int judge2(const mkMethod *m, const Case2 *c, mkSet set, int n, const mkPointSet *p)
 {
 	mkVerdict v;
-	mkRefereeOptions opt = {2048, 0, 0};
+	mkRefereeOptions opt = {2048, 0, 0, 0};
 	if (mkReferee2_Check(m, c->a, c->b, set, n, p, &opt, &v) != MK_OK) return -1;
 	return v.pass;
 }
@@ -35,7 +35,7 @@ static int judge2(const mkMethod *m, const Case2 *c, mkSet set, int n, const mkP
 static int judge3(const mkMethod *m, const Case3 *c, mkSet set, int n, const mkPointSet *p)
 {
 	mkVerdict v;
-	mkRefereeOptions opt = {32, 0, 0};
+	mkRefereeOptions opt = {32, 0, 0, 0};
 	if (mkReferee3_Check(m, c->a, c->b, set, n, p, &opt, &v) != MK_OK) return -1;
 	return v.pass;
 }
@@ -71,7 +71,7 @@ static void teethBoundary2(const Case2 *c)
 	bad.x[k] = good.x[k] - 0.05 * v.extent * nrm.y;
 	bad.y[k] = good.y[k] + 0.05 * v.extent * nrm.x;
 	ENSURE(judge2(&mkMethod_ClosedGradient, c, MK_SET_CONTACT, n, &bad) == 0);
-	mkRefereeOptions nofan = {2048, 0, 1};
+	mkRefereeOptions nofan = {2048, 0, 1, 0};
 	ENSURE(mkReferee2_Check(&mkMethod_ClosedGradient, c->a, c->b, MK_SET_CONTACT, n, &bad, &nofan, &v) == MK_OK);
 	ENSURE(v.pass); /* without the fan it escapes: the fan is what catches it */
 	/* A NaN. */

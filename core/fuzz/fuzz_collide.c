@@ -1,6 +1,7 @@
 /* fuzz_collide.c - libFuzzer harness over the collision queries of one pair
- * (mkCollide3_Normal, mkCollide3_NormalFrom, mkCollide3_Ray), with an
- * oracle that shares no code with the solver.
+ * (mkCollide3_Normal, mkCollide3_NormalFrom, mkCollide3_Ray) and of the
+ * batch (mkCollide3_Batch, in every mode), with an oracle that shares no code
+ * with the solver.
  *
  * The input bytes are decoded (never rejected: missing bytes read as zero)
  * into two superquadrics: per body the semi-axes a, b, c in [0.05, 5]
@@ -8,8 +9,8 @@
  * (R a rotation from a quaternion, S a diagonal scale in [0.2, 5]) and a
  * centre; body 2's centre is body 1's plus an offset of length 1e-6 ... 30
  * (logarithmically) in any direction, so that deep overlaps, touching pairs
- * and far pairs are all met. A last byte picks a start direction for
- * mkCollide3_NormalFrom.
+ * and far pairs are all met. The next byte picks a start direction for
+ * mkCollide3_NormalFrom, the last one the batch's mode and clearance delta.
  *
  * The oracle evaluates, with its own code (the nested l_p dual norms below,
  * not mkBody3_SupportValue), the support functions h1, h2 and the bound
@@ -25,7 +26,15 @@
  *    separated: the witnesses lie in their bodies and L <= |p2 - p1|;
  *  - a status "overlapping" (any query) has no separating direction:
  *    L <= tol; a status "separated" has no point common to both bodies
- *    among 65 points of the centre line.
+ *    among 65 points of the centre line;
+ *  - the batch, on the pair both ways round (twice, through index arrays):
+ *    a lower bound is at most L, an upper bound at least L, a separating
+ *    direction's f is its lower bound, an overlap point lies in both bodies,
+ *    a "not clear" answer has L <= delta, a certified distance lies in its
+ *    bracket and is at least L (less the bracket's width), every distance
+ *    at most its witnesses' distance; the same three status checks as above;
+ *    and a certain status (separated or overlapping) equals the swapped
+ *    pair's and the one-pair query's where those are certain too.
  * A violation aborts, which libFuzzer reports as a crash with its input. */
 #include <mink/mink.h>
 
@@ -234,6 +243,69 @@ static void fuzzCheck(const char *what, mkResult rc, const mkCollision3 *c, cons
 	if (c->status == MK_CONTACT_SEPARATED) FUZZ_CHECK(!fuzzCommonPoint(b1, b2), what);
 }
 
+/* The batch (mkCollide3_Batch) on the pair both ways round, twice, in one
+ * mode: every answer against the oracle, as for the one-pair queries, and
+ * every certain status (separated or overlapping) against the one-pair
+ * query's and the swapped pair's. */
+static void fuzzCheckBatch(const mkBody3 *m, const fuzzBody *f, mkBatchMode mode, double delta, mkContact single,
+	double scale)
+{
+	enum { N = 4 };
+	const int i1[N] = { 0, 1, 0, 1 }, i2[N] = { 1, 0, 1, 0 };
+	mkContact st[N];
+	double dist[N], lo[N], up[N];
+	mkVec3 nrm[N], p1[N], p2[N];
+	unsigned char clear[N], path[N];
+	mkBatchPairs3 pairs = { N, m, m, i1, i2 };
+	mkBatchOut3 out = { st, dist, lo, up, nrm, p1, p2, clear, path };
+	mkBatchStats3 stats;
+	mkResult rc = mkCollide3_Batch(&pairs, mode, delta, &out, &stats);
+	FUZZ_CHECK(rc == MK_OK || rc == MK_ERR_CONVERGENCE, "batch");
+	FUZZ_CHECK(stats.separating + stats.overlap_point + stats.one_pair + stats.failed == N, "batch");
+	double tol = 1e-7 * scale;
+	for (int k = 0; k < N; ++k) {
+		const fuzzBody *a = &f[i1[k]], *b = &f[i2[k]];
+		if (path[k] == MK_PATH_FAILED) { FUZZ_CHECK(rc != MK_OK && st[k] == MK_CONTACT_UNKNOWN, "batch"); continue; }
+		double n[3] = { nrm[k].x, nrm[k].y, nrm[k].z };
+		mkCollision3 c = { 0 };
+		c.normal = nrm[k];
+		double L = fuzzLowerBound(a, b, &c);
+		FUZZ_CHECK(isfinite(L), "batch");
+		if (isfinite(lo[k])) FUZZ_CHECK(lo[k] <= L + tol, "batch lower");
+		if (!isnan(up[k]) && up[k] < INFINITY) FUZZ_CHECK(L <= up[k] + tol, "batch upper");
+		if (path[k] == MK_PATH_SEPARATING) {
+			double fn = fuzzBound(a, b, n);
+			FUZZ_CHECK(fn >= -tol && (!isfinite(lo[k]) || fabs(fn - lo[k]) <= tol), "batch separating");
+		}
+		if (path[k] == MK_PATH_OVERLAP_POINT) {
+			double x[3] = { p1[k].x, p1[k].y, p1[k].z };
+			FUZZ_CHECK(fuzzGauge(a, x) <= 1.0 + 1e-6 && fuzzGauge(b, x) <= 1.0 + 1e-6, "batch overlap point");
+		}
+		if (st[k] == MK_CONTACT_OVERLAPPING) FUZZ_CHECK(L <= tol, "batch overlapping");
+		if (st[k] == MK_CONTACT_SEPARATED) FUZZ_CHECK(!fuzzCommonPoint(a, b), "batch separated");
+		if (mode == MK_BATCH_CLEARANCE && clear[k] == 0) FUZZ_CHECK(L <= delta + tol, "batch clearance");
+		if ((mode == MK_BATCH_DISTANCE || mode == MK_BATCH_FULL) && isfinite(dist[k])) {
+			/* certified (a finite bracket): the distance lies in it, so no direction does better; an
+			 * overlap whose depth search ran out of budget has a local optimum and no bracket */
+			if (isfinite(lo[k]) && isfinite(up[k]))
+				FUZZ_CHECK(dist[k] >= lo[k] - tol && dist[k] <= up[k] + tol && L <= dist[k] + (up[k] - lo[k]) + tol,
+					"batch distance");
+			if (st[k] == MK_CONTACT_SEPARATED) {
+				double w1[3] = { p1[k].x, p1[k].y, p1[k].z }, w2[3] = { p2[k].x, p2[k].y, p2[k].z };
+				FUZZ_CHECK(fuzzGauge(a, w1) <= 1.0 + 1e-6 && fuzzGauge(b, w2) <= 1.0 + 1e-6, "batch witnesses");
+				double w = sqrt((w2[0] - w1[0]) * (w2[0] - w1[0]) + (w2[1] - w1[1]) * (w2[1] - w1[1])
+					+ (w2[2] - w1[2]) * (w2[2] - w1[2]));
+				FUZZ_CHECK(w >= dist[k] - tol, "batch witnesses");
+			}
+		}
+		int certain = st[k] == MK_CONTACT_SEPARATED || st[k] == MK_CONTACT_OVERLAPPING;
+		if (certain && (single == MK_CONTACT_SEPARATED || single == MK_CONTACT_OVERLAPPING))
+			FUZZ_CHECK(st[k] == single, "batch against one pair");
+		if (certain && (st[k ^ 1] == MK_CONTACT_SEPARATED || st[k ^ 1] == MK_CONTACT_OVERLAPPING))
+			FUZZ_CHECK(st[k] == st[k ^ 1], "batch swapped");
+	}
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	fuzzReader r = { data, size };
@@ -254,11 +326,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	mkCollision3 c;
 	mkResult rc = mkCollide3_Normal(m1, m2, &c);
 	fuzzCheck("normal", rc, &c, &f1, &f2, scale);
+	mkContact single = c.status;
 	uint8_t pick = fuzzTake(&r);
 	mkVec3 start = mkVec3_Make((pick & 3) - 1.5, ((pick >> 2) & 3) - 1.5, ((pick >> 4) & 3) - 1.5);
 	rc = mkCollide3_NormalFrom(m1, m2, start, &c);
 	fuzzCheck("normal-from", rc, &c, &f1, &f2, scale);
 	rc = mkCollide3_Ray(m1, m2, &c);
 	fuzzCheck("ray", rc, &c, &f1, &f2, scale);
+	uint8_t how = fuzzTake(&r);
+	mkBody3 mm[2] = { m1, m2 };
+	fuzzBody ff[2] = { f1, f2 };
+	fuzzCheckBatch(mm, ff, (mkBatchMode)(how & 3), 0.5 * scale * (how >> 2) / 63.0, single, scale);
 	return 0;
 }

@@ -14,9 +14,11 @@
  *    MK_ERR_UNSUPPORTED), the same verdict whatever the message buffer, and
  *    on failure a NUL-terminated, non-empty message within its buffer;
  *  - a failed parse leaves the scene empty (nothing to free);
- *  - a parsed scene has dimension 2 or 3, a valid robot and valid obstacles
- *    (mkBody*_IsValid on the smooth ones), finite headings, and rotations
- *    that are rotations (R^T R = I to 1e-6, det R = 1) once set;
+ *  - a parsed scene has dimension 2 or 3, a valid robot, valid parts and
+ *    valid obstacles (mkBody*_IsValid on the smooth ones), each obstacle in
+ *    an object with a terminated name, bounds with lo < hi, finite start and
+ *    goal poses with their lines, finite headings, and rotations that are
+ *    rotations (R^T R = I to 1e-5, det R = 1) once set;
  *  - mkCSpace_Create at two tolerances either prepares the scene or fails
  *    with a message.
  * A violation aborts, which libFuzzer reports as a crash with its input. */
@@ -66,8 +68,23 @@ static void fuzzCheckScene(const mkScene *s)
 {
 	FUZZ_CHECK(s->dim == 2 || s->dim == 3);
 	fuzzCheckBody(&s->robot, s->dim);
+	FUZZ_CHECK(s->part_count >= 1 && s->parts != NULL);
+	for (int j = 0; j < s->part_count; ++j) fuzzCheckBody(&s->parts[j], s->dim);
 	FUZZ_CHECK(s->obstacle_count >= 0);
-	for (int i = 0; i < s->obstacle_count; ++i) fuzzCheckBody(&s->obstacles[i], s->dim);
+	for (int i = 0; i < s->obstacle_count; ++i) {
+		fuzzCheckBody(&s->obstacles[i], s->dim);
+		FUZZ_CHECK(s->obstacle_object[i] >= 0 && s->obstacle_object[i] < s->object_count);
+		FUZZ_CHECK(memchr(s->objects[s->obstacle_object[i]].name, '\0', sizeof s->objects[0].name) != NULL);
+	}
+	FUZZ_CHECK(s->query_count >= 0 && (s->query_count == 0 || s->queries != NULL));
+	int pose = s->dim == 2 ? 3 : 7;
+	if (s->bounds_line > 0)
+		for (int i = 0; i < s->dim; ++i) FUZZ_CHECK(s->bounds_lo[i] < s->bounds_hi[i]);
+	for (int q = 0; q < s->query_count; ++q)
+		for (int i = 0; i < pose; ++i) {
+			FUZZ_CHECK(isfinite(s->queries[q].start[i]) && isfinite(s->queries[q].goal[i]));
+			FUZZ_CHECK(s->queries[q].start_line > 0 && s->queries[q].goal_line > s->queries[q].start_line);
+		}
 	FUZZ_CHECK(s->orientation_count >= 0);
 	for (int o = 0; o < s->orientation_count; ++o) {
 		if (s->dim == 2) {

@@ -43,8 +43,6 @@ static void help(FILE *fp)
 		"Exit status: 0 when measured, 2 on bad input.\n\n");
 }
 
-static const char *const mkScoreSetNames[] = { "contact", "plus" };
-
 static const char *const mkScoreColumns =
 	"points,nonfinite,vertices,size,hausdorff_abs,hausdorff_rel,hausdorff_bound,gap_in,gap_out,"
 	"off_boundary_max,off_boundary_rel,off_boundary_bound,worst_point,measure_rel,measure_bound,"
@@ -95,7 +93,7 @@ int mkCmd_Score(int argc, char **argv)
 		MK_FLAG_TEXT("--body2", "SPEC", "the second body (required)", &spec2, NULL),
 		MK_FLAG_TEXT("--points", "FILE", "the points as CSV (x,y[,z]), '-' for standard input (required)", &points,
 			NULL),
-		MK_FLAG_CHOICE("--set", "contact|plus", "the set the points are of (default contact)", &setc, mkScoreSetNames),
+		MK_FLAG_SET("--set", "the set the points are of (default contact)", &setc),
 		MK_FLAG_TEXT("--faces", "FILE", "3D: the points' triangles (i,j,k per line), checked to close\n"
 			"a convex surface over them", &faces, NULL),
 		MK_FLAG_SWITCH("--csv", "one header line and one row of figures", &csv),

@@ -170,7 +170,6 @@ static int run_method(const SumArgs *a, const mkSpec *s1, const mkSpec *s2)
 }
 #endif
 
-static const char *const mkSetNames[] = { "contact", "plus" };
 static const char *const mkFormNames[] = { "normal", "gradient", "paper" };
 static const char *const mkParamNames[] = { "surface", "normal" };
 
@@ -186,7 +185,7 @@ int mkCmd_Sum(int argc, char **argv)
 		MK_FLAG_TEXT("--body2", "SPEC", "the second body", &a.spec2, NULL),
 		MK_FLAG_LONG("--n", "N", "2D: N points (default 100); 3D: an N x N parameter grid\n(default 50); N >= 3, at "
 			"most 10000000 (2D) or 3000 (3D)", &a.n, 3, N2_MAX),
-		MK_FLAG_CHOICE("--set", "contact|plus", "contact space (default) or B1 (+) B2", &set, mkSetNames),
+		MK_FLAG_SET("--set", "contact space (default) or B1 (+) B2", &set),
 		MK_FLAG_CHOICE("--form", "normal|gradient|paper", "Theorem 1 (normal), Theorem 2 (gradient, default), or the\n"
 			"published gradient formula as printed (paper; reference only)", &form, mkFormNames),
 		MK_FLAG_CHOICE("--param", "surface|normal", "points uniform in B1's surface angles (default, the paper's)\n"

@@ -8,7 +8,6 @@
 
 #include <mink/referee.h>
 #include <mink/registry.h>
-#include <mink/score.h>
 
 #include "cli.h"
 #include "commands.h"
@@ -37,54 +36,33 @@ static void help(FILE *fp)
 		"external method states none, so --tol is required for it).\n\n");
 }
 
-/* ---- unordered points: judged by the error measure ------------------------- */
-
-/* Points with no index to check them by: pass when every point lies within
- * tol (relative to the sum's size; < 0: the method's stated tolerance) off
- * the true boundary, by the error measure (mink/score.h), which shares
- * nothing with the method. Returns the exit status. */
-static int mkVerify_Unordered(const mkMethod *m, int dim, const mkSpec *s1, const mkSpec *s2, mkSet set,
-	const mkPointSet *pts, double tol, int quiet)
+/* The referee's verdict on standard output; the exit status. */
+static int mkVerify_Report(const mkMethod *m, int dim, mkSet set, int n, mkResult r, const mkVerdict *v, int quiet)
 {
-	mkScore sc;
-	mkResult r = dim == 2 ? mkScore2_Points(s1->body2, s2->body2, set, pts, NULL, &sc)
-		: mkScore3_Points(s1->body3, s2->body3, set, pts, NULL, &sc);
-	if (r != MK_OK) {
-		fprintf(stderr, "mink verify: the error measure could not run: %s\n", mkResult_Name(r));
+	if (r == MK_ERR_UNSUPPORTED && v->message[0]) {
+		fprintf(stderr, "mink verify: %s\n", v->message);
 		return 2;
 	}
-	const char *whose = "--tol";
-	if (tol < 0.0) {
-		tol = mkMethod_Tolerance(m);
-		whose = "stated by the method";
-		if (tol <= 0.0 && (m->flags & MK_METHOD_EXACT)) {
-			tol = sc.allowance / sc.dev.size;
-			whose = "the measure's rounding allowance, for an exact method";
-		}
-		if (tol <= 0.0) {
-			fprintf(stderr, "mink verify: method %s declares its points unordered and states no accuracy: give --tol "
-				"T, the largest distance off the boundary to allow, relative to the sum's size (1e-17 to 1)\n", m->name);
-			return 2;
-		}
+	if (r != MK_OK) {
+		fprintf(stderr, "mink verify: the referee could not run: %s\n", mkResult_Name(r));
+		return 2;
 	}
-	int pass = sc.dev.nonfinite == 0 && sc.dev.off_boundary_rel <= tol;
 	if (!quiet) {
-		printf("method %s, %dD, %s set, %d points, unordered: judged by the error measure\n", m->name, dim,
-			mkSet_Name(set), pts->count);
-		printf("%s: largest distance off the boundary %.3g of the size (tolerance %.3g, %s); Hausdorff %.3g of the "
-			"size; %d non-finite points\n", pass ? "PASS" : "FAIL", sc.dev.off_boundary_rel, tol, whose,
-			sc.dev.hausdorff_rel, sc.dev.nonfinite);
+		if (v->kind == MK_VERDICT_MEASURE)
+			printf("method %s, %dD, %s set, %d points, unordered: judged by the error measure\n", m->name, dim,
+				mkSet_Name(set), n);
+		else
+			printf("method %s, %dD, %s set, n = %d\n", m->name, dim, mkSet_Name(set), n);
+		printf("%s\n", v->message);
 		if (fflush(stdout)) {
 			fprintf(stderr, "mink verify: writing to standard output failed\n");
 			return 2;
 		}
 	}
-	return pass ? 0 : 1;
+	return v->pass ? 0 : 1;
 }
 
 /* ---- the command ----------------------------------------------------------- */
-
-static const char *const mkSetNames[] = { "contact", "plus" };
 
 int mkCmd_Verify(int argc, char **argv)
 {
@@ -99,7 +77,7 @@ int mkCmd_Verify(int argc, char **argv)
 		MK_FLAG_TEXT("--method", "NAME", "the method that made the points (required; 'mink methods')", &method, NULL),
 		MK_FLAG_TEXT("--points", "FILE", "the points as CSV (x,y[,z] first), '-' for standard input (required)",
 			&points, NULL),
-		MK_FLAG_CHOICE("--set", "contact|plus", "the set the points are of (default contact)", &setc, mkSetNames),
+		MK_FLAG_SET("--set", "the set the points are of (default contact)", &setc),
 		MK_FLAG_LONG("--n", "N", "the method's resolution (default: from the point count)", &n, 1, 100000000),
 		MK_FLAG_LONG("--dense", "K", "the referee's dense samples, 8..1048576", &dense, 8, 1 << 20),
 		MK_FLAG_SWITCH("--quiet", "print nothing; only the exit status", &quiet),
@@ -139,10 +117,16 @@ int mkCmd_Verify(int argc, char **argv)
 		return 2;
 	}
 
+	mkRefereeOptions opt = {(int)dense, 0, 0, flags[9].given ? tol : 0.0};
+	mkVerdict v = {0};
+	mkResult r;
 	if (mkMethod_Indexing(m) == MK_INDEX_UNORDERED && !(m->flags & MK_METHOD_SAMPLED)) {
-		rc = mkVerify_Unordered(m, (int)dim, &s1, &s2, set, &pts, flags[9].given ? tol : -1.0, quiet);
+		/* no index to check the points by: the referee judges them by the error measure */
+		r = dim == 2 ? mkReferee2_Check(m, s1.body2, s2.body2, set, pts.count, &pts, &opt, &v)
+			: mkReferee3_Check(m, s1.body3, s2.body3, set, pts.count, &pts, &opt, &v);
+		int count = pts.count;
 		mkPointSet_Free(&pts);
-		return rc;
+		return mkVerify_Report(m, (int)dim, set, count, r, &v, quiet);
 	}
 
 	/* The resolution: given, or (not sampled) read off the point count. */
@@ -181,30 +165,12 @@ int mkCmd_Verify(int argc, char **argv)
 		return 2;
 	}
 
-	mkRefereeOptions opt = {(int)dense, 0, 0};
 	/* An approximate tier is held to the accuracy it states (relative to the
 	 * scale), not to the rounding allowance of the exact methods. */
 	if (m->flags & MK_METHOD_APPROX)
 		opt.tol_factor = mkMethod_Tolerance(m) / (MK_REFEREE_ULPS * DBL_EPSILON / 2);
-	mkVerdict v = {0};
-	mkResult r = dim == 2 ? mkReferee2_Check(m, s1.body2, s2.body2, set, (int)n, &pts, &opt, &v)
+	r = dim == 2 ? mkReferee2_Check(m, s1.body2, s2.body2, set, (int)n, &pts, &opt, &v)
 		: mkReferee3_Check(m, s1.body3, s2.body3, set, (int)n, &pts, &opt, &v);
 	mkPointSet_Free(&pts);
-	if (r == MK_ERR_UNSUPPORTED && v.kind == MK_VERDICT_SUPPORT) {
-		fprintf(stderr, "mink verify: %s\n", v.message);
-		return 2;
-	}
-	if (r != MK_OK) {
-		fprintf(stderr, "mink verify: the referee could not run: %s\n", mkResult_Name(r));
-		return 2;
-	}
-	if (!quiet) {
-		printf("method %s, %ldD, %s set, n = %ld\n", m->name, dim, mkSet_Name(set), n);
-		printf("%s\n", v.message);
-		if (fflush(stdout)) {
-			fprintf(stderr, "mink verify: writing to standard output failed\n");
-			return 2;
-		}
-	}
-	return v.pass ? 0 : 1;
+	return mkVerify_Report(m, (int)dim, set, (int)n, r, &v, quiet);
 }

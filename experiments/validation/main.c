@@ -3,7 +3,6 @@
 #include "validation.h"
 
 static const char *const mkDimNames[] = { "2", "3", "both" };
-static const char *const mkSetNames[] = { "contact", "plus" };
 
 static const mkDriver mkValidationDriver = {
 	"validation",
@@ -24,7 +23,7 @@ int main(int argc, char **argv)
 		MK_FLAG_LONG("--n", "N", "2D: points on B1, 1..10000000 (default 1000)", &o.n2, 1, 10000000),
 		MK_FLAG_LONG("--grid", "G", "3D: G x G grid on B1, 2..3000 (default 50)", &o.grid3, 2, 3000),
 		MK_FLAG_ROTATIONS(&rotations),
-		MK_FLAG_CHOICE("--set", "contact|plus", "B1 (+) (-B2) or B1 (+) B2 (default contact)", &set, mkSetNames),
+		MK_FLAG_SET("--set", "B1 (+) (-B2) or B1 (+) B2 (default contact)", &set),
 		MK_FLAG_IMPL("--impl", "kernel for the normal and gradient forms (default auto;\n"
 			"the paper form always runs the scalar reference)", &impl),
 	};

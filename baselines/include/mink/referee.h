@@ -86,9 +86,11 @@ typedef struct mkRefereeOptions {
 	int dense;         /* referee samples per body: 2D count, 3D grid side; 0: 8192 (2D), 128 (3D) */
 	double tol_factor; /* multiplies the rounding allowance; 0 means 1 */
 	int nofan;         /* 1: test the direction n_k only, not the fan around it */
+	double unordered_tol; /* unordered points: the largest distance off the boundary
+	                         allowed, relative to the sum's size; 0: the method's */
 } mkRefereeOptions;
 
-typedef enum mkVerdictKind { MK_VERDICT_SUPPORT = 1, MK_VERDICT_HULL = 2 } mkVerdictKind;
+typedef enum mkVerdictKind { MK_VERDICT_SUPPORT = 1, MK_VERDICT_HULL = 2, MK_VERDICT_MEASURE = 3 } mkVerdictKind;
 
 typedef struct mkVerdict {
 	int pass;          /* 1 when every check holds */
@@ -99,7 +101,8 @@ typedef struct mkVerdict {
 	double tol;        /* rounding allowance, absolute */
 	double depth;      /* max over points of H(n_k) - <n_k, p_k> */
 	double excess;     /* max over points and fan directions of <d, p_k> - U(d) */
-	double gap;        /* max over points of U(n_k) - H(n_k), the bounds used */
+	double gap;        /* max over points of U(n_k) - H(n_k), the bounds used (measure:
+	                      the error measure's bound on its own distance) */
 	double dense_gap;  /* the same for the dense samples alone: their sampling error */
 	int worst;         /* index of the point with the largest violation, -1 if none */
 	int loose;         /* directions no cone of sample normals held: U(d) there is the
@@ -119,11 +122,17 @@ typedef struct mkVerdict {
  * in 2D, n*n in 3D), the hull check otherwise. Point k's normal is taken
  * from the method's declared indexing (mkMethod_Indexing, mink/registry.h):
  * body 1's normal at u_k (MK_INDEX_PARAMETER) or u_k itself
- * (MK_INDEX_NORMAL). opt may be NULL. Returns MK_OK when the check ran
+ * (MK_INDEX_NORMAL). Boundary points declared MK_INDEX_UNORDERED (any count
+ * >= 1; n unused) carry no normals: the error measure (mink/error.h) judges
+ * them instead (v->kind MK_VERDICT_MEASURE): pass when every point lies
+ * within the tolerance off the true boundary (opt->unordered_tol, else the
+ * method's stated tolerance, else for an exact method the rounding
+ * allowance, each times the sum's size), plus the measure's bound on its
+ * own error (v->gap). opt may be NULL. Returns MK_OK when the check ran
  * (v->pass holds the verdict), MK_ERR_ARGUMENT on a NULL pointer, a wrong
  * dimension or point count, MK_ERR_MEMORY when the referee cannot
- * allocate, MK_ERR_UNSUPPORTED (and v->message saying why) for boundary
- * points declared MK_INDEX_UNORDERED, whose normals it does not know. */
+ * allocate, MK_ERR_UNSUPPORTED (and v->message saying why) for unordered
+ * points of a method that states no tolerance when opt gives none. */
 MK_API mkResult mkReferee2_Check(const mkMethod *m, mkBody2 b1, mkBody2 b2, mkSet set, int n,
 	const mkPointSet *out, const mkRefereeOptions *opt, mkVerdict *v);
 MK_API mkResult mkReferee3_Check(const mkMethod *m, mkBody3 b1, mkBody3 b2, mkSet set, int n,

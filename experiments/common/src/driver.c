@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+const char *const mkFlag_SetNames[2] = { "contact", "plus" };
+
 #define MK_FLAGS_MAX 64
 
 /* ---- options ------------------------------------------------------------- */

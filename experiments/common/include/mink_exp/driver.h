@@ -79,6 +79,11 @@ typedef struct mkFlag {
 #define MK_FLAG_U64(name, arg, help, ptr) { name, arg, help, MK_FLAG_U64, ptr, 0, 0, NULL, 0, NULL, 0 }
 #define MK_FLAG_CHOICE(name, arg, help, ptr, names) \
 	{ name, arg, help, MK_FLAG_CHOICE, ptr, 0, 0, names, MK_COUNT(names), NULL, 0 }
+/* A "--set contact|plus" choice: *ptr (an int) gets the mkSet value
+ * (MK_SET_CONTACT 0, MK_SET_PLUS 1). */
+extern const char *const mkFlag_SetNames[2];
+#define MK_FLAG_SET(name, help, ptr) \
+	{ name, "contact|plus", help, MK_FLAG_CHOICE, ptr, 0, 0, mkFlag_SetNames, MK_COUNT(mkFlag_SetNames), NULL, 0 }
 #define MK_FLAG_PATH(name, arg, help, ptr) { name, arg, help, MK_FLAG_PATH, ptr, 0, 0, NULL, 0, NULL, 0 }
 #define MK_FLAG_IMPL(name, help, ptr) \
 	{ name, "auto|scalar|avx2|avx512", help, MK_FLAG_IMPL, ptr, 0, 0, NULL, 0, NULL, 0 }
