@@ -297,11 +297,100 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 	return 1;
 }
 
+/* The Newton lanes of separated pairs of ellipsoids in the distance mode
+ * (batch_newton.h): pairs wait in the queue until MK_BATCH_VLANES are there
+ * (or the searches are over), then run together. */
+typedef void (*mkBatchEllFn)(const mkBatchEllIn *in, mkBatchEllOut *out);
+
+typedef struct mkBatchEllQueue {
+	mkBatchEllIn in;
+	const mkBody3 *b1[MK_BATCH_VLANES], *b2[MK_BATCH_VLANES];
+	int pair[MK_BATCH_VLANES], count;
+	mkBatchEllFn fn;
+	mkBatchStats3 *stats;
+	int *failed;
+} mkBatchEllQueue;
+
+/* Runs the queued pairs and answers each: a lane that converged is
+ * answered when its certificate closes, lower = f(n) at its normal n (every
+ * unit n has f(n) <= sd) and upper = |p2 - p1| for the support points
+ * p1 (B1 at n), p2 (B2 at -n), points of the bodies: upper - lower at most
+ * MK_BATCH_DISTANCE_GAP of the scale; the distance is f(n), as the one-pair
+ * query's. Every other lane leaves for the one-pair query. */
+static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+{
+	int nl = q->count;
+	if (nl == 0)
+		return;
+	mkBatchEllIn *in = &q->in;
+	for (int l = nl; l < MK_BATCH_VLANES; ++l) { /* spare lanes: copies of lane 0 */
+		for (int i = 0; i < 6; ++i) {
+			in->Q1[i][l] = in->Q1[i][0];
+			in->Q2[i][l] = in->Q2[i][0];
+		}
+		for (int i = 0; i < 3; ++i) {
+			in->d[i][l] = in->d[i][0];
+			in->n[i][l] = in->n[i][0];
+		}
+		in->scale[l] = in->scale[0];
+	}
+	mkBatchEllOut r;
+	q->fn(in, &r);
+	for (int l = 0; l < nl; ++l) {
+		const mkBody3 *b1 = q->b1[l], *b2 = q->b2[l];
+		double f = r.f[l], scale = in->scale[l];
+		mkVec3 n = mkVec3_Make(r.n[0][l], r.n[1][l], r.n[2][l]);
+		mkVec3 p1 = mkVec3_Add(b1->t, mkVec3_Make(r.s1[0][l], r.s1[1][l], r.s1[2][l]));
+		mkVec3 p2 = mkVec3_Add(b2->t, mkVec3_Make(r.s2[0][l], r.s2[1][l], r.s2[2][l]));
+		double upper = mkVec3_LengthInline(mkVec3_Sub(p2, p1));
+		mkBatchPath path = MK_PATH_SEPARATING;
+		if (r.done[l] == 1.0 && f > MK_BATCH_MARGIN * scale && upper - f <= MK_BATCH_DISTANCE_GAP * scale)
+			mkBatch_Put(out, q->pair[l], mkContact_FromDistance(f, scale), f, f, upper, n, p1, p2, 0, path);
+		else
+			path = mkBatch_OnePair(b1, b2, mode, delta, out, q->pair[l]);
+		mkBatchStats_Count(q->stats, path);
+		*q->failed += path == MK_PATH_FAILED;
+		if (q->stats) {
+			q->stats->newton += path == MK_PATH_SEPARATING;
+			q->stats->newton_left += path != MK_PATH_SEPARATING;
+		}
+	}
+	q->count = 0;
+}
+
+/* Queues the separated pair of ellipsoids of g, started from the search's
+ * best direction; runs the queue when it is full. */
+static void mkBatchEll_Push(mkBatchEllQueue *q, const mkGilbert *g, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out)
+{
+	int l = q->count++;
+	mkBatchEllIn *in = &q->in;
+	static const int ix[6][2] = { { 0, 0 }, { 0, 1 }, { 0, 2 }, { 1, 1 }, { 1, 2 }, { 2, 2 } };
+	for (int i = 0; i < 6; ++i) {
+		in->Q1[i][l] = g->c.k1.Q[ix[i][0]][ix[i][1]];
+		in->Q2[i][l] = g->c.k2.Q[ix[i][0]][ix[i][1]];
+	}
+	const double d[3] = { g->c.d.x, g->c.d.y, g->c.d.z }, n[3] = { g->r.n.x, g->r.n.y, g->r.n.z };
+	for (int i = 0; i < 3; ++i) {
+		in->d[i][l] = d[i];
+		in->n[i][l] = n[i];
+	}
+	in->scale[l] = g->c.scale;
+	q->b1[l] = g->c.b1;
+	q->b2[l] = g->c.b2;
+	q->pair[l] = g->pair;
+	if (q->count == MK_BATCH_VLANES)
+		mkBatchEll_Flush(q, mode, delta, out);
+}
+
 /* The answer of a search that ended in p: the certificate's, or the
- * one-pair query's (DISTANCE on a separated pair: the same call as the
- * reference, so the same distance; an overlap the search did not certify may
- * still have a point on the centre segment). Returns the path taken. */
-static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+ * one-pair query's (DISTANCE on a separated pair of superquadrics: the same
+ * call as the reference, so the same distance; a separated pair of
+ * ellipsoids goes to the Newton lanes, q; an overlap the search did not
+ * certify may still have a point on the centre segment). Returns the path
+ * taken, or -1 for a pair queued in q (counted when q runs). */
+static int mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double delta, const mkBatchOut3 *out,
+	mkBatchEllQueue *q)
 {
 	const mkBody3 *b1 = g->c.b1, *b2 = g->c.b2;
 	mkBatchCert *r = &g->r;
@@ -310,6 +399,10 @@ static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode,
 	if (p == MK_PATH_SEPARATING && mode != MK_BATCH_DISTANCE) {
 		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r->f, r->upper, r->n, r->p1, r->p2, r->f > delta + margin, p);
 		return p;
+	}
+	if (p == MK_PATH_SEPARATING && g->c.k1.ellipsoid && g->c.k2.ellipsoid) {
+		mkBatchEll_Push(q, g, mode, delta, out);
+		return -1;
 	}
 	if (p == MK_PATH_SEPARATING) /* started from r->n it was no faster (measured) */
 		return mkBatch_OnePair(b1, b2, mode, delta, out, k);
@@ -376,8 +469,13 @@ static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
  * lane taking the next pair as its search ends; then each answer
  * (mkBatch_Finish). */
 static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
-	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf)
+	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf, mkBatchEllFn ef)
 {
+	mkBatchEllQueue q;
+	q.count = 0;
+	q.fn = ef;
+	q.stats = stats;
+	q.failed = failed;
 	mkGilbert g[MK_BATCH_LANES];
 	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0;
 	for (;;) {
@@ -393,8 +491,10 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 					*failed += p == MK_PATH_FAILED;
 				}
 			}
-		if (nlive == 0)
+		if (nlive == 0) {
+			mkBatchEll_Flush(&q, mode, delta, out);
 			return;
+		}
 		const mkSupBody *bs[MK_LANES];
 		mkVec3 ys[MK_LANES];
 		mkSupAt *as[MK_LANES], s[MK_BATCH_LANES][2];
@@ -419,9 +519,11 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 			int p = live[l] ? mkGilbert_Step(&g[l], &s[l][0], &s[l][1]) : -1;
 			if (p < 0)
 				continue;
-			mkBatchPath q = mkBatch_Finish(&g[l], (mkBatchPath)p, mode, delta, out);
-			mkBatchStats_Count(stats, q);
-			*failed += q == MK_PATH_FAILED;
+			int a = mkBatch_Finish(&g[l], (mkBatchPath)p, mode, delta, out, &q);
+			if (a >= 0) {
+				mkBatchStats_Count(stats, (mkBatchPath)a);
+				*failed += a == MK_PATH_FAILED;
+			}
 			live[l] = 0;
 			--nlive;
 		}
@@ -445,6 +547,21 @@ static mkBatchLanesFn mkBatch_LanesFn(mkImpl impl)
 	return NULL;
 }
 
+/* The ellipsoids' Newton lanes for impl (as mkBatch_LanesFn; the scalar
+ * build where no vector build runs). */
+static mkBatchEllFn mkBatch_EllFn(mkImpl impl)
+{
+#if defined(MINK_HAVE_X86_KERNELS)
+	mkBatchLanesFn vf = mkBatch_LanesFn(impl);
+	if (vf == mkBatch_SupportLanesAvx512)
+		return mkBatch_EllipsoidLanesAvx512;
+	if (vf == mkBatch_SupportLanesAvx2)
+		return mkBatch_EllipsoidLanesAvx2;
+#endif
+	(void)impl;
+	return mkBatch_EllipsoidLanesScalar;
+}
+
 /* Both entries: the certificates first, with the lanes of impl (reference
  * = impl >= 0), or the one-pair query alone (reference -1). */
 static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
@@ -456,7 +573,8 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 		memset(stats, 0, sizeof *stats);
 	int failed = 0;
 	if (reference >= 0) {
-		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed, mkBatch_LanesFn((mkImpl)reference));
+		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed, mkBatch_LanesFn((mkImpl)reference),
+			mkBatch_EllFn((mkImpl)reference));
 		return failed ? MK_ERR_CONVERGENCE : MK_OK;
 	}
 	for (int k = 0; k < pairs->count; ++k) {

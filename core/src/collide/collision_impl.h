@@ -27,6 +27,27 @@ typedef struct mkBatchLanesIn {
 } mkBatchLanesIn;
 void mkBatch_SupportLanesAvx2(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
 void mkBatch_SupportLanesAvx512(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
+/* The batch's Newton lanes for separated pairs of ellipsoids
+ * (batch_newton.h): per lane the bodies' Q = P P^T (Q00, Q01, Q02, Q11,
+ * Q12, Q22), the centre line d = c2 - c1, the unit start n and the pair's
+ * scale; out: the final normal, the support points s1 (B1 at n) and s2 (B2
+ * at -n) about the centres, f at n, the residual |g|, the steps taken and
+ * done (1 converged, 0 to leave for the scalar path). Lanes beyond the
+ * pairs must hold a valid pair (a copy). */
+#define MK_BATCH_NEWTON_STEPS 16
+#define MK_BATCH_NEWTON_CUTS 4
+typedef struct mkBatchEllIn {
+	double Q1[6][MK_BATCH_VLANES], Q2[6][MK_BATCH_VLANES], d[3][MK_BATCH_VLANES], n[3][MK_BATCH_VLANES],
+		scale[MK_BATCH_VLANES];
+} mkBatchEllIn;
+typedef struct mkBatchEllOut {
+	double n[3][MK_BATCH_VLANES], s1[3][MK_BATCH_VLANES], s2[3][MK_BATCH_VLANES], f[MK_BATCH_VLANES],
+		res[MK_BATCH_VLANES], steps[MK_BATCH_VLANES], done[MK_BATCH_VLANES];
+} mkBatchEllOut;
+/* The scalar reference (one lane at a time) and the vector builds. */
+void mkBatch_EllipsoidLanesScalar(const mkBatchEllIn *in, mkBatchEllOut *out);
+void mkBatch_EllipsoidLanesAvx2(const mkBatchEllIn *in, mkBatchEllOut *out);
+void mkBatch_EllipsoidLanesAvx512(const mkBatchEllIn *in, mkBatchEllOut *out);
 /* mkCollide3_Batch with the lanes of impl (MK_IMPL_SCALAR: the scalar
  * support map; MK_IMPL_AVX2 / MK_IMPL_AVX512 where available, else
  * MK_ERR_UNSUPPORTED; MK_IMPL_AUTO: the widest available). */
