@@ -24,14 +24,17 @@
  *                      is that of a distance accurate to 1e-12 of the scale,
  *                      not certified). The status is filled as in STATUS.
  *  MK_BATCH_DISTANCE   the signed distance of separated (and touching) pairs,
- *                      as mkCollide3_Normal gives it: once the search found
- *                      the pair separated, for two ellipsoids Newton's
- *                      iteration in vector lanes from the search's best
- *                      direction n, answered when converged with the
- *                      bracket lower = f(n), upper = |p2 - p1| (the
- *                      support points at n) at most MK_BATCH_DISTANCE_GAP *
- *                      scale wide (distance f(n), path MK_PATH_SEPARATING),
- *                      else (and for superquadrics) by the same call;
+ *                      as mkCollide3_Normal gives it: for two ellipsoids
+ *                      Newton's iteration in vector lanes, from the centre
+ *                      line (before any search) and again from the search's
+ *                      best direction where that did not answer, answered
+ *                      when converged at an n with f(n) > MK_BATCH_MARGIN *
+ *                      scale and the bracket lower = f(n), upper =
+ *                      |p2 - p1| (the support points at n) at most
+ *                      MK_BATCH_DISTANCE_GAP * scale wide (distance f(n),
+ *                      path MK_PATH_SEPARATING); else (and for
+ *                      superquadrics), once the search found the pair
+ *                      separated, by the same call;
  *                      overlapping pairs get their status only (distance
  *                      NaN), certified by an overlap point where one is
  *                      found, else by the one-pair query.

@@ -279,11 +279,60 @@ static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, mkBatch
 	return MK_PATH_ONE_PAIR;
 }
 
+/* The Newton lanes of pairs of ellipsoids in the distance mode
+ * (batch_newton.h): pairs wait in the queue until MK_BATCH_VLANES are there
+ * (or the searches are over), then run together. A pair first enters from
+ * the centre line, before any search (second 0); a lane that does not
+ * answer it sends it on to the search (q->retry: the lock-step searches
+ * take these first, so that at most one queue's worth waits), and when
+ * that finds it separated it enters again from the search's best
+ * direction (second 1); leaving then, it goes to the one-pair query. */
+typedef void (*mkBatchEllFn)(const mkBatchEllIn *in, mkBatchEllOut *out);
+
+typedef struct mkBatchEllQueue {
+	mkBatchEllIn in;
+	const mkBody3 *b1[MK_BATCH_VLANES], *b2[MK_BATCH_VLANES];
+	int pair[MK_BATCH_VLANES], second[MK_BATCH_VLANES], count;
+	int retry[MK_BATCH_VLANES], nretry; /* pairs sent on to the search */
+	mkBatchEllFn fn;
+	mkBatchStats3 *stats;
+	int *failed;
+} mkBatchEllQueue;
+
+static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta, const mkBatchOut3 *out);
+
+/* Queues pair k of ellipsoids (its context c) from the unit start n
+ * (second: from a search's direction); runs the queue when it is full. */
+static void mkBatchEll_Push(mkBatchEllQueue *q, const mkPairCtx *c, int k, mkVec3 n0, int second, mkBatchMode mode,
+	double delta, const mkBatchOut3 *out)
+{
+	int l = q->count++;
+	mkBatchEllIn *in = &q->in;
+	static const int ix[6][2] = { { 0, 0 }, { 0, 1 }, { 0, 2 }, { 1, 1 }, { 1, 2 }, { 2, 2 } };
+	for (int i = 0; i < 6; ++i) {
+		in->Q1[i][l] = c->k1.Q[ix[i][0]][ix[i][1]];
+		in->Q2[i][l] = c->k2.Q[ix[i][0]][ix[i][1]];
+	}
+	const double d[3] = { c->d.x, c->d.y, c->d.z }, n[3] = { n0.x, n0.y, n0.z };
+	for (int i = 0; i < 3; ++i) {
+		in->d[i][l] = d[i];
+		in->n[i][l] = n[i];
+	}
+	in->scale[l] = c->scale;
+	q->b1[l] = c->b1;
+	q->b2[l] = c->b2;
+	q->pair[l] = k;
+	q->second[l] = second;
+	if (q->count == MK_BATCH_VLANES)
+		mkBatchEll_Flush(q, mode, delta, out);
+}
+
 /* Sets up pair k's search (its bodies b1, b2) in g. Returns 1, or 0 when
  * the pair goes to the one-pair query at once (FULL, or a scale that is not
- * finite), which has then answered it (*path). */
+ * finite), which has then answered it (*path), or -1 when it went to the
+ * Newton lanes q instead (DISTANCE, two ellipsoids, q not NULL). */
 static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
-	const mkBatchOut3 *out, int k, mkBatchPath *path)
+	const mkBatchOut3 *out, int k, mkBatchPath *path, mkBatchEllQueue *q)
 {
 	mkPairCtx_Init(&g->c, b1, b2);
 	g->pair = k;
@@ -291,96 +340,15 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
 		return 0;
 	}
+	double dl = mkVec3_LengthInline(g->c.d);
+	if (q && mode == MK_BATCH_DISTANCE && g->c.k1.ellipsoid && g->c.k2.ellipsoid && dl > 0.0) {
+		mkBatchEll_Push(q, &g->c, k, mkVec3_Scale(g->c.d, 1.0 / dl), 0, mode, delta, out);
+		return -1;
+	}
 	double margin = MK_BATCH_MARGIN * g->c.scale;
 	int clearance = mode == MK_BATCH_CLEARANCE;
 	mkGilbert_Begin(g, clearance ? delta + margin : margin, clearance ? delta - margin : -INFINITY);
 	return 1;
-}
-
-/* The Newton lanes of separated pairs of ellipsoids in the distance mode
- * (batch_newton.h): pairs wait in the queue until MK_BATCH_VLANES are there
- * (or the searches are over), then run together. */
-typedef void (*mkBatchEllFn)(const mkBatchEllIn *in, mkBatchEllOut *out);
-
-typedef struct mkBatchEllQueue {
-	mkBatchEllIn in;
-	const mkBody3 *b1[MK_BATCH_VLANES], *b2[MK_BATCH_VLANES];
-	int pair[MK_BATCH_VLANES], count;
-	mkBatchEllFn fn;
-	mkBatchStats3 *stats;
-	int *failed;
-} mkBatchEllQueue;
-
-/* Runs the queued pairs and answers each: a lane that converged is
- * answered when its certificate closes, lower = f(n) at its normal n (every
- * unit n has f(n) <= sd) and upper = |p2 - p1| for the support points
- * p1 (B1 at n), p2 (B2 at -n), points of the bodies: upper - lower at most
- * MK_BATCH_DISTANCE_GAP of the scale; the distance is f(n), as the one-pair
- * query's. Every other lane leaves for the one-pair query. */
-static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta, const mkBatchOut3 *out)
-{
-	int nl = q->count;
-	if (nl == 0)
-		return;
-	mkBatchEllIn *in = &q->in;
-	for (int l = nl; l < MK_BATCH_VLANES; ++l) { /* spare lanes: copies of lane 0 */
-		for (int i = 0; i < 6; ++i) {
-			in->Q1[i][l] = in->Q1[i][0];
-			in->Q2[i][l] = in->Q2[i][0];
-		}
-		for (int i = 0; i < 3; ++i) {
-			in->d[i][l] = in->d[i][0];
-			in->n[i][l] = in->n[i][0];
-		}
-		in->scale[l] = in->scale[0];
-	}
-	mkBatchEllOut r;
-	q->fn(in, &r);
-	for (int l = 0; l < nl; ++l) {
-		const mkBody3 *b1 = q->b1[l], *b2 = q->b2[l];
-		double f = r.f[l], scale = in->scale[l];
-		mkVec3 n = mkVec3_Make(r.n[0][l], r.n[1][l], r.n[2][l]);
-		mkVec3 p1 = mkVec3_Add(b1->t, mkVec3_Make(r.s1[0][l], r.s1[1][l], r.s1[2][l]));
-		mkVec3 p2 = mkVec3_Add(b2->t, mkVec3_Make(r.s2[0][l], r.s2[1][l], r.s2[2][l]));
-		double upper = mkVec3_LengthInline(mkVec3_Sub(p2, p1));
-		mkBatchPath path = MK_PATH_SEPARATING;
-		if (r.done[l] == 1.0 && f > MK_BATCH_MARGIN * scale && upper - f <= MK_BATCH_DISTANCE_GAP * scale)
-			mkBatch_Put(out, q->pair[l], mkContact_FromDistance(f, scale), f, f, upper, n, p1, p2, 0, path);
-		else
-			path = mkBatch_OnePair(b1, b2, mode, delta, out, q->pair[l]);
-		mkBatchStats_Count(q->stats, path);
-		*q->failed += path == MK_PATH_FAILED;
-		if (q->stats) {
-			q->stats->newton += path == MK_PATH_SEPARATING;
-			q->stats->newton_left += path != MK_PATH_SEPARATING;
-		}
-	}
-	q->count = 0;
-}
-
-/* Queues the separated pair of ellipsoids of g, started from the search's
- * best direction; runs the queue when it is full. */
-static void mkBatchEll_Push(mkBatchEllQueue *q, const mkGilbert *g, mkBatchMode mode, double delta,
-	const mkBatchOut3 *out)
-{
-	int l = q->count++;
-	mkBatchEllIn *in = &q->in;
-	static const int ix[6][2] = { { 0, 0 }, { 0, 1 }, { 0, 2 }, { 1, 1 }, { 1, 2 }, { 2, 2 } };
-	for (int i = 0; i < 6; ++i) {
-		in->Q1[i][l] = g->c.k1.Q[ix[i][0]][ix[i][1]];
-		in->Q2[i][l] = g->c.k2.Q[ix[i][0]][ix[i][1]];
-	}
-	const double d[3] = { g->c.d.x, g->c.d.y, g->c.d.z }, n[3] = { g->r.n.x, g->r.n.y, g->r.n.z };
-	for (int i = 0; i < 3; ++i) {
-		in->d[i][l] = d[i];
-		in->n[i][l] = n[i];
-	}
-	in->scale[l] = g->c.scale;
-	q->b1[l] = g->c.b1;
-	q->b2[l] = g->c.b2;
-	q->pair[l] = g->pair;
-	if (q->count == MK_BATCH_VLANES)
-		mkBatchEll_Flush(q, mode, delta, out);
 }
 
 /* The answer of a search that ended in p: the certificate's, or the
@@ -401,7 +369,7 @@ static int mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double 
 		return p;
 	}
 	if (p == MK_PATH_SEPARATING && g->c.k1.ellipsoid && g->c.k2.ellipsoid) {
-		mkBatchEll_Push(q, g, mode, delta, out);
+		mkBatchEll_Push(q, &g->c, k, r->n, 1, mode, delta, out);
 		return -1;
 	}
 	if (p == MK_PATH_SEPARATING) /* started from r->n it was no faster (measured) */
@@ -414,6 +382,69 @@ static int mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double 
 		return p;
 	}
 	return mkBatch_OnePair(b1, b2, mode, delta, out, k);
+}
+
+/* Runs the queued pairs and answers each: a lane that converged is
+ * answered when f(n) > MK_BATCH_MARGIN * scale (separated) and its
+ * certificate closes, lower = f(n) at its normal n (every unit n has
+ * f(n) <= sd) and upper = |p2 - p1| for the support points p1 (B1 at n),
+ * p2 (B2 at -n), points of the bodies: upper - lower at most
+ * MK_BATCH_DISTANCE_GAP of the scale; the distance is f(n), as the one-pair
+ * query's. Every other lane leaves: a first entry for the search
+ * (q->retry), a second for the one-pair query. */
+static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+{
+	int nl = q->count;
+	if (nl == 0)
+		return;
+	mkBatchEllIn *in = &q->in;
+	for (int l = nl; l < MK_BATCH_VLANES; ++l) { /* spare lanes: copies of lane 0 */
+		for (int i = 0; i < 6; ++i) {
+			in->Q1[i][l] = in->Q1[i][0];
+			in->Q2[i][l] = in->Q2[i][0];
+		}
+		for (int i = 0; i < 3; ++i) {
+			in->d[i][l] = in->d[i][0];
+			in->n[i][l] = in->n[i][0];
+		}
+		in->scale[l] = in->scale[0];
+	}
+	mkBatchEllOut r;
+	q->fn(in, &r);
+	const mkBody3 *qb1[MK_BATCH_VLANES], *qb2[MK_BATCH_VLANES];
+	int pair[MK_BATCH_VLANES], second[MK_BATCH_VLANES];
+	double sc[MK_BATCH_VLANES];
+	for (int l = 0; l < nl; ++l) {
+		qb1[l] = q->b1[l];
+		qb2[l] = q->b2[l];
+		pair[l] = q->pair[l];
+		second[l] = q->second[l];
+		sc[l] = in->scale[l];
+	}
+	q->count = 0;
+	for (int l = 0; l < nl; ++l) {
+		const mkBody3 *b1 = qb1[l], *b2 = qb2[l];
+		double f = r.f[l], scale = sc[l];
+		mkVec3 n = mkVec3_Make(r.n[0][l], r.n[1][l], r.n[2][l]);
+		mkVec3 p1 = mkVec3_Add(b1->t, mkVec3_Make(r.s1[0][l], r.s1[1][l], r.s1[2][l]));
+		mkVec3 p2 = mkVec3_Add(b2->t, mkVec3_Make(r.s2[0][l], r.s2[1][l], r.s2[2][l]));
+		double upper = mkVec3_LengthInline(mkVec3_Sub(p2, p1));
+		int path = MK_PATH_SEPARATING;
+		if (r.done[l] == 1.0 && f > MK_BATCH_MARGIN * scale && upper - f <= MK_BATCH_DISTANCE_GAP * scale) {
+			mkBatch_Put(out, pair[l], mkContact_FromDistance(f, scale), f, f, upper, n, p1, p2, 0, MK_PATH_SEPARATING);
+			if (q->stats)
+				q->stats->newton += 1;
+		} else if (second[l]) {
+			path = mkBatch_OnePair(b1, b2, mode, delta, out, pair[l]);
+			if (q->stats)
+				q->stats->newton_left += 1;
+		} else {
+			q->retry[q->nretry++] = pair[l];
+			continue;
+		}
+		mkBatchStats_Count(q->stats, (mkBatchPath)path);
+		*q->failed += path == MK_PATH_FAILED;
+	}
 }
 
 /* NULL pointers, negative counts, unknown modes, bad deltas. */
@@ -472,7 +503,7 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf, mkBatchEllFn ef)
 {
 	mkBatchEllQueue q;
-	q.count = 0;
+	q.count = q.nretry = 0;
 	q.fn = ef;
 	q.stats = stats;
 	q.failed = failed;
@@ -480,20 +511,24 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0;
 	for (;;) {
 		for (int l = 0; l < MK_BATCH_LANES; ++l)
-			while (!live[l] && next < pairs->count) {
-				int k = next++;
+			while (!live[l] && (q.nretry > 0 || next < pairs->count)) {
+				int retry = q.nretry > 0, k = retry ? q.retry[--q.nretry] : next++;
 				mkBatchPath p;
-				if (mkBatch_Begin(&g[l], mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k, &p)) {
+				int b = mkBatch_Begin(&g[l], mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k,
+					&p, retry ? NULL : &q);
+				if (b > 0) {
 					live[l] = 1;
 					++nlive;
-				} else {
+				} else if (b == 0) {
 					mkBatchStats_Count(stats, p);
 					*failed += p == MK_PATH_FAILED;
 				}
 			}
-		if (nlive == 0) {
+		if (nlive == 0) { /* (every retry was taken) */
+			if (q.count == 0)
+				return;
 			mkBatchEll_Flush(&q, mode, delta, out);
-			return;
+			continue;
 		}
 		const mkSupBody *bs[MK_LANES];
 		mkVec3 ys[MK_LANES];

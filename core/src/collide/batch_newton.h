@@ -6,13 +6,18 @@
  * For an ellipsoid Q = P P^T: h(n) = sqrt(n^T Q n), s(n) = Q n / h, its
  * Jacobian (Q - s s^T) / h. At a unit n: s1 = s_1(n), s2 = s_2(-n),
  * f = <n, d - (s1 - s2)>, g = the part of d - (s1 - s2) orthogonal to n
- * (the tangential gradient of f). A step solves
+ * (the tangential gradient of f; |d - (s1 - s2)|^2 = f^2 + |g|^2). A step
+ * solves
  *   (J1 + J2 + f I + (h1 + h2 - f) n n^T) z = g
  * (the tangent plane kept invariant, n's eigenvalue h1 + h2 > 0; Sylvester's
  * criterion for positive definiteness), projects z onto the tangent plane
  * and moves to normalize(n + z). A lane stops converged when |g| <=
- * MK_COLLIDE3_RESIDUAL_TOL * scale or the step cannot move n by more than
- * 1e-14 or gain more than 1e-17 of the scale. The step is cut to at most
+ * MK_COLLIDE3_RESIDUAL_TOL * scale, when f > 0 and |g|^2 <= 2 f
+ * MK_BATCH_NEWTON_SETTLE * scale (then the witnesses' distance
+ * sqrt(f^2 + |g|^2) exceeds f by at most MK_BATCH_NEWTON_SETTLE * scale: the
+ * distance is settled, the step quadratic convergence would take after it
+ * is saved), or when the step cannot move n by more than 1e-14 or gain
+ * more than 1e-17 of the scale. The step is cut to at most
  * MK_TR_MAX long; a step that does not gain 1e-4 of its slope (Armijo, as
  * the one-pair solver's plain Newton) is tried again at half its length, and
  * after a cut the next step starts from the fraction accepted, doubling back
@@ -140,13 +145,14 @@ static void mkBN_Run(const mkBatchEllIn *in, mkBatchEllOut *out)
 		mkBN3 n = { mkB_Load(in->n[0] + o), mkB_Load(in->n[1] + o), mkB_Load(in->n[2] + o) };
 		mkBV scale = mkB_Load(in->scale + o), one = mkB_Splat(1.0);
 		mkBV tol = mkB_Splat(MK_COLLIDE3_RESIDUAL_TOL) * scale, tiny = mkB_Splat(1e-17) * scale;
+		mkBV settle = mkB_Splat(2.0 * MK_BATCH_NEWTON_SETTLE) * scale;
 		mkBNAt e, t;
 		mkBN_Eval(Q1, Q2, d, n, &e);
 		mkBM active = mkB_Le(scale, scale), done = ~active; /* every lane active, none done */
 		mkBV res = mkB_Sqrt(mkBN_Dot(e.g, e.g)), steps = mkB_Splat(0.0), damp = one;
 		for (int it = 0; it < MK_BATCH_NEWTON_STEPS; ++it) {
 			res = mkB_Sel(active, mkB_Sqrt(mkBN_Dot(e.g, e.g)), res);
-			mkBM conv = active & mkB_Le(res, tol);
+			mkBM conv = active & (mkB_Le(res, tol) | (mkB_Lt(mkB_Splat(0.0), e.f) & mkB_Le(res * res, settle * e.f)));
 			done |= conv;
 			active &= ~conv;
 			if (!mkB_Any(active))
@@ -185,7 +191,7 @@ static void mkBN_Run(const mkBatchEllIn *in, mkBatchEllOut *out)
 		}
 		/* the last step's point, where the loop ran out */
 		res = mkB_Sel(active, mkB_Sqrt(mkBN_Dot(e.g, e.g)), res);
-		done |= active & mkB_Le(res, tol);
+		done |= active & (mkB_Le(res, tol) | (mkB_Lt(mkB_Splat(0.0), e.f) & mkB_Le(res * res, settle * e.f)));
 		mkB_Store(out->n[0] + o, n.x);
 		mkB_Store(out->n[1] + o, n.y);
 		mkB_Store(out->n[2] + o, n.z);

@@ -36,6 +36,7 @@ void mkBatch_SupportLanesAvx512(const mkBatchLanesIn *in, double s[3][MK_BATCH_V
  * pairs must hold a valid pair (a copy). */
 #define MK_BATCH_NEWTON_STEPS 16
 #define MK_BATCH_NEWTON_CUTS 4
+#define MK_BATCH_NEWTON_SETTLE 1e-15
 typedef struct mkBatchEllIn {
 	double Q1[6][MK_BATCH_VLANES], Q2[6][MK_BATCH_VLANES], d[3][MK_BATCH_VLANES], n[3][MK_BATCH_VLANES],
 		scale[MK_BATCH_VLANES];
