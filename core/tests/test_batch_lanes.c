@@ -69,13 +69,13 @@ static void mkCheckSupport(mkLanesFn fn, unsigned long long *seed, double elo, d
 
 typedef void (*mkEllFn)(const mkBatchEllIn *in, mkBatchEllOut *out);
 
-/* Eight separated pairs of ellipsoids through fn and through the scalar
+/* MK_BATCH_NLANES separated pairs of ellipsoids through fn and through the scalar
  * build; returns the number of lanes that converged. */
 static int mkCheckEllipsoids(mkEllFn fn, unsigned long long *seed, int rep)
 {
-	mkBody3 b1[MK_BATCH_VLANES], b2[MK_BATCH_VLANES];
+	mkBody3 b1[MK_BATCH_NLANES], b2[MK_BATCH_NLANES];
 	mkBatchEllIn in;
-	for (int l = 0; l < MK_BATCH_VLANES; ++l) {
+	for (int l = 0; l < MK_BATCH_NLANES; ++l) {
 		mk_test_pair3(seed, 1.0, 1.0, &b1[l], &b2[l]);
 		mkCollision3 c;
 		ENSURE(mkCollide3_Normal(b1[l], b2[l], &c) == MK_OK);
@@ -117,7 +117,7 @@ static int mkCheckEllipsoids(mkEllFn fn, unsigned long long *seed, int rep)
 	fn(&in, &got);
 	ENSURE(memcmp(&want, &got, sizeof want) == 0);
 	int conv = 0;
-	for (int l = 0; l < MK_BATCH_VLANES; ++l) {
+	for (int l = 0; l < MK_BATCH_NLANES; ++l) {
 		if (want.done[l] != 1.0)
 			continue;
 		++conv;
@@ -183,8 +183,8 @@ int main(void)
 		for (int rep = 0; rep < 40; ++rep)
 			conv += mkCheckEllipsoids(mkBatch_EllipsoidLanesScalar, &seed, rep);
 		printf("test_batch_lanes: ellipsoids' Newton lanes, scalar: %d of %d lanes converged\n", conv,
-			40 * MK_BATCH_VLANES);
-		ENSURE(conv >= 38 * MK_BATCH_VLANES);
+			40 * MK_BATCH_NLANES);
+		ENSURE(conv >= 38 * MK_BATCH_NLANES);
 	}
 	for (int v = 0; v < 2; ++v) {
 		if (!mkImpl_Available(impls[v])) {

@@ -280,7 +280,7 @@ static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, mkBatch
 }
 
 /* The Newton lanes of pairs of ellipsoids in the distance mode
- * (batch_newton.h): pairs wait in the queue until MK_BATCH_VLANES are there
+ * (batch_newton.h): pairs wait in the queue until MK_BATCH_NLANES are there
  * (or the searches are over), then run together. A pair first enters from
  * the centre line, before any search (second 0); a lane that does not
  * answer it sends it on to the search (q->retry: the lock-step searches
@@ -291,9 +291,9 @@ typedef void (*mkBatchEllFn)(const mkBatchEllIn *in, mkBatchEllOut *out);
 
 typedef struct mkBatchEllQueue {
 	mkBatchEllIn in;
-	const mkBody3 *b1[MK_BATCH_VLANES], *b2[MK_BATCH_VLANES];
-	int pair[MK_BATCH_VLANES], second[MK_BATCH_VLANES], count;
-	int retry[MK_BATCH_VLANES], nretry; /* pairs sent on to the search */
+	const mkBody3 *b1[MK_BATCH_NLANES], *b2[MK_BATCH_NLANES];
+	int pair[MK_BATCH_NLANES], second[MK_BATCH_NLANES], count;
+	int retry[MK_BATCH_NLANES], nretry; /* pairs sent on to the search */
 	mkBatchEllFn fn;
 	mkBatchStats3 *stats;
 	int *failed;
@@ -323,7 +323,7 @@ static void mkBatchEll_Push(mkBatchEllQueue *q, const mkPairCtx *c, int k, mkVec
 	q->b2[l] = c->b2;
 	q->pair[l] = k;
 	q->second[l] = second;
-	if (q->count == MK_BATCH_VLANES)
+	if (q->count == MK_BATCH_NLANES)
 		mkBatchEll_Flush(q, mode, delta, out);
 }
 
@@ -398,7 +398,7 @@ static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta,
 	if (nl == 0)
 		return;
 	mkBatchEllIn *in = &q->in;
-	for (int l = nl; l < MK_BATCH_VLANES; ++l) { /* spare lanes: copies of lane 0 */
+	for (int l = nl; l < MK_BATCH_NLANES; ++l) { /* spare lanes: copies of lane 0 */
 		for (int i = 0; i < 6; ++i) {
 			in->Q1[i][l] = in->Q1[i][0];
 			in->Q2[i][l] = in->Q2[i][0];
@@ -411,9 +411,9 @@ static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta,
 	}
 	mkBatchEllOut r;
 	q->fn(in, &r);
-	const mkBody3 *qb1[MK_BATCH_VLANES], *qb2[MK_BATCH_VLANES];
-	int pair[MK_BATCH_VLANES], second[MK_BATCH_VLANES];
-	double sc[MK_BATCH_VLANES];
+	const mkBody3 *qb1[MK_BATCH_NLANES], *qb2[MK_BATCH_NLANES];
+	int pair[MK_BATCH_NLANES], second[MK_BATCH_NLANES];
+	double sc[MK_BATCH_NLANES];
 	for (int l = 0; l < nl; ++l) {
 		qb1[l] = q->b1[l];
 		qb2[l] = q->b2[l];

@@ -130,82 +130,131 @@ static inline mkBM mkBN_Step(const mkBV Q1[6], const mkBV Q2[6], mkBN3 n, const 
 	return ok;
 }
 
-/* MK_BATCH_VLANES lanes of in, MK_BX_W at a time, into out. One long
- * function on purpose: the lanes' loop, its masks and its state shared by
- * every stage (documented hot kernel). */
+/* One block of MK_BX_W lanes: the bodies, the state at the current normal
+ * and the masks. */
+typedef struct mkBNBlock {
+	mkBV Q1[6], Q2[6], scale, tol, tiny, settle, res, steps, damp;
+	mkBN3 d, n;
+	mkBNAt e;
+	mkBM active, done;
+} mkBNBlock;
+
+static inline void mkBN_Start(const mkBatchEllIn *in, int o, mkBNBlock *b)
+{
+	for (int i = 0; i < 6; ++i) {
+		b->Q1[i] = mkB_Load(in->Q1[i] + o);
+		b->Q2[i] = mkB_Load(in->Q2[i] + o);
+	}
+	b->d = (mkBN3){ mkB_Load(in->d[0] + o), mkB_Load(in->d[1] + o), mkB_Load(in->d[2] + o) };
+	b->n = (mkBN3){ mkB_Load(in->n[0] + o), mkB_Load(in->n[1] + o), mkB_Load(in->n[2] + o) };
+	b->scale = mkB_Load(in->scale + o);
+	b->tol = mkB_Splat(MK_COLLIDE3_RESIDUAL_TOL) * b->scale;
+	b->tiny = mkB_Splat(1e-17) * b->scale;
+	b->settle = mkB_Splat(2.0 * MK_BATCH_NEWTON_SETTLE) * b->scale;
+	mkBN_Eval(b->Q1, b->Q2, b->d, b->n, &b->e);
+	b->active = mkB_Le(b->scale, b->scale); /* every lane active, none done */
+	b->done = ~b->active;
+	b->res = mkB_Sqrt(mkBN_Dot(b->e.g, b->e.g));
+	b->steps = mkB_Splat(0.0);
+	b->damp = mkB_Splat(1.0);
+}
+
+/* The lanes of b that converged at the current point (|g| <= tol, or the
+ * distance settled). */
+static inline mkBM mkBN_Converged(const mkBNBlock *b)
+{
+	mkBV f = b->e.f;
+	return mkB_Le(b->res, b->tol) | (mkB_Lt(mkB_Splat(0.0), f) & mkB_Le(b->res * b->res, b->settle * f));
+}
+
+/* One iteration of the active lanes of b. Returns 0 when none is active. */
+static inline int mkBN_Iterate(mkBNBlock *b)
+{
+	mkBV one = mkB_Splat(1.0);
+	mkBNAt *e = &b->e, t;
+	mkBN3 n = b->n;
+	b->res = mkB_Sel(b->active, mkB_Sqrt(mkBN_Dot(e->g, e->g)), b->res);
+	mkBM conv = b->active & mkBN_Converged(b);
+	b->done |= conv;
+	b->active &= ~conv;
+	if (!mkB_Any(b->active))
+		return 0;
+	mkBN3 z;
+	mkBM ok = mkBN_Step(b->Q1, b->Q2, n, e, &z);
+	z = mkBN_Sub(z, mkBN_Scale(n, mkBN_Dot(n, z)));
+	mkBV zlen = mkB_Sqrt(mkBN_Dot(z, z)), slope = mkBN_Dot(e->g, z), pred = mkB_Splat(0.5) * slope;
+	b->active &= ok & mkB_Le(zlen, mkB_Splat(1e300));
+	b->steps = mkB_Sel(b->active, b->steps + one, b->steps);
+	conv = b->active & (mkB_Le(zlen, mkB_Splat(1e-14)) | mkB_Le(pred, b->tiny));
+	b->done |= conv;
+	b->active &= ~conv;
+	if (!mkB_Any(b->active))
+		return 0;
+	/* the step's fraction: at most MK_TR_MAX long, at most damp */
+	mkBV cap = mkB_Splat(MK_TR_MAX) / zlen;
+	mkBV frac = mkB_Sel(mkB_Lt(cap, b->damp), cap, b->damp);
+	z = mkBN_Scale(z, frac);
+	mkBN3 m = { n.x + z.x, n.y + z.y, n.z + z.z };
+	m = mkBN_Scale(m, one / mkB_Sqrt(mkBN_Dot(m, m)));
+	mkBN_Eval(b->Q1, b->Q2, b->d, m, &t);
+	mkBV gain = t.f - e->f, noise = mkB_Splat(64.0 * DBL_EPSILON) * (mkB_Abs(e->f) + b->scale);
+	mkBV want = frac * slope;
+	mkBM big = mkB_Lt(noise, want);
+	mkBM taken = b->active
+		& ((big & mkB_Le(mkB_Splat(1e-4) * want, gain)) | (~big & mkB_Le(mkB_Splat(0.0) - noise, gain)));
+	/* a rejected step is tried again at half the fraction, up to
+	 * MK_BATCH_NEWTON_CUTS times; a taken one lets the next step grow back
+	 * to twice its fraction */
+	mkBV half = mkB_Splat(0.5) * frac, twice = frac + frac;
+	b->damp = mkB_Sel(taken, mkB_Sel(mkB_Lt(twice, one), twice, one), half);
+	b->active &= taken | mkB_Le(mkB_Splat(1.0 / (1 << MK_BATCH_NEWTON_CUTS)), half);
+	b->n = mkBN_Sel(taken, m, n);
+	mkBN_SelAt(taken, &t, e);
+	return 1;
+}
+
+/* The last step's point, where the iterations ran out, and the outputs. */
+static inline void mkBN_Finish(mkBNBlock *b, int o, mkBatchEllOut *out)
+{
+	const mkBNAt *e = &b->e;
+	b->res = mkB_Sel(b->active, mkB_Sqrt(mkBN_Dot(e->g, e->g)), b->res);
+	b->done |= b->active & mkBN_Converged(b);
+	mkB_Store(out->n[0] + o, b->n.x);
+	mkB_Store(out->n[1] + o, b->n.y);
+	mkB_Store(out->n[2] + o, b->n.z);
+	mkBN3 s[2] = { e->s1, e->s2 };
+	for (int k = 0; k < 2; ++k) {
+		mkB_Store((k ? out->s2 : out->s1)[0] + o, s[k].x);
+		mkB_Store((k ? out->s2 : out->s1)[1] + o, s[k].y);
+		mkB_Store((k ? out->s2 : out->s1)[2] + o, s[k].z);
+	}
+	mkB_Store(out->f + o, e->f);
+	mkB_Store(out->res + o, b->res);
+	mkB_Store(out->steps + o, b->steps);
+	mkB_Store(out->done + o, mkB_Sel(b->done, mkB_Splat(1.0), mkB_Splat(0.0)));
+}
+
+/* MK_BATCH_NLANES lanes of in, in blocks of MK_BX_W, into out. The blocks
+ * iterate in turn within each step: their chains of square roots and
+ * divisions are independent, so the processor overlaps them (one block
+ * alone waits on their latency). */
 static void mkBN_Run(const mkBatchEllIn *in, mkBatchEllOut *out)
 {
-	for (int o = 0; o < MK_BATCH_VLANES; o += MK_BX_W) {
-		mkBV Q1[6], Q2[6];
-		for (int i = 0; i < 6; ++i) {
-			Q1[i] = mkB_Load(in->Q1[i] + o);
-			Q2[i] = mkB_Load(in->Q2[i] + o);
-		}
-		mkBN3 d = { mkB_Load(in->d[0] + o), mkB_Load(in->d[1] + o), mkB_Load(in->d[2] + o) };
-		mkBN3 n = { mkB_Load(in->n[0] + o), mkB_Load(in->n[1] + o), mkB_Load(in->n[2] + o) };
-		mkBV scale = mkB_Load(in->scale + o), one = mkB_Splat(1.0);
-		mkBV tol = mkB_Splat(MK_COLLIDE3_RESIDUAL_TOL) * scale, tiny = mkB_Splat(1e-17) * scale;
-		mkBV settle = mkB_Splat(2.0 * MK_BATCH_NEWTON_SETTLE) * scale;
-		mkBNAt e, t;
-		mkBN_Eval(Q1, Q2, d, n, &e);
-		mkBM active = mkB_Le(scale, scale), done = ~active; /* every lane active, none done */
-		mkBV res = mkB_Sqrt(mkBN_Dot(e.g, e.g)), steps = mkB_Splat(0.0), damp = one;
-		for (int it = 0; it < MK_BATCH_NEWTON_STEPS; ++it) {
-			res = mkB_Sel(active, mkB_Sqrt(mkBN_Dot(e.g, e.g)), res);
-			mkBM conv = active & (mkB_Le(res, tol) | (mkB_Lt(mkB_Splat(0.0), e.f) & mkB_Le(res * res, settle * e.f)));
-			done |= conv;
-			active &= ~conv;
-			if (!mkB_Any(active))
-				break;
-			mkBN3 z;
-			mkBM ok = mkBN_Step(Q1, Q2, n, &e, &z);
-			z = mkBN_Sub(z, mkBN_Scale(n, mkBN_Dot(n, z)));
-			mkBV zlen = mkB_Sqrt(mkBN_Dot(z, z)), slope = mkBN_Dot(e.g, z), pred = mkB_Splat(0.5) * slope;
-			active &= ok & mkB_Le(zlen, mkB_Splat(1e300));
-			steps = mkB_Sel(active, steps + one, steps);
-			conv = active & (mkB_Le(zlen, mkB_Splat(1e-14)) | mkB_Le(pred, tiny));
-			done |= conv;
-			active &= ~conv;
-			if (!mkB_Any(active))
-				break;
-			/* the step's fraction: at most MK_TR_MAX long, at most damp */
-			mkBV cap = mkB_Splat(MK_TR_MAX) / zlen;
-			mkBV frac = mkB_Sel(mkB_Lt(cap, damp), cap, damp);
-			z = mkBN_Scale(z, frac);
-			mkBN3 m = { n.x + z.x, n.y + z.y, n.z + z.z };
-			m = mkBN_Scale(m, one / mkB_Sqrt(mkBN_Dot(m, m)));
-			mkBN_Eval(Q1, Q2, d, m, &t);
-			mkBV gain = t.f - e.f, noise = mkB_Splat(64.0 * DBL_EPSILON) * (mkB_Abs(e.f) + scale);
-			mkBV want = frac * slope;
-			mkBM big = mkB_Lt(noise, want);
-			mkBM taken = active
-				& ((big & mkB_Le(mkB_Splat(1e-4) * want, gain)) | (~big & mkB_Le(mkB_Splat(0.0) - noise, gain)));
-			/* a rejected step is tried again at half the fraction, up to
-			 * MK_BATCH_NEWTON_CUTS times; a taken one lets the next step
-			 * grow back to twice its fraction */
-			mkBV half = mkB_Splat(0.5) * frac, twice = frac + frac;
-			damp = mkB_Sel(taken, mkB_Sel(mkB_Lt(twice, one), twice, one), half);
-			active &= taken | mkB_Le(mkB_Splat(1.0 / (1 << MK_BATCH_NEWTON_CUTS)), half);
-			n = mkBN_Sel(taken, m, n);
-			mkBN_SelAt(taken, &t, &e);
-		}
-		/* the last step's point, where the loop ran out */
-		res = mkB_Sel(active, mkB_Sqrt(mkBN_Dot(e.g, e.g)), res);
-		done |= active & (mkB_Le(res, tol) | (mkB_Lt(mkB_Splat(0.0), e.f) & mkB_Le(res * res, settle * e.f)));
-		mkB_Store(out->n[0] + o, n.x);
-		mkB_Store(out->n[1] + o, n.y);
-		mkB_Store(out->n[2] + o, n.z);
-		mkBN3 s[2] = { e.s1, e.s2 };
-		for (int k = 0; k < 2; ++k) {
-			mkB_Store((k ? out->s2 : out->s1)[0] + o, s[k].x);
-			mkB_Store((k ? out->s2 : out->s1)[1] + o, s[k].y);
-			mkB_Store((k ? out->s2 : out->s1)[2] + o, s[k].z);
-		}
-		mkB_Store(out->f + o, e.f);
-		mkB_Store(out->res + o, res);
-		mkB_Store(out->steps + o, steps);
-		mkB_Store(out->done + o, mkB_Sel(done, one, mkB_Splat(0.0)));
+	enum { MK_BN_BLOCKS = MK_BATCH_NLANES / MK_BX_W };
+	mkBNBlock b[MK_BN_BLOCKS];
+	int live[MK_BN_BLOCKS];
+	for (int i = 0; i < MK_BN_BLOCKS; ++i) {
+		mkBN_Start(in, i * MK_BX_W, &b[i]);
+		live[i] = 1;
 	}
+	for (int it = 0, any = 1; it < MK_BATCH_NEWTON_STEPS && any; ++it) {
+		any = 0;
+		for (int i = 0; i < MK_BN_BLOCKS; ++i)
+			if (live[i])
+				any |= live[i] = mkBN_Iterate(&b[i]);
+	}
+	for (int i = 0; i < MK_BN_BLOCKS; ++i)
+		mkBN_Finish(&b[i], i * MK_BX_W, out);
 }
 
 #endif

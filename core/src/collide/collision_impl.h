@@ -27,23 +27,24 @@ typedef struct mkBatchLanesIn {
 } mkBatchLanesIn;
 void mkBatch_SupportLanesAvx2(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
 void mkBatch_SupportLanesAvx512(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
-/* The batch's Newton lanes for separated pairs of ellipsoids
- * (batch_newton.h): per lane the bodies' Q = P P^T (Q00, Q01, Q02, Q11,
+/* The batch's Newton lanes for pairs of ellipsoids (batch_newton.h),
+ * MK_BATCH_NLANES per call: per lane the bodies' Q = P P^T (Q00, Q01, Q02, Q11,
  * Q12, Q22), the centre line d = c2 - c1, the unit start n and the pair's
  * scale; out: the final normal, the support points s1 (B1 at n) and s2 (B2
  * at -n) about the centres, f at n, the residual |g|, the steps taken and
  * done (1 converged, 0 to leave for the scalar path). Lanes beyond the
  * pairs must hold a valid pair (a copy). */
+#define MK_BATCH_NLANES 16
 #define MK_BATCH_NEWTON_STEPS 16
 #define MK_BATCH_NEWTON_CUTS 4
 #define MK_BATCH_NEWTON_SETTLE 1e-15
 typedef struct mkBatchEllIn {
-	double Q1[6][MK_BATCH_VLANES], Q2[6][MK_BATCH_VLANES], d[3][MK_BATCH_VLANES], n[3][MK_BATCH_VLANES],
-		scale[MK_BATCH_VLANES];
+	double Q1[6][MK_BATCH_NLANES], Q2[6][MK_BATCH_NLANES], d[3][MK_BATCH_NLANES], n[3][MK_BATCH_NLANES],
+		scale[MK_BATCH_NLANES];
 } mkBatchEllIn;
 typedef struct mkBatchEllOut {
-	double n[3][MK_BATCH_VLANES], s1[3][MK_BATCH_VLANES], s2[3][MK_BATCH_VLANES], f[MK_BATCH_VLANES],
-		res[MK_BATCH_VLANES], steps[MK_BATCH_VLANES], done[MK_BATCH_VLANES];
+	double n[3][MK_BATCH_NLANES], s1[3][MK_BATCH_NLANES], s2[3][MK_BATCH_NLANES], f[MK_BATCH_NLANES],
+		res[MK_BATCH_NLANES], steps[MK_BATCH_NLANES], done[MK_BATCH_NLANES];
 } mkBatchEllOut;
 /* The scalar reference (one lane at a time) and the vector builds. */
 void mkBatch_EllipsoidLanesScalar(const mkBatchEllIn *in, mkBatchEllOut *out);
