@@ -10,7 +10,8 @@
  *    1e-12 of the scale;
  *  - the ellipsoids' Newton lanes (collide/batch_newton.h): each vector
  *    build against the scalar build (every output the same bits, as both do
- *    the same correctly rounded operations), and the scalar build's
+ *    the same correctly rounded operations; also when run on fewer
+ *    lanes), and the scalar build's
  *    converged lanes by other code: f(n) against mkCollide3_Bound
  *    (mkBody3_SupportValue) and the support points against
  *    mkBody3_Support within 1e-13 of the scale, f against the one-pair
@@ -112,10 +113,18 @@ static int mkCheckEllipsoids(mkEllFn fn, unsigned long long *seed, int rep)
 		}
 		in.scale[l] = mkCollide3_PairSize(b1[l], b2[l]);
 	}
+	in.count = MK_BATCH_NLANES;
 	mkBatchEllOut want, got;
 	mkBatch_EllipsoidLanesScalar(&in, &want);
 	fn(&in, &got);
 	ENSURE(memcmp(&want, &got, sizeof want) == 0);
+	in.count = 1 + rep % MK_BATCH_NLANES; /* fewer lanes: the same bits on those */
+	fn(&in, &got);
+	for (int l = 0; l < in.count; ++l) {
+		ENSURE(got.f[l] == want.f[l] && got.done[l] == want.done[l] && got.steps[l] == want.steps[l]);
+		for (int i = 0; i < 3; ++i)
+			ENSURE(got.n[i][l] == want.n[i][l] && got.s1[i][l] == want.s1[i][l] && got.s2[i][l] == want.s2[i][l]);
+	}
 	int conv = 0;
 	for (int l = 0; l < MK_BATCH_NLANES; ++l) {
 		if (want.done[l] != 1.0)

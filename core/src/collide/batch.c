@@ -288,6 +288,10 @@ static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, mkBatch
  * that finds it separated it enters again from the search's best
  * direction (second 1); leaving then, it goes to the one-pair query. */
 typedef void (*mkBatchEllFn)(const mkBatchEllIn *in, mkBatchEllOut *out);
+/* Queues of at most this many pairs run on the scalar build (measured: one
+ * pair alone took about twice the one-pair query's time in the AVX-512
+ * build's sixteen lanes). */
+#define MK_BATCH_NEWTON_FEW 4
 
 typedef struct mkBatchEllQueue {
 	mkBatchEllIn in;
@@ -410,7 +414,10 @@ static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta,
 		in->scale[l] = in->scale[0];
 	}
 	mkBatchEllOut r;
-	q->fn(in, &r);
+	in->count = nl;
+	/* a few pairs: the scalar build runs just their lanes (a vector build
+	 * would pay for whole vectors; every build gives the same bits) */
+	(nl <= MK_BATCH_NEWTON_FEW ? mkBatch_EllipsoidLanesScalar : q->fn)(in, &r);
 	const mkBody3 *qb1[MK_BATCH_NLANES], *qb2[MK_BATCH_NLANES];
 	int pair[MK_BATCH_NLANES], second[MK_BATCH_NLANES];
 	double sc[MK_BATCH_NLANES];

@@ -234,7 +234,8 @@ static inline void mkBN_Finish(mkBNBlock *b, int o, mkBatchEllOut *out)
 	mkB_Store(out->done + o, mkB_Sel(b->done, mkB_Splat(1.0), mkB_Splat(0.0)));
 }
 
-/* MK_BATCH_NLANES lanes of in, in blocks of MK_BX_W, into out. The blocks
+/* The first in->count lanes of in (rounded up to whole blocks), in blocks
+ * of MK_BX_W, into out. The blocks
  * iterate in turn within each step: their chains of square roots and
  * divisions are independent, so the processor overlaps them (one block
  * alone waits on their latency). */
@@ -242,18 +243,19 @@ static void mkBN_Run(const mkBatchEllIn *in, mkBatchEllOut *out)
 {
 	enum { MK_BN_BLOCKS = MK_BATCH_NLANES / MK_BX_W };
 	mkBNBlock b[MK_BN_BLOCKS];
-	int live[MK_BN_BLOCKS];
-	for (int i = 0; i < MK_BN_BLOCKS; ++i) {
+	int live[MK_BN_BLOCKS], nb = (in->count + MK_BX_W - 1) / MK_BX_W;
+	nb = nb < 0 ? 0 : nb > MK_BN_BLOCKS ? MK_BN_BLOCKS : nb;
+	for (int i = 0; i < nb; ++i) {
 		mkBN_Start(in, i * MK_BX_W, &b[i]);
 		live[i] = 1;
 	}
 	for (int it = 0, any = 1; it < MK_BATCH_NEWTON_STEPS && any; ++it) {
 		any = 0;
-		for (int i = 0; i < MK_BN_BLOCKS; ++i)
+		for (int i = 0; i < nb; ++i)
 			if (live[i])
 				any |= live[i] = mkBN_Iterate(&b[i]);
 	}
-	for (int i = 0; i < MK_BN_BLOCKS; ++i)
+	for (int i = 0; i < nb; ++i)
 		mkBN_Finish(&b[i], i * MK_BX_W, out);
 }
 

@@ -32,8 +32,8 @@ void mkBatch_SupportLanesAvx512(const mkBatchLanesIn *in, double s[3][MK_BATCH_V
  * Q12, Q22), the centre line d = c2 - c1, the unit start n and the pair's
  * scale; out: the final normal, the support points s1 (B1 at n) and s2 (B2
  * at -n) about the centres, f at n, the residual |g|, the steps taken and
- * done (1 converged, 0 to leave for the scalar path). Lanes beyond the
- * pairs must hold a valid pair (a copy). */
+ * done (1 converged, 0 to leave for the scalar path); the outputs of
+ * lanes past count's vector are not written. */
 #define MK_BATCH_NLANES 16
 #define MK_BATCH_NEWTON_STEPS 16
 #define MK_BATCH_NEWTON_CUTS 4
@@ -41,6 +41,7 @@ void mkBatch_SupportLanesAvx512(const mkBatchLanesIn *in, double s[3][MK_BATCH_V
 typedef struct mkBatchEllIn {
 	double Q1[6][MK_BATCH_NLANES], Q2[6][MK_BATCH_NLANES], d[3][MK_BATCH_NLANES], n[3][MK_BATCH_NLANES],
 		scale[MK_BATCH_NLANES];
+	int count; /* lanes [0, count) are run (whole vectors: a vector's spare lanes must hold valid pairs) */
 } mkBatchEllIn;
 typedef struct mkBatchEllOut {
 	double n[3][MK_BATCH_NLANES], s1[3][MK_BATCH_NLANES], s2[3][MK_BATCH_NLANES], f[MK_BATCH_NLANES],
