@@ -1,5 +1,5 @@
-/* batch_newton.h - Newton's iteration for the signed distance of separated
- * pairs of ellipsoids in lanes (the distance mode of batch.c): the same
+/* batch_newton.h - Newton's iteration for the signed distance of pairs of
+ * ellipsoids in lanes (the distance mode of batch.c): the same
  * steps as the one-pair solver's ellipsoid loop (mkNormal_Ellipsoids of
  * newton.h), one pair per lane, all lanes in lock-step under masks.
  *
