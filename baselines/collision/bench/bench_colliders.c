@@ -284,8 +284,22 @@ static void mkBenchBatchRows(double *bt, int pairs, const int *bounds, const int
  * pair. Prints each mode's median and mean over the chunks and the ratios
  * to ccd-gjk's and ccd-gjk-epa-1e-10's (pairs per second over theirs). */
 #define MK_BENCH_CHUNK 64
-static void mkBenchChunks(const mkBody3 *B1, const mkBody3 *B2, int pairs, mkColliderScratch *scratch, double *work)
+static void mkBatchStats_Add(mkBatchStats3 *t, const mkBatchStats3 *s)
 {
+	t->separating += s->separating;
+	t->overlap_point += s->overlap_point;
+	t->one_pair += s->one_pair;
+	t->failed += s->failed;
+	t->newton += s->newton;
+	t->newton_left += s->newton_left;
+}
+
+static void mkBenchChunks(const mkBody3 *B1, const mkBody3 *B2, const mkCollision3 *ref, int pairs,
+	mkColliderScratch *scratch, double *work)
+{
+	mkBatchStats3 total[MK_BATCH_MODES];
+	memset(total, 0, sizeof total);
+	double derr = 0.0; /* the distance mode's largest |sd - referee| / scale (separated, certain) */
 	const mkCollider *peer[2] = { mkColliders_Find("ccd-gjk"), mkColliders_Find("ccd-gjk-epa-1e-10") };
 	int nch = (pairs + MK_BENCH_CHUNK - 1) / MK_BENCH_CHUNK;
 	static mkContact st[MK_BENCH_CHUNK];
@@ -308,9 +322,16 @@ static void mkBenchChunks(const mkBody3 *B1, const mkBody3 *B2, int pairs, mkCol
 		mkBatchPairs3 pr = { n, B1 + at, B2 + at, NULL, NULL };
 		for (int m = 0; m < MK_BATCH_MODES; ++m) {
 			double delta = MK_BENCH_DELTA * mkCollide3_PairSize(B1[at], B2[at]);
+			mkBatchStats3 bs;
 			double t0 = mkNow();
-			mkCollide3_Batch(&pr, (mkBatchMode)m, delta, &out, NULL);
+			mkCollide3_Batch(&pr, (mkBatchMode)m, delta, &out, &bs);
 			work[(size_t)(2 + m) * (size_t)nch + (size_t)c] = 1e6 * (mkNow() - t0) / n;
+			mkBatchStats_Add(&total[m], &bs);
+			for (int p = 0; m == MK_BATCH_DISTANCE && p < n; ++p) {
+				const mkCollision3 *rf = &ref[at + p];
+				if (rf->residual <= 1e-10 && rf->distance > 0.0 && out.status[p] == MK_CONTACT_SEPARATED)
+					derr = fmax(derr, fabs(dist[p] - rf->distance) / rf->scale);
+			}
 		}
 	}
 	double med[2 + MK_BATCH_MODES], mean[2 + MK_BATCH_MODES];
@@ -328,6 +349,10 @@ static void mkBenchChunks(const mkBody3 *B1, const mkBody3 *B2, int pairs, mkCol
 		printf("batch-%-9s x%-3d %9.3f %9.3f   x ccd-gjk: median %.2f, mean %.2f; x ccd-gjk-epa-1e-10: median %.2f, "
 			"mean %.2f\n", names[m], MK_BENCH_CHUNK, med[2 + m], mean[2 + m], med[0] / med[2 + m], mean[0] / mean[2 + m],
 			med[1] / med[2 + m], mean[1] / mean[2 + m]);
+	const mkBatchStats3 *d = &total[MK_BATCH_DISTANCE];
+	printf("(batch-distance x%d: %d pairs by a certificate (%d of them by the Newton lanes), %d by the one-pair query "
+		"(%d of them left the Newton lanes), %d failed; max |sd - referee| / scale %.2e)\n", MK_BENCH_CHUNK,
+		d->separating + d->overlap_point, d->newton, d->one_pair, d->newton_left, d->failed, derr);
 }
 
 int main(int argc, char **argv)
@@ -452,7 +477,7 @@ int main(int argc, char **argv)
 			rmean[w] = sum / nt[e];
 		}
 		mkBenchBatchRows(btimes, pairs, bbounds, bdis, rmed, rmean);
-		mkBenchChunks(B1, B2, pairs, &scratch, btimes);
+		mkBenchChunks(B1, B2, ref, pairs, &scratch, btimes);
 		mkBenchRefereeLine(ref, reftime, refgap, pairs, nref_fail, nuncertain);
 	}
 	(void)normal;

@@ -73,6 +73,15 @@ static void mkCheckCertificates(const mkBody3 *b1, const mkBody3 *b2, const mkOu
 		ENSURE(f > 0.0);
 		ENSURE_NEAR(f, o->lower[p], 1e-13 * mkCollide3_PairSize(b1[p], b2[p]));
 		ENSURE(o->status[p] == MK_CONTACT_SEPARATED);
+		if (isfinite(o->distance[p])) {
+			/* a distance of the Newton lanes: the witnesses on the bodies,
+			 * the bracket [lower, upper] = [f(n), |p2 - p1|] closed */
+			double scale = mkCollide3_PairSize(b1[p], b2[p]), span = mkVec3_Length(mkVec3_Sub(o->p2[p], o->p1[p]));
+			ENSURE_NEAR(mkBody3_Implicit(b1[p], o->p1[p]), 1.0, 1e-9);
+			ENSURE_NEAR(mkBody3_Implicit(b2[p], o->p2[p]), 1.0, 1e-9);
+			ENSURE_NEAR(o->upper[p], span, 1e-15 * scale);
+			ENSURE(o->distance[p] == o->lower[p] && o->upper[p] - o->lower[p] <= MK_BATCH_DISTANCE_GAP * scale);
+		}
 	}
 	if (o->path[p] == MK_PATH_OVERLAP_POINT) {
 		ENSURE(mkBody3_Implicit(b1[p], o->p1[p]) < 1.0);
@@ -93,8 +102,11 @@ static void mkCheckMode(int kind, mkBatchMode mode, const mkBody3 *b1, const mkB
 	ENSURE(mkCollide3_BatchReference(&pairs, mode, delta, &vw, &stw) == MK_OK);
 	ENSURE(stw.one_pair == MK_N);
 	ENSURE(st.separating + st.overlap_point + st.one_pair + st.failed == MK_N && st.failed == 0);
-	printf("  %-17s %-9s bounds: %3d separating, %3d overlap point; one-pair query: %3d\n", mkKindNames[kind],
-		mkBatchMode_Name(mode), st.separating, st.overlap_point, st.one_pair);
+	ENSURE(st.newton <= st.separating && st.newton_left <= st.one_pair);
+	ENSURE(mode == MK_BATCH_DISTANCE || st.newton + st.newton_left == 0);
+	printf("  %-17s %-9s bounds: %3d separating, %3d overlap point; one-pair query: %3d; Newton lanes: %3d answered, "
+		"%d left\n", mkKindNames[kind], mkBatchMode_Name(mode), st.separating, st.overlap_point, st.one_pair,
+		st.newton, st.newton_left);
 	for (int p = 0; p < MK_N; ++p) {
 		double scale = mkCollide3_PairSize(b1[p], b2[p]);
 		ENSURE(got.status[p] == want.status[p]);

@@ -24,8 +24,17 @@
  *                      is that of a distance accurate to 1e-12 of the scale,
  *                      not certified). The status is filled as in STATUS.
  *  MK_BATCH_DISTANCE   the signed distance of separated (and touching) pairs,
- *                      as mkCollide3_Normal gives it (the same call, once
- *                      the search found the pair separated);
+ *                      as mkCollide3_Normal gives it: for two ellipsoids
+ *                      Newton's iteration in vector lanes, from the centre
+ *                      line (before any search) and again from the search's
+ *                      best direction where that did not answer, answered
+ *                      when converged at an n with f(n) > MK_BATCH_MARGIN *
+ *                      scale and the bracket lower = f(n), upper =
+ *                      |p2 - p1| (the support points at n) at most
+ *                      MK_BATCH_DISTANCE_GAP * scale wide (distance f(n),
+ *                      path MK_PATH_SEPARATING); else (and for
+ *                      superquadrics), once the search found the pair
+ *                      separated, by the same call;
  *                      overlapping pairs get their status only (distance
  *                      NaN), certified by an overlap point where one is
  *                      found, else by the one-pair query.
@@ -54,6 +63,10 @@ typedef enum mkBatchMode {
 /* A certificate of the status or clearance is accepted only when it holds
  * by more than this (times the pair's scale): 4 times the touching band. */
 #define MK_BATCH_MARGIN 4e-12
+/* The distance mode answers a pair from the Newton lanes only when its
+ * certified bracket, [f(n), |p2 - p1|], is at most this wide (times the
+ * pair's scale). */
+#define MK_BATCH_DISTANCE_GAP 1e-12
 /* Pair evaluations of the certificates' search (Gilbert's iteration on
  * B2 - B1 from the centre line) before a pair goes to the one-pair query. */
 #define MK_BATCH_EVALS 32
@@ -89,9 +102,14 @@ typedef struct mkBatchOut3 {
 	unsigned char *path;  /* mkBatchPath */
 } mkBatchOut3;
 
-/* How a call's pairs were answered (per mkBatchPath). */
+/* How a call's pairs were answered (per mkBatchPath), and, in
+ * MK_BATCH_DISTANCE, how the separated pairs of ellipsoids fared in the
+ * Newton lanes: newton answered there (also counted in separating),
+ * newton_left left them for the one-pair query (also counted in one_pair or
+ * failed). */
 typedef struct mkBatchStats3 {
 	int separating, overlap_point, one_pair, failed;
+	int newton, newton_left;
 } mkBatchStats3;
 
 /* Answers the pairs in the mode (delta: the clearance, finite and >= 0,

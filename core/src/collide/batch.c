@@ -279,17 +279,75 @@ static mkBatchPath mkBatch_OnePair(const mkBody3 *b1, const mkBody3 *b2, mkBatch
 	return MK_PATH_ONE_PAIR;
 }
 
+/* The Newton lanes of pairs of ellipsoids in the distance mode
+ * (batch_newton.h): pairs wait in the queue until MK_BATCH_NLANES are there
+ * (or the searches are over), then run together. A pair first enters from
+ * the centre line, before any search (second 0); a lane that does not
+ * answer it sends it on to the search (q->retry: the lock-step searches
+ * take these first, so that at most one queue's worth waits), and when
+ * that finds it separated it enters again from the search's best
+ * direction (second 1); leaving then, it goes to the one-pair query. */
+typedef void (*mkBatchEllFn)(const mkBatchEllIn *in, mkBatchEllOut *out);
+/* Queues of at most this many pairs run on the scalar build (measured: one
+ * pair alone took about twice the one-pair query's time in the AVX-512
+ * build's sixteen lanes). */
+#define MK_BATCH_NEWTON_FEW 4
+
+typedef struct mkBatchEllQueue {
+	mkBatchEllIn in;
+	const mkBody3 *b1[MK_BATCH_NLANES], *b2[MK_BATCH_NLANES];
+	int pair[MK_BATCH_NLANES], second[MK_BATCH_NLANES], count;
+	int retry[MK_BATCH_NLANES], nretry; /* pairs sent on to the search */
+	mkBatchEllFn fn;
+	mkBatchStats3 *stats;
+	int *failed;
+} mkBatchEllQueue;
+
+static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta, const mkBatchOut3 *out);
+
+/* Queues pair k of ellipsoids (its context c) from the unit start n
+ * (second: from a search's direction); runs the queue when it is full. */
+static void mkBatchEll_Push(mkBatchEllQueue *q, const mkPairCtx *c, int k, mkVec3 n0, int second, mkBatchMode mode,
+	double delta, const mkBatchOut3 *out)
+{
+	int l = q->count++;
+	mkBatchEllIn *in = &q->in;
+	static const int ix[6][2] = { { 0, 0 }, { 0, 1 }, { 0, 2 }, { 1, 1 }, { 1, 2 }, { 2, 2 } };
+	for (int i = 0; i < 6; ++i) {
+		in->Q1[i][l] = c->k1.Q[ix[i][0]][ix[i][1]];
+		in->Q2[i][l] = c->k2.Q[ix[i][0]][ix[i][1]];
+	}
+	const double d[3] = { c->d.x, c->d.y, c->d.z }, n[3] = { n0.x, n0.y, n0.z };
+	for (int i = 0; i < 3; ++i) {
+		in->d[i][l] = d[i];
+		in->n[i][l] = n[i];
+	}
+	in->scale[l] = c->scale;
+	q->b1[l] = c->b1;
+	q->b2[l] = c->b2;
+	q->pair[l] = k;
+	q->second[l] = second;
+	if (q->count == MK_BATCH_NLANES)
+		mkBatchEll_Flush(q, mode, delta, out);
+}
+
 /* Sets up pair k's search (its bodies b1, b2) in g. Returns 1, or 0 when
  * the pair goes to the one-pair query at once (FULL, or a scale that is not
- * finite), which has then answered it (*path). */
+ * finite), which has then answered it (*path), or -1 when it went to the
+ * Newton lanes q instead (DISTANCE, two ellipsoids, q not NULL). */
 static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
-	const mkBatchOut3 *out, int k, mkBatchPath *path)
+	const mkBatchOut3 *out, int k, mkBatchPath *path, mkBatchEllQueue *q)
 {
 	mkPairCtx_Init(&g->c, b1, b2);
 	g->pair = k;
 	if (mode == MK_BATCH_FULL || !isfinite(g->c.scale)) {
 		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
 		return 0;
+	}
+	double dl = mkVec3_LengthInline(g->c.d);
+	if (q && mode == MK_BATCH_DISTANCE && g->c.k1.ellipsoid && g->c.k2.ellipsoid && dl > 0.0) {
+		mkBatchEll_Push(q, &g->c, k, mkVec3_Scale(g->c.d, 1.0 / dl), 0, mode, delta, out);
+		return -1;
 	}
 	double margin = MK_BATCH_MARGIN * g->c.scale;
 	int clearance = mode == MK_BATCH_CLEARANCE;
@@ -298,10 +356,13 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 }
 
 /* The answer of a search that ended in p: the certificate's, or the
- * one-pair query's (DISTANCE on a separated pair: the same call as the
- * reference, so the same distance; an overlap the search did not certify may
- * still have a point on the centre segment). Returns the path taken. */
-static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+ * one-pair query's (DISTANCE on a separated pair of superquadrics: the same
+ * call as the reference, so the same distance; a separated pair of
+ * ellipsoids goes to the Newton lanes, q; an overlap the search did not
+ * certify may still have a point on the centre segment). Returns the path
+ * taken, or -1 for a pair queued in q (counted when q runs). */
+static int mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double delta, const mkBatchOut3 *out,
+	mkBatchEllQueue *q)
 {
 	const mkBody3 *b1 = g->c.b1, *b2 = g->c.b2;
 	mkBatchCert *r = &g->r;
@@ -310,6 +371,10 @@ static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode,
 	if (p == MK_PATH_SEPARATING && mode != MK_BATCH_DISTANCE) {
 		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r->f, r->upper, r->n, r->p1, r->p2, r->f > delta + margin, p);
 		return p;
+	}
+	if (p == MK_PATH_SEPARATING && g->c.k1.ellipsoid && g->c.k2.ellipsoid) {
+		mkBatchEll_Push(q, &g->c, k, r->n, 1, mode, delta, out);
+		return -1;
 	}
 	if (p == MK_PATH_SEPARATING) /* started from r->n it was no faster (measured) */
 		return mkBatch_OnePair(b1, b2, mode, delta, out, k);
@@ -321,6 +386,72 @@ static mkBatchPath mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode,
 		return p;
 	}
 	return mkBatch_OnePair(b1, b2, mode, delta, out, k);
+}
+
+/* Runs the queued pairs and answers each: a lane that converged is
+ * answered when f(n) > MK_BATCH_MARGIN * scale (separated) and its
+ * certificate closes, lower = f(n) at its normal n (every unit n has
+ * f(n) <= sd) and upper = |p2 - p1| for the support points p1 (B1 at n),
+ * p2 (B2 at -n), points of the bodies: upper - lower at most
+ * MK_BATCH_DISTANCE_GAP of the scale; the distance is f(n), as the one-pair
+ * query's. Every other lane leaves: a first entry for the search
+ * (q->retry), a second for the one-pair query. */
+static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta, const mkBatchOut3 *out)
+{
+	int nl = q->count;
+	if (nl == 0)
+		return;
+	mkBatchEllIn *in = &q->in;
+	for (int l = nl; l < MK_BATCH_NLANES; ++l) { /* spare lanes: copies of lane 0 */
+		for (int i = 0; i < 6; ++i) {
+			in->Q1[i][l] = in->Q1[i][0];
+			in->Q2[i][l] = in->Q2[i][0];
+		}
+		for (int i = 0; i < 3; ++i) {
+			in->d[i][l] = in->d[i][0];
+			in->n[i][l] = in->n[i][0];
+		}
+		in->scale[l] = in->scale[0];
+	}
+	mkBatchEllOut r;
+	in->count = nl;
+	/* a few pairs: the scalar build runs just their lanes (a vector build
+	 * would pay for whole vectors; every build gives the same bits) */
+	(nl <= MK_BATCH_NEWTON_FEW ? mkBatch_EllipsoidLanesScalar : q->fn)(in, &r);
+	const mkBody3 *qb1[MK_BATCH_NLANES], *qb2[MK_BATCH_NLANES];
+	int pair[MK_BATCH_NLANES], second[MK_BATCH_NLANES];
+	double sc[MK_BATCH_NLANES];
+	for (int l = 0; l < nl; ++l) {
+		qb1[l] = q->b1[l];
+		qb2[l] = q->b2[l];
+		pair[l] = q->pair[l];
+		second[l] = q->second[l];
+		sc[l] = in->scale[l];
+	}
+	q->count = 0;
+	for (int l = 0; l < nl; ++l) {
+		const mkBody3 *b1 = qb1[l], *b2 = qb2[l];
+		double f = r.f[l], scale = sc[l];
+		mkVec3 n = mkVec3_Make(r.n[0][l], r.n[1][l], r.n[2][l]);
+		mkVec3 p1 = mkVec3_Add(b1->t, mkVec3_Make(r.s1[0][l], r.s1[1][l], r.s1[2][l]));
+		mkVec3 p2 = mkVec3_Add(b2->t, mkVec3_Make(r.s2[0][l], r.s2[1][l], r.s2[2][l]));
+		double upper = mkVec3_LengthInline(mkVec3_Sub(p2, p1));
+		int path = MK_PATH_SEPARATING;
+		if (r.done[l] == 1.0 && f > MK_BATCH_MARGIN * scale && upper - f <= MK_BATCH_DISTANCE_GAP * scale) {
+			mkBatch_Put(out, pair[l], mkContact_FromDistance(f, scale), f, f, upper, n, p1, p2, 0, MK_PATH_SEPARATING);
+			if (q->stats)
+				q->stats->newton += 1;
+		} else if (second[l]) {
+			path = mkBatch_OnePair(b1, b2, mode, delta, out, pair[l]);
+			if (q->stats)
+				q->stats->newton_left += 1;
+		} else {
+			q->retry[q->nretry++] = pair[l];
+			continue;
+		}
+		mkBatchStats_Count(q->stats, (mkBatchPath)path);
+		*q->failed += path == MK_PATH_FAILED;
+	}
 }
 
 /* NULL pointers, negative counts, unknown modes, bad deltas. */
@@ -376,25 +507,36 @@ static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
  * lane taking the next pair as its search ends; then each answer
  * (mkBatch_Finish). */
 static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
-	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf)
+	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf, mkBatchEllFn ef)
 {
+	mkBatchEllQueue q;
+	q.count = q.nretry = 0;
+	q.fn = ef;
+	q.stats = stats;
+	q.failed = failed;
 	mkGilbert g[MK_BATCH_LANES];
 	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0;
 	for (;;) {
 		for (int l = 0; l < MK_BATCH_LANES; ++l)
-			while (!live[l] && next < pairs->count) {
-				int k = next++;
+			while (!live[l] && (q.nretry > 0 || next < pairs->count)) {
+				int retry = q.nretry > 0, k = retry ? q.retry[--q.nretry] : next++;
 				mkBatchPath p;
-				if (mkBatch_Begin(&g[l], mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k, &p)) {
+				int b = mkBatch_Begin(&g[l], mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k,
+					&p, retry ? NULL : &q);
+				if (b > 0) {
 					live[l] = 1;
 					++nlive;
-				} else {
+				} else if (b == 0) {
 					mkBatchStats_Count(stats, p);
 					*failed += p == MK_PATH_FAILED;
 				}
 			}
-		if (nlive == 0)
-			return;
+		if (nlive == 0) { /* (every retry was taken) */
+			if (q.count == 0)
+				return;
+			mkBatchEll_Flush(&q, mode, delta, out);
+			continue;
+		}
 		const mkSupBody *bs[MK_LANES];
 		mkVec3 ys[MK_LANES];
 		mkSupAt *as[MK_LANES], s[MK_BATCH_LANES][2];
@@ -419,9 +561,11 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 			int p = live[l] ? mkGilbert_Step(&g[l], &s[l][0], &s[l][1]) : -1;
 			if (p < 0)
 				continue;
-			mkBatchPath q = mkBatch_Finish(&g[l], (mkBatchPath)p, mode, delta, out);
-			mkBatchStats_Count(stats, q);
-			*failed += q == MK_PATH_FAILED;
+			int a = mkBatch_Finish(&g[l], (mkBatchPath)p, mode, delta, out, &q);
+			if (a >= 0) {
+				mkBatchStats_Count(stats, (mkBatchPath)a);
+				*failed += a == MK_PATH_FAILED;
+			}
 			live[l] = 0;
 			--nlive;
 		}
@@ -445,6 +589,21 @@ static mkBatchLanesFn mkBatch_LanesFn(mkImpl impl)
 	return NULL;
 }
 
+/* The ellipsoids' Newton lanes for impl (as mkBatch_LanesFn; the scalar
+ * build where no vector build runs). */
+static mkBatchEllFn mkBatch_EllFn(mkImpl impl)
+{
+#if defined(MINK_HAVE_X86_KERNELS)
+	mkBatchLanesFn vf = mkBatch_LanesFn(impl);
+	if (vf == mkBatch_SupportLanesAvx512)
+		return mkBatch_EllipsoidLanesAvx512;
+	if (vf == mkBatch_SupportLanesAvx2)
+		return mkBatch_EllipsoidLanesAvx2;
+#endif
+	(void)impl;
+	return mkBatch_EllipsoidLanesScalar;
+}
+
 /* Both entries: the certificates first, with the lanes of impl (reference
  * = impl >= 0), or the one-pair query alone (reference -1). */
 static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
@@ -456,7 +615,8 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 		memset(stats, 0, sizeof *stats);
 	int failed = 0;
 	if (reference >= 0) {
-		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed, mkBatch_LanesFn((mkImpl)reference));
+		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed, mkBatch_LanesFn((mkImpl)reference),
+			mkBatch_EllFn((mkImpl)reference));
 		return failed ? MK_ERR_CONVERGENCE : MK_OK;
 	}
 	for (int k = 0; k < pairs->count; ++k) {

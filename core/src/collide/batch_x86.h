@@ -7,7 +7,8 @@
  * w_in,2, sg3 w_out,2): the same formulas as the scalar support map
  * (collide/support.h), with SLEEF's 1-ulp exp2 and log2. The including unit
  * defines MK_BX_W (4: AVX2, 8: AVX-512F) and is compiled with the matching
- * -m flags; contraction stays off. */
+ * -m flags; contraction stays off. The lane primitives (mkB_*) also serve
+ * the ellipsoids' Newton lanes (batch_newton.h). */
 #include <immintrin.h>
 #include <sleef.h>
 
@@ -38,6 +39,22 @@ static inline mkBV mkB_Load(const double *p)
 static inline mkBV mkB_Sel(mkBM k, mkBV a, mkBV b) { return (mkBV)(((mkBM)a & k) | ((mkBM)b & ~k)); }
 static inline mkBV mkB_Abs(mkBV v) { return (mkBV)((mkBM)v & ((mkBM){ 0 } + 0x7fffffffffffffffLL)); }
 static inline mkBV mkB_Splat(double x) { return (mkBV){ 0 } + x; }
+static inline void mkB_Store(double *p, mkBV v) { memcpy(p, &v, sizeof v); }
+static inline mkBM mkB_Lt(mkBV a, mkBV b) { return (mkBM)(a < b); }
+static inline mkBM mkB_Le(mkBV a, mkBV b) { return (mkBM)(a <= b); }
+static inline int mkB_Any(mkBM k)
+{
+	long long a[MK_BX_W], r = 0;
+	memcpy(a, &k, sizeof a);
+	for (int i = 0; i < MK_BX_W; ++i)
+		r |= a[i];
+	return r != 0;
+}
+#if MK_BX_W == 4
+static inline mkBV mkB_Sqrt(mkBV v) { return _mm256_sqrt_pd(v); }
+#else
+static inline mkBV mkB_Sqrt(mkBV v) { return _mm512_sqrt_pd(v); }
+#endif
 
 /* A pair norm's weights of (a, b), a, b >= 0, exponent q (iq = 1 / q):
  * *norm, *wa, *wb. */

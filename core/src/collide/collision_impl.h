@@ -27,6 +27,30 @@ typedef struct mkBatchLanesIn {
 } mkBatchLanesIn;
 void mkBatch_SupportLanesAvx2(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
 void mkBatch_SupportLanesAvx512(const mkBatchLanesIn *in, double s[3][MK_BATCH_VLANES]);
+/* The batch's Newton lanes for pairs of ellipsoids (batch_newton.h),
+ * MK_BATCH_NLANES per call: per lane the bodies' Q = P P^T (Q00, Q01, Q02, Q11,
+ * Q12, Q22), the centre line d = c2 - c1, the unit start n and the pair's
+ * scale; out: the final normal, the support points s1 (B1 at n) and s2 (B2
+ * at -n) about the centres, f at n, the residual |g|, the steps taken and
+ * done (1 converged, 0 to leave for the scalar path); the outputs of
+ * lanes past count's vector are not written. */
+#define MK_BATCH_NLANES 16
+#define MK_BATCH_NEWTON_STEPS 16
+#define MK_BATCH_NEWTON_CUTS 4
+#define MK_BATCH_NEWTON_SETTLE 1e-15
+typedef struct mkBatchEllIn {
+	double Q1[6][MK_BATCH_NLANES], Q2[6][MK_BATCH_NLANES], d[3][MK_BATCH_NLANES], n[3][MK_BATCH_NLANES],
+		scale[MK_BATCH_NLANES];
+	int count; /* lanes [0, count) are run (whole vectors: a vector's spare lanes must hold valid pairs) */
+} mkBatchEllIn;
+typedef struct mkBatchEllOut {
+	double n[3][MK_BATCH_NLANES], s1[3][MK_BATCH_NLANES], s2[3][MK_BATCH_NLANES], f[MK_BATCH_NLANES],
+		res[MK_BATCH_NLANES], steps[MK_BATCH_NLANES], done[MK_BATCH_NLANES];
+} mkBatchEllOut;
+/* The scalar reference (one lane at a time) and the vector builds. */
+void mkBatch_EllipsoidLanesScalar(const mkBatchEllIn *in, mkBatchEllOut *out);
+void mkBatch_EllipsoidLanesAvx2(const mkBatchEllIn *in, mkBatchEllOut *out);
+void mkBatch_EllipsoidLanesAvx512(const mkBatchEllIn *in, mkBatchEllOut *out);
 /* mkCollide3_Batch with the lanes of impl (MK_IMPL_SCALAR: the scalar
  * support map; MK_IMPL_AVX2 / MK_IMPL_AVX512 where available, else
  * MK_ERR_UNSUPPORTED; MK_IMPL_AUTO: the widest available). */
