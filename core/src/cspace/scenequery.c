@@ -15,16 +15,19 @@
 
 #define MK_SQ_ROUND 1e-12   /* rounding allowance of a pair's bound, times its size */
 #define MK_SQ_LEAF 2        /* obstacles per leaf at most */
-#define MK_SQ_STACK 128     /* traversal stack (depth ~ 2 log2 n) */
+#define MK_SQ_STACK 128     /* traversal stack (at most the depth + 1, ~ log2 n) */
 #define MK_SQ_CHUNK 32      /* poses per pool task */
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 
 typedef struct mkSqBox { double lo[3], hi[3]; } mkSqBox;
 
+/* A node of the hierarchy (32 bytes: two to a cache line, the children of
+ * a node side by side at an even index), its box rounded outwards to
+ * floats. */
 typedef struct mkSqNode {
-	mkSqBox box;
-	int left, right;   /* children, or -1 for a leaf */
-	int first, count;  /* leaf: obstacles order[first .. first + count) */
+	float lo[3], hi[3];
+	int child;   /* inner node: its children child, child + 1; leaf: its first position */
+	int count;   /* leaf: the obstacles at positions child .. child + count; inner node: 0 */
 } mkSqNode;
 
 struct mkSceneQuery {
@@ -35,8 +38,10 @@ struct mkSceneQuery {
 	mkBody3 *obs;      /* [i * 2 + bound]: inner, outer models */
 	mkBody3 *part;     /* [j * 2 + bound], in the robot's frame */
 	mkSqBox *obox;     /* outer models' boxes */
-	int *order;
-	mkSqNode *node;
+	mkSqBox *sbox;     /* the same at their positions in the hierarchy: sbox[k] = obox[order[k]] */
+	double *reach;     /* part j's outer model lies within reach[j] of its centre */
+	int *order;        /* the obstacle at each position of the hierarchy */
+	mkSqNode *node;    /* root at 1 */
 	int nnode;
 	struct mkSqKey *keys;   /* building only */
 };
@@ -105,7 +110,7 @@ static double mkSq_BoxDistance(const mkSqBox *a, const mkSqBox *b)
 {
 	double d2 = 0.0;
 	for (int i = 0; i < 3; ++i) {
-		double g = fmax(a->lo[i] - b->hi[i], b->lo[i] - a->hi[i]);
+		double u = a->lo[i] - b->hi[i], v = b->lo[i] - a->hi[i], g = u > v ? u : v;
 		if (g > 0.0) d2 += g * g;
 	}
 	return sqrt(d2);
@@ -122,37 +127,61 @@ static int mkSq_CompareKey(const void *pa, const void *pb)
 	return a->idx - b->idx;
 }
 
-/* Node over order[first .. first + count): its box, then a median split on
- * the longest axis of the box. Returns the node's index. */
-static int mkSq_Build(mkSceneQuery *q, int first, int count)
+/* x rounded down and up to a float. */
+static float mkSq_Down(double x)
 {
-	int id = q->nnode++;
-	mkSqNode *n = &q->node[id];
-	for (int i = 0; i < 3; ++i) { n->box.lo[i] = INFINITY; n->box.hi[i] = -INFINITY; }
+	float f = (float)x;
+	return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+static float mkSq_Up(double x)
+{
+	float f = (float)x;
+	return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+/* Node id over order[first .. first + count): its box, then a median split
+ * on the longest axis of the box into two new nodes side by side. */
+static void mkSq_Build(mkSceneQuery *q, int id, int first, int count)
+{
+	mkSqBox b;
+	for (int i = 0; i < 3; ++i) { b.lo[i] = INFINITY; b.hi[i] = -INFINITY; }
 	for (int k = first; k < first + count; ++k)
 		for (int i = 0; i < 3; ++i) {
-			n->box.lo[i] = fmin(n->box.lo[i], q->obox[q->order[k]].lo[i]);
-			n->box.hi[i] = fmax(n->box.hi[i], q->obox[q->order[k]].hi[i]);
+			b.lo[i] = fmin(b.lo[i], q->obox[q->order[k]].lo[i]);
+			b.hi[i] = fmax(b.hi[i], q->obox[q->order[k]].hi[i]);
 		}
-	n->first = first;
+	mkSqNode *n = &q->node[id];
+	for (int i = 0; i < 3; ++i) { n->lo[i] = mkSq_Down(b.lo[i]); n->hi[i] = mkSq_Up(b.hi[i]); }
+	n->child = first;
 	n->count = count;
-	n->left = n->right = -1;
-	if (count <= MK_SQ_LEAF) return id;
+	if (count <= MK_SQ_LEAF) return;
 	int axis = 0;
 	for (int i = 1; i < 3; ++i)
-		if (n->box.hi[i] - n->box.lo[i] > n->box.hi[axis] - n->box.lo[axis]) axis = i;
+		if (b.hi[i] - b.lo[i] > b.hi[axis] - b.lo[axis]) axis = i;
 	for (int k = 0; k < count; ++k) {
 		int i = q->order[first + k];
 		q->keys[k] = (mkSqKey){q->obox[i].lo[axis] + q->obox[i].hi[axis], i};
 	}
 	qsort(q->keys, (size_t)count, sizeof *q->keys, mkSq_CompareKey);
 	for (int k = 0; k < count; ++k) q->order[first + k] = q->keys[k].idx;
-	int half = count / 2;
-	int l = mkSq_Build(q, first, half);
-	int r = mkSq_Build(q, first + half, count - half);
-	q->node[id].left = l;
-	q->node[id].right = r;
-	return id;
+	int c = q->nnode, half = count / 2;
+	q->nnode += 2;
+	n->child = c;
+	n->count = 0;
+	mkSq_Build(q, c, first, half);
+	mkSq_Build(q, c + 1, first + half, count - half);
+}
+
+/* An upper bound of the distance of part j's outer model from its centre
+ * at any rotation: the half diagonal of its exact box (over the scene's
+ * dimensions: a 2D body's distances are planar), with a rounding allowance. */
+static double mkSq_Reach(const mkSceneQuery *q, int j)
+{
+	mkSqBox x = mkSq_BodyBox(q->part[2 * j + 1]);
+	double h2 = 0.0;
+	for (int i = 0; i < q->dim; ++i) h2 += 0.25 * (x.hi[i] - x.lo[i]) * (x.hi[i] - x.lo[i]);
+	return sqrt(h2) * (1.0 + 1e-12);
 }
 
 /* ---- create ---- */
@@ -182,10 +211,12 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->obs = malloc(2 * nb * sizeof *q->obs);
 	q->part = malloc(2 * (size_t)q->parts * sizeof *q->part);
 	q->obox = malloc(nb * sizeof *q->obox);
+	q->sbox = malloc(nb * sizeof *q->sbox);
 	q->order = malloc(nb * sizeof *q->order);
-	q->node = malloc(2 * nb * sizeof *q->node);
+	q->node = aligned_alloc(64, (2 * nb + 2) * sizeof *q->node);
+	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->order || !q->node) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	if (!q->obs || !q->part || !q->obox || !q->sbox || !q->order || !q->node || !q->reach) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
 		for (int i = 0; i < q->nob && r == MK_OK; ++i)
@@ -197,13 +228,16 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	}
 	if (r == MK_OK && scene->part_count == 0) /* a hand-built scene's robot: its at= unused */
 		for (int k = 0; k < 2; ++k) q->part[k].t = mkVec3_Make(0.0, 0.0, 0.0);
+	for (int j = 0; j < q->parts && r == MK_OK; ++j) q->reach[j] = mkSq_Reach(q, j);
 	if (r == MK_OK && q->nob > 0 && !(q->keys = malloc(nb * sizeof *q->keys))) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	if (r == MK_OK && q->nob > 0) {
 		for (int i = 0; i < q->nob; ++i) {
 			q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
 			q->order[i] = i;
 		}
-		mkSq_Build(q, 0, q->nob);
+		q->nnode = 2;
+		mkSq_Build(q, 1, 0, q->nob);
+		for (int k = 0; k < q->nob; ++k) q->sbox[k] = q->obox[q->order[k]];
 		free(q->keys);
 		q->keys = NULL;
 	}
@@ -218,7 +252,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
-	free(q->obs); free(q->part); free(q->obox); free(q->order); free(q->node); free(q->keys);
+	free(q->obs); free(q->part); free(q->obox); free(q->sbox); free(q->order); free(q->node); free(q->keys); free(q->reach);
 	free(q);
 }
 
@@ -286,7 +320,8 @@ static int mkSq_Overlap(mkBody3 a, mkBody3 b, const mkCollision3 *c, double tol)
 }
 
 /* The narrow phase of one pair (the one-pair query): the pair's status and
- * value as the header defines them. */
+ * value as the header defines them (free: a lower bound of the distance;
+ * colliding: an upper bound of the signed distance, <= 0). */
 static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBody3 outer, int smooth, double *value)
 {
 	mkCollision3 c;
@@ -297,104 +332,194 @@ static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBod
 	if (lb > 0.0) return MK_POSE_FREE;
 	if ((!smooth || q->scene->obstacles[i].kind != MK_SCENE_SMOOTH) && mkCollide3_Normal(q->obs[2 * i], inner, &c) != MK_OK)
 		return MK_POSE_UNCERTAIN;
-	return mkSq_Overlap(q->obs[2 * i], inner, &c, tol) ? MK_POSE_COLLIDING : MK_POSE_UNCERTAIN;
+	if (!mkSq_Overlap(q->obs[2 * i], inner, &c, tol)) return MK_POSE_UNCERTAIN;
+	*value = c.certified == 1 && c.bound + c.gap < 0.0 ? c.bound + c.gap : 0.0;
+	return MK_POSE_COLLIDING;
+}
+
+/* A robot part at the pose: its models, the sphere about its centre that
+ * holds its outer model (radius reach, the same at every rotation) and its
+ * exact box, computed when the sphere alone does not settle a test. */
+typedef struct mkSqPart {
+	mkBody3 outer, inner;
+	double c[3], reach;
+	mkSqBox box;
+	int has_box, smooth, j;
+} mkSqPart;
+
+/* The squared distance from the part's centre to a box. */
+static double mkSq_CentreDistance2(const mkSqPart *p, const mkSqBox *x)
+{
+	double d2 = 0.0;
+	for (int i = 0; i < 3; ++i) {
+		double g = p->c[i] < x->lo[i] ? x->lo[i] - p->c[i] : p->c[i] > x->hi[i] ? p->c[i] - x->hi[i] : 0.0;
+		d2 += g * g;
+	}
+	return d2;
+}
+
+static double mkSq_NodeDistance2(const mkSqPart *p, const mkSqNode *x)
+{
+	double d2 = 0.0;
+	for (int i = 0; i < 3; ++i) {
+		double lo = x->lo[i], hi = x->hi[i], g = p->c[i] < lo ? lo - p->c[i] : p->c[i] > hi ? p->c[i] - hi : 0.0;
+		d2 += g * g;
+	}
+	return d2;
+}
+
+/* The sphere's test: boxes whose squared distance from the centre is at
+ * least this are at least best from the part (-1 when best <= 0: all). */
+static double mkSq_Limit2(const mkSqPart *p, double best)
+{
+	double lim = best + p->reach;
+	return best > 0.0 ? lim * lim : -1.0;
+}
+
+/* 1 when the part is certainly at least best away from everything in box
+ * x: by its sphere, then by its exact box (computed when first needed). */
+static int mkSq_Far(mkSqPart *p, const mkSqBox *x, double best)
+{
+	if (mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best)) return 1;
+	if (!p->has_box) { p->box = mkSq_BodyBox(p->outer); p->has_box = 1; }
+	return mkSq_BoxDistance(&p->box, x) >= best;
 }
 
 /* A part's walk of the hierarchy, nearest child first: the stack of nodes
- * and the leaf being read (order[k .. end)). */
+ * with their squared distances from the part's centre, and the leaf being
+ * read (positions k .. end). */
 typedef struct mkSqWalk {
-	int stack[MK_SQ_STACK], top, k, end;
+	int node[MK_SQ_STACK], top, k, end;
+	double d2[MK_SQ_STACK];
 } mkSqWalk;
 
-/* The walk's next candidates (at most max): obstacles whose box is nearer
- * than best, in the walk's order (which does not depend on best: best only
+/* The walk's next candidates (at most max): the positions of obstacles not
+ * certainly at least best away (mkSq_Far), in the walk's order (the child
+ * nearer the part's centre first; it does not depend on best: best only
  * prunes). Returns their number, 0 when the walk is over. */
-static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, const mkSqBox *pb, double best, int *idx, int max)
+static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double best, int *pos, int max)
 {
 	int n = 0;
+	double lim2 = mkSq_Limit2(p, best);
 	while (n < max) {
 		if (w->k < w->end) {
-			int i = q->order[w->k++];
-			if (mkSq_BoxDistance(pb, &q->obox[i]) < best) idx[n++] = i;
+			int k = w->k++;
+			if (!mkSq_Far(p, &q->sbox[k], best)) pos[n++] = k;
 			continue;
 		}
 		if (w->top == 0) break;
-		const mkSqNode *nd = &q->node[w->stack[--w->top]];
-		if (mkSq_BoxDistance(pb, &nd->box) >= best) continue;
-		if (nd->left >= 0) { /* the nearer child is walked first: pushed last */
-			double dl = mkSq_BoxDistance(pb, &q->node[nd->left].box), dr = mkSq_BoxDistance(pb, &q->node[nd->right].box);
-			w->stack[w->top++] = dl <= dr ? nd->right : nd->left;
-			w->stack[w->top++] = dl <= dr ? nd->left : nd->right;
+		--w->top;
+		if (w->d2[w->top] >= lim2) continue;
+		const mkSqNode *nd = &q->node[w->node[w->top]];
+		if (nd->count > 0) {
+			w->k = nd->child;
+			w->end = nd->child + nd->count;
 			continue;
 		}
-		w->k = nd->first;
-		w->end = nd->first + nd->count;
+		double dl = mkSq_NodeDistance2(p, &q->node[nd->child]), dr = mkSq_NodeDistance2(p, &q->node[nd->child + 1]);
+		int near = dl <= dr ? nd->child : nd->child + 1;
+		double dn = fmin(dl, dr), df = dl <= dr ? dr : dl;
+		if (df < lim2) { w->node[w->top] = 2 * nd->child + 1 - near; w->d2[w->top++] = df; }
+		if (dn < lim2) { w->node[w->top] = near; w->d2[w->top++] = dn; }
 	}
 	return n;
 }
 
-/* The batch's screen of n candidate pairs (outer models) against the
- * clearance best: far[m] = 1 when the pair's distance is certified at least
- * best (a separating direction, MK_PATH_SEPARATING), so that it cannot lower
- * the pose's clearance; 0 when the one-pair narrow phase must decide. */
-static void mkSq_Screen(const mkSceneQuery *q, const int *idx, int n, const mkBody3 *outer, double best,
-	unsigned char *far)
+/* A pair whose outer models the batch certified to overlap: colliding when
+ * the inner models overlap for certain (the same bodies for two smooth
+ * ones; else the batch's status on the inner models), *value then minus the
+ * certified depth. 0 when the one-pair query must decide. */
+static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double upper, double *value)
 {
-	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH];
-	mkContact status[MK_SQ_BATCH];
-	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
-	for (int m = 0; m < n; ++m) { i1[m] = 2 * idx[m] + 1; i2[m] = 0; }
-	mkBatchPairs3 pairs = {n, q->obs, outer, i1, i2};
+	if (p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH) { *value = upper; return 1; }
+	int i1 = 2 * i, i2 = 0;
+	mkContact st;
+	unsigned char path;
+	double up;
+	mkBatchPairs3 pairs = {1, q->obs, &p->inner, &i1, &i2};
 	mkBatchOut3 out;
 	memset(&out, 0, sizeof out);
-	out.status = status;
-	out.clear = clear;
-	out.path = path;
-	mkResult r = mkCollide3_Batch(&pairs, MK_BATCH_CLEARANCE, fmax(best, 0.0), &out, NULL);
-	for (int m = 0; m < n; ++m)
-		far[m] = (unsigned char)((r == MK_OK || r == MK_ERR_CONVERGENCE) && path[m] == MK_PATH_SEPARATING && clear[m]);
+	out.status = &st;
+	out.upper = &up;
+	out.path = &path;
+	if (mkCollide3_Batch(&pairs, MK_BATCH_STATUS, 0.0, &out, NULL) != MK_OK || path != MK_PATH_OVERLAP_POINT) return 0;
+	*value = up;
+	return 1;
 }
 
-/* One part against the scene: the pairs in the walk's order, each screened
- * by the batch (MK_SQ_BATCH at a time, against the clearance found so far)
- * and, unless certified no nearer than it, answered by mkSq_Pair. The
- * answers are those of mkSq_Pair on every pair in the walk's order: a pair
- * the screen set aside cannot change them. Returns 1 when colliding. */
+/* The narrow phase of the candidates at positions pos[0 .. n) in the walk's order, against
+ * the clearance best: the batch first (clearance mode with delta = best, or
+ * status mode while no clearance is known), then for each pair still not
+ * certainly at least best away: set aside when the batch certified it at
+ * least best away (it cannot lower the clearance), colliding when the batch
+ * certified an overlap (mkSq_Contact), else the one-pair query (mkSq_Pair).
+ * Returns 1 when colliding. */
+static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, mkPoseAnswer *out)
+{
+	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], known = isfinite(*best);
+	mkContact status[MK_SQ_BATCH];
+	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
+	double upper[MK_SQ_BATCH];
+	for (int m = 0; m < n; ++m) { i1[m] = 2 * q->order[pos[m]] + 1; i2[m] = 0; }
+	mkBatchPairs3 pairs = {n, q->obs, &p->outer, i1, i2};
+	mkBatchOut3 bo;
+	memset(&bo, 0, sizeof bo);
+	bo.status = status;
+	bo.clear = clear;
+	bo.path = path;
+	bo.upper = upper;
+	mkResult r = mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS, known ? fmax(*best, 0.0) : 0.0,
+		&bo, NULL);
+	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
+	for (int m = 0; m < n; ++m) {
+		int i = q->order[pos[m]];
+		if (mkSq_Far(p, &q->sbox[pos[m]], *best)) continue;
+		++out->pairs;
+		if (ok && known && path[m] == MK_PATH_SEPARATING && clear[m]) continue;
+		double v;
+		mkPoseStatus s;
+		if (ok && path[m] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[m], &v)) s = MK_POSE_COLLIDING;
+		else s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
+		if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
+		if (v < *best || s == MK_POSE_COLLIDING) {
+			*best = v;
+			out->obstacle = i;
+			out->part = p->j;
+		}
+		if (s == MK_POSE_COLLIDING) {
+			out->status = MK_POSE_COLLIDING;
+			out->clearance = v;
+			return 1;
+		}
+	}
+	return 0;
+}
+
+/* One part against the scene: the walk's candidates, MK_SQ_BATCH at a time
+ * (one while no clearance is known, so that the first pair sets it), each
+ * group through mkSq_Narrow. Returns 1 when colliding. */
 static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, mkPoseAnswer *out)
 {
-	mkBody3 outer = mkSq_Place(q->part[2 * j + 1], R, c), inner = mkSq_Place(q->part[2 * j], R, c);
-	int smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
-	mkSqBox pb = mkSq_BodyBox(outer);
+	mkSqPart p;
+	p.smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
+	p.outer = mkSq_Place(q->part[2 * j + 1], R, c);
+	p.inner = p.smooth ? p.outer : mkSq_Place(q->part[2 * j], R, c);   /* a smooth part's models are the body */
+	p.c[0] = p.outer.t.x;
+	p.c[1] = p.outer.t.y;
+	p.c[2] = p.outer.t.z;
+	p.reach = q->reach[j];
+	p.has_box = 0;
+	p.j = j;
 	mkSqWalk w;
-	w.top = w.k = w.end = 0;
-	w.stack[w.top++] = 0;
-	int idx[MK_SQ_BATCH];
-	unsigned char far[MK_SQ_BATCH];
+	w.k = w.end = 0;
+	w.top = 1;
+	w.node[0] = 1;
+	w.d2[0] = mkSq_NodeDistance2(&p, &q->node[1]);
+	int pos[MK_SQ_BATCH];
 	for (;;) {
-		/* no clearance yet (max_clearance infinite): the first pair alone */
-		int n = mkSq_Collect(q, &w, &pb, *best, idx, isfinite(*best) ? MK_SQ_BATCH : 1);
+		int n = mkSq_Collect(q, &w, &p, *best, pos, isfinite(*best) ? MK_SQ_BATCH : 1);
 		if (n == 0) return 0;
-		if (isfinite(*best)) mkSq_Screen(q, idx, n, &outer, *best, far);
-		else memset(far, 0, sizeof far);
-		for (int m = 0; m < n; ++m) {
-			int i = idx[m];
-			if (mkSq_BoxDistance(&pb, &q->obox[i]) >= *best) continue;
-			++out->pairs;
-			if (far[m]) continue;
-			double v;
-			mkPoseStatus s = mkSq_Pair(q, i, inner, outer, smooth, &v);
-			if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
-			if (v < *best || s == MK_POSE_COLLIDING) {
-				*best = v;
-				out->obstacle = i;
-				out->part = j;
-			}
-			if (s == MK_POSE_COLLIDING) {
-				out->status = MK_POSE_COLLIDING;
-				out->clearance = v;
-				return 1;
-			}
-		}
+		if (mkSq_Narrow(q, &p, pos, n, best, out)) return 1;
 	}
 }
 
