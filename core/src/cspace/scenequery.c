@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "base/message.h"
+#include "cspace/scenepair.h"
 #include "cspace/work.h"
 #include "mink/batch.h"
 #include "mink/collision.h"
@@ -40,6 +41,7 @@ struct mkSceneQuery {
 	mkSqBox *obox;     /* outer models' boxes */
 	mkSqBox *sbox;     /* the same at their positions in the hierarchy: sbox[k] = obox[order[k]] */
 	double *reach;     /* part j's outer model lies within reach[j] of its centre */
+	mkSqQuick *oquick, *pquick;   /* the outer models' data for the quick certificates */
 	int *order;        /* the obstacle at each position of the hierarchy */
 	mkSqNode *node;    /* root at 1 */
 	int nnode;
@@ -215,8 +217,10 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->order = malloc(nb * sizeof *q->order);
 	q->node = aligned_alloc(64, (2 * nb + 2) * sizeof *q->node);
 	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
+	q->oquick = malloc(nb * sizeof *q->oquick);
+	q->pquick = malloc((size_t)q->parts * sizeof *q->pquick);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->sbox || !q->order || !q->node || !q->reach) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	if (!q->obs || !q->part || !q->obox || !q->sbox || !q->order || !q->node || !q->reach || !q->oquick || !q->pquick) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
 		for (int i = 0; i < q->nob && r == MK_OK; ++i)
@@ -228,7 +232,11 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	}
 	if (r == MK_OK && scene->part_count == 0) /* a hand-built scene's robot: its at= unused */
 		for (int k = 0; k < 2; ++k) q->part[k].t = mkVec3_Make(0.0, 0.0, 0.0);
-	for (int j = 0; j < q->parts && r == MK_OK; ++j) q->reach[j] = mkSq_Reach(q, j);
+	for (int j = 0; j < q->parts && r == MK_OK; ++j) {
+		q->reach[j] = mkSq_Reach(q, j);
+		q->pquick[j] = mkSqQuick_Make(q->part[2 * j + 1]);
+	}
+	for (int i = 0; i < q->nob && r == MK_OK; ++i) q->oquick[i] = mkSqQuick_Make(q->obs[2 * i + 1]);
 	if (r == MK_OK && q->nob > 0 && !(q->keys = malloc(nb * sizeof *q->keys))) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	if (r == MK_OK && q->nob > 0) {
 		for (int i = 0; i < q->nob; ++i) {
@@ -253,6 +261,7 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
 	free(q->obs); free(q->part); free(q->obox); free(q->sbox); free(q->order); free(q->node); free(q->keys); free(q->reach);
+	free(q->oquick); free(q->pquick);
 	free(q);
 }
 
@@ -276,6 +285,17 @@ static int mkSq_Pose(const mkSceneQuery *q, const double *p, mkMat3 *R, mkVec3 *
 	*R = mkMat3_FromQuat(p[3], p[4], p[5], p[6]);
 	*c = mkVec3_Make(p[0], p[1], p[2]);
 	return mkMat3_IsFinite(*R);
+}
+
+/* What mkSq_Pose accepts, without the rotation: finite values of
+ * magnitude at most 1e150 and, in 3D, a quaternion whose squared norm is
+ * positive. */
+static int mkSq_PoseOk(const mkSceneQuery *q, const double *p)
+{
+	int n = mkSceneQuery_PoseSize(q);
+	for (int k = 0; k < n; ++k)
+		if (!isfinite(p[k]) || fabs(p[k]) > 1e150) return 0;
+	return q->dim == 2 || p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6] > 0.0;
 }
 
 static mkBody3 mkSq_Place(mkBody3 b, mkMat3 R, mkVec3 c)
@@ -337,40 +357,70 @@ static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBod
 	return MK_POSE_COLLIDING;
 }
 
-/* A robot part at the pose: its models, the sphere about its centre that
- * holds its outer model (radius reach, the same at every rotation) and its
- * exact box, computed when the sphere alone does not settle a test. */
+/* A robot part at the pose: the sphere about its centre that holds its
+ * outer model (radius reach, the same at every rotation); its models and
+ * exact box are computed only when the sphere alone does not settle a test
+ * (mkSq_Placed, mkSq_Far). */
 typedef struct mkSqPart {
-	mkBody3 outer, inner;
+	const mkBody3 *rest;   /* its inner and outer models in the robot's frame */
+	mkMat3 R;              /* the pose */
+	mkVec3 at;
 	double c[3], reach;
-	mkSqBox box;
-	int has_box, smooth, j;
+	mkBody3 outer, inner;  /* once placed */
+	mkSqBox box;           /* once has_box */
+	int placed, has_box, smooth, j;
 } mkSqPart;
 
-/* The squared distance from the part's centre to a box. */
-static double mkSq_CentreDistance2(const mkSqPart *p, const mkSqBox *x)
+/* The part's models at the pose (computed once). */
+static void mkSq_Placed(mkSqPart *p)
 {
-	double d2 = 0.0;
-	for (int i = 0; i < 3; ++i) {
-		double g = p->c[i] < x->lo[i] ? x->lo[i] - p->c[i] : p->c[i] > x->hi[i] ? p->c[i] - x->hi[i] : 0.0;
-		d2 += g * g;
-	}
-	return d2;
+	if (p->placed) return;
+	p->outer = mkSq_Place(p->rest[1], p->R, p->at);
+	p->inner = p->smooth ? p->outer : mkSq_Place(p->rest[0], p->R, p->at);   /* a smooth part's models are the body */
+	p->placed = 1;
 }
 
-static double mkSq_NodeDistance2(const mkSqPart *p, const mkSqNode *x)
+/* The exact box of the part's outer model (its support values at +-e_i,
+ * the rows of M, by the dual norms), rounded outwards. */
+static mkSqBox mkSq_PartBox(const mkBody3 *b)
 {
-	double d2 = 0.0;
+	mkSqBox x;
+	double c[3] = {b->t.x, b->t.y, b->t.z};
 	for (int i = 0; i < 3; ++i) {
-		double lo = x->lo[i], hi = x->hi[i], g = p->c[i] < lo ? lo - p->c[i] : p->c[i] > hi ? p->c[i] - hi : 0.0;
-		d2 += g * g;
+		mkVec3 row = {b->M.m[i][0], b->M.m[i][1], b->M.m[i][2]};
+		double h = mkSq_ShapeNorm(b->shape, row, 1) * (1.0 + 1e-13);
+		x.lo[i] = c[i] - h;
+		x.hi[i] = c[i] + h;
 	}
-	return d2;
+	return x;
+}
+
+/* The square of the gap between c and [lo, hi] (branch-free: one of the
+ * two terms is 0). */
+static inline double mkSq_Gap2(double c, double lo, double hi)
+{
+	double u = lo - c, v = c - hi;
+	u = u > 0.0 ? u : 0.0;
+	v = v > 0.0 ? v : 0.0;
+	return u * u + v * v;
+}
+
+/* The squared distance from the part's centre to a box. */
+static inline double mkSq_CentreDistance2(const mkSqPart *p, const mkSqBox *x)
+{
+	return mkSq_Gap2(p->c[0], x->lo[0], x->hi[0]) + mkSq_Gap2(p->c[1], x->lo[1], x->hi[1])
+		+ mkSq_Gap2(p->c[2], x->lo[2], x->hi[2]);
+}
+
+static inline double mkSq_NodeDistance2(const mkSqPart *p, const mkSqNode *x)
+{
+	return mkSq_Gap2(p->c[0], x->lo[0], x->hi[0]) + mkSq_Gap2(p->c[1], x->lo[1], x->hi[1])
+		+ mkSq_Gap2(p->c[2], x->lo[2], x->hi[2]);
 }
 
 /* The sphere's test: boxes whose squared distance from the centre is at
  * least this are at least best from the part (-1 when best <= 0: all). */
-static double mkSq_Limit2(const mkSqPart *p, double best)
+static inline double mkSq_Limit2(const mkSqPart *p, double best)
 {
 	double lim = best + p->reach;
 	return best > 0.0 ? lim * lim : -1.0;
@@ -381,7 +431,11 @@ static double mkSq_Limit2(const mkSqPart *p, double best)
 static int mkSq_Far(mkSqPart *p, const mkSqBox *x, double best)
 {
 	if (mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best)) return 1;
-	if (!p->has_box) { p->box = mkSq_BodyBox(p->outer); p->has_box = 1; }
+	if (!p->has_box) {
+		mkSq_Placed(p);
+		p->box = mkSq_PartBox(&p->outer);
+		p->has_box = 1;
+	}
 	return mkSq_BoxDistance(&p->box, x) >= best;
 }
 
@@ -447,39 +501,47 @@ static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double 
 	return 1;
 }
 
-/* The narrow phase of the candidates at positions pos[0 .. n) in the walk's order, against
- * the clearance best: the batch first (clearance mode with delta = best, or
- * status mode while no clearance is known), then for each pair still not
- * certainly at least best away: set aside when the batch certified it at
- * least best away (it cannot lower the clearance), colliding when the batch
- * certified an overlap (mkSq_Contact), else the one-pair query (mkSq_Pair).
- * Returns 1 when colliding. */
+/* The narrow phase of the candidates at positions pos[0 .. n) in the
+ * walk's order, against the clearance best: the quick certificates
+ * (mkSqQuick_Pair) first, the batch on the pairs they leave (clearance mode
+ * with delta = best, or status mode while no clearance is known), then for
+ * each pair still not certainly at least best away: set aside when
+ * certified at least best away (it cannot lower the clearance), colliding
+ * when an overlap is certified (mkSq_Contact for the batch's), else the
+ * one-pair query (mkSq_Pair). Returns 1 when colliding. */
 static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, mkPoseAnswer *out)
 {
-	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], known = isfinite(*best);
+	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], quick[MK_SQ_BATCH], slot[MK_SQ_BATCH], nb = 0, known = isfinite(*best);
 	mkContact status[MK_SQ_BATCH];
 	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
-	double upper[MK_SQ_BATCH];
-	for (int m = 0; m < n; ++m) { i1[m] = 2 * q->order[pos[m]] + 1; i2[m] = 0; }
-	mkBatchPairs3 pairs = {n, q->obs, &p->outer, i1, i2};
+	double upper[MK_SQ_BATCH], depth[MK_SQ_BATCH];
+	mkSq_Placed(p);
+	for (int m = 0; m < n; ++m) {
+		int i = q->order[pos[m]];
+		quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
+			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, *best, &depth[m]);
+		slot[m] = quick[m] ? -1 : nb;
+		if (!quick[m]) { i1[nb] = 2 * i + 1; i2[nb++] = 0; }
+	}
+	mkBatchPairs3 pairs = {nb, q->obs, &p->outer, i1, i2};
 	mkBatchOut3 bo;
 	memset(&bo, 0, sizeof bo);
 	bo.status = status;
 	bo.clear = clear;
 	bo.path = path;
 	bo.upper = upper;
-	mkResult r = mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS, known ? fmax(*best, 0.0) : 0.0,
-		&bo, NULL);
+	mkResult r = nb == 0 ? MK_OK : mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS,
+		known ? fmax(*best, 0.0) : 0.0, &bo, NULL);
 	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
 	for (int m = 0; m < n; ++m) {
-		int i = q->order[pos[m]];
+		int i = q->order[pos[m]], b = slot[m];
 		if (mkSq_Far(p, &q->sbox[pos[m]], *best)) continue;
 		++out->pairs;
-		if (ok && known && path[m] == MK_PATH_SEPARATING && clear[m]) continue;
-		double v;
-		mkPoseStatus s;
-		if (ok && path[m] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[m], &v)) s = MK_POSE_COLLIDING;
-		else s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
+		if (quick[m] == 1 || (b >= 0 && ok && known && path[b] == MK_PATH_SEPARATING && clear[b])) continue;
+		double v = -depth[m];
+		mkPoseStatus s = MK_POSE_COLLIDING;
+		if (quick[m] != 2 && !(b >= 0 && ok && path[b] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[b], &v)))
+			s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
 		if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
 		if (v < *best || s == MK_POSE_COLLIDING) {
 			*best = v;
@@ -502,11 +564,14 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, doubl
 {
 	mkSqPart p;
 	p.smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
-	p.outer = mkSq_Place(q->part[2 * j + 1], R, c);
-	p.inner = p.smooth ? p.outer : mkSq_Place(q->part[2 * j], R, c);   /* a smooth part's models are the body */
-	p.c[0] = p.outer.t.x;
-	p.c[1] = p.outer.t.y;
-	p.c[2] = p.outer.t.z;
+	p.rest = &q->part[2 * j];
+	p.R = R;
+	p.at = c;
+	mkVec3 pc = mkVec3_Add(c, mkMat3_MulVec(R, p.rest[1].t));   /* as mkSq_Place: the outer model's centre */
+	p.c[0] = pc.x;
+	p.c[1] = pc.y;
+	p.c[2] = pc.z;
+	p.placed = 0;
 	p.reach = q->reach[j];
 	p.has_box = 0;
 	p.j = j;
@@ -563,10 +628,8 @@ mkResult mkSceneQuery_Run(const mkSceneQuery *q, const double *poses, long n, mk
 {
 	if (!q || (n > 0 && (!poses || !out)) || n < 0) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no query, poses or answers");
 	int ps = mkSceneQuery_PoseSize(q);
-	mkMat3 R;
-	mkVec3 c;
 	for (long k = 0; k < n; ++k)
-		if (!mkSq_Pose(q, poses + k * ps, &R, &c))
+		if (!mkSq_PoseOk(q, poses + k * ps))
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "pose %ld is out of range: its %d values must be finite numbers of "
 				"magnitude at most 1e150%s", k, ps, q->dim == 3 ? " and its quaternion nonzero" : "");
 	mkSqJob J = {q, poses, n, out};
