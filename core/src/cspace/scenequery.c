@@ -472,7 +472,7 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 		}
 		double dl = mkSq_NodeDistance2(p, &q->node[nd->child]), dr = mkSq_NodeDistance2(p, &q->node[nd->child + 1]);
 		int near = dl <= dr ? nd->child : nd->child + 1;
-		double dn = fmin(dl, dr), df = dl <= dr ? dr : dl;
+		double dn = dl <= dr ? dl : dr, df = dl <= dr ? dr : dl;
 		if (df < lim2) { w->node[w->top] = 2 * nd->child + 1 - near; w->d2[w->top++] = df; }
 		if (dn < lim2) { w->node[w->top] = near; w->d2[w->top++] = dn; }
 	}
