@@ -19,6 +19,7 @@
 #define MK_SQ_STACK 128     /* traversal stack (at most the depth + 1, ~ log2 n) */
 #define MK_SQ_CHUNK 32      /* poses per pool task */
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
+#define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
 
 typedef struct mkSqBox { double lo[3], hi[3]; } mkSqBox;
 
@@ -106,16 +107,6 @@ static mkSqBox mkSq_BodyBox(mkBody3 b)
 		x.hi[i] = c + h;
 	}
 	return x;
-}
-
-static double mkSq_BoxDistance(const mkSqBox *a, const mkSqBox *b)
-{
-	double d2 = 0.0;
-	for (int i = 0; i < 3; ++i) {
-		double u = a->lo[i] - b->hi[i], v = b->lo[i] - a->hi[i], g = u > v ? u : v;
-		if (g > 0.0) d2 += g * g;
-	}
-	return sqrt(d2);
 }
 
 /* ---- the hierarchy ---- */
@@ -357,18 +348,19 @@ static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBod
 	return MK_POSE_COLLIDING;
 }
 
-/* A robot part at the pose: the sphere about its centre that holds its
- * outer model (radius reach, the same at every rotation); its models and
- * exact box are computed only when the sphere alone does not settle a test
- * (mkSq_Placed, mkSq_Far). */
+/* A robot part at the pose, tested against boxes by its centre c and,
+ * first, the sphere about c that holds its outer model (radius reach, the
+ * same at every rotation; h = 0), then its exact box (half-widths h,
+ * reach = 0), computed once the sphere has not settled a leaf's obstacle
+ * or has opened MK_SQ_SPHERE_NODES inner nodes (mkSq_BoxMode). Its models
+ * are placed when first needed (mkSq_Placed). */
 typedef struct mkSqPart {
 	const mkBody3 *rest;   /* its inner and outer models in the robot's frame */
 	mkMat3 R;              /* the pose */
 	mkVec3 at;
-	double c[3], reach;
+	double c[3], reach, h[3];
 	mkBody3 outer, inner;  /* once placed */
-	mkSqBox box;           /* once has_box */
-	int placed, has_box, smooth, j;
+	int placed, has_box, opened, smooth, j;
 } mkSqPart;
 
 /* The part's models at the pose (computed once). */
@@ -378,21 +370,6 @@ static void mkSq_Placed(mkSqPart *p)
 	p->outer = mkSq_Place(p->rest[1], p->R, p->at);
 	p->inner = p->smooth ? p->outer : mkSq_Place(p->rest[0], p->R, p->at);   /* a smooth part's models are the body */
 	p->placed = 1;
-}
-
-/* The exact box of the part's outer model (its support values at +-e_i,
- * the rows of M, by the dual norms), rounded outwards. */
-static mkSqBox mkSq_PartBox(const mkBody3 *b)
-{
-	mkSqBox x;
-	double c[3] = {b->t.x, b->t.y, b->t.z};
-	for (int i = 0; i < 3; ++i) {
-		mkVec3 row = {b->M.m[i][0], b->M.m[i][1], b->M.m[i][2]};
-		double h = mkSq_ShapeNorm(b->shape, row, 1) * (1.0 + 1e-13);
-		x.lo[i] = c[i] - h;
-		x.hi[i] = c[i] + h;
-	}
-	return x;
 }
 
 /* The square of the gap between c and [lo, hi] (branch-free: one of the
@@ -405,21 +382,24 @@ static inline double mkSq_Gap2(double c, double lo, double hi)
 	return u * u + v * v;
 }
 
-/* The squared distance from the part's centre to a box. */
+/* The squared distance from the part's centre to a box grown by h: with
+ * the exact box, the squared distance between the boxes. */
 static inline double mkSq_CentreDistance2(const mkSqPart *p, const mkSqBox *x)
 {
-	return mkSq_Gap2(p->c[0], x->lo[0], x->hi[0]) + mkSq_Gap2(p->c[1], x->lo[1], x->hi[1])
-		+ mkSq_Gap2(p->c[2], x->lo[2], x->hi[2]);
+	return mkSq_Gap2(p->c[0], x->lo[0] - p->h[0], x->hi[0] + p->h[0])
+		+ mkSq_Gap2(p->c[1], x->lo[1] - p->h[1], x->hi[1] + p->h[1])
+		+ mkSq_Gap2(p->c[2], x->lo[2] - p->h[2], x->hi[2] + p->h[2]);
 }
 
 static inline double mkSq_NodeDistance2(const mkSqPart *p, const mkSqNode *x)
 {
-	return mkSq_Gap2(p->c[0], x->lo[0], x->hi[0]) + mkSq_Gap2(p->c[1], x->lo[1], x->hi[1])
-		+ mkSq_Gap2(p->c[2], x->lo[2], x->hi[2]);
+	return mkSq_Gap2(p->c[0], x->lo[0] - p->h[0], x->hi[0] + p->h[0])
+		+ mkSq_Gap2(p->c[1], x->lo[1] - p->h[1], x->hi[1] + p->h[1])
+		+ mkSq_Gap2(p->c[2], x->lo[2] - p->h[2], x->hi[2] + p->h[2]);
 }
 
-/* The sphere's test: boxes whose squared distance from the centre is at
- * least this are at least best from the part (-1 when best <= 0: all). */
+/* Boxes whose squared distance (mkSq_CentreDistance2) is at least this are
+ * at least best from the part (-1 when best <= 0: all). */
 static inline double mkSq_Limit2(const mkSqPart *p, double best)
 {
 	double lim = best + p->reach;
@@ -427,30 +407,41 @@ static inline double mkSq_Limit2(const mkSqPart *p, double best)
 }
 
 /* 1 when the part is certainly at least best away from everything in box
- * x: by its sphere, then by its exact box (computed when first needed). */
-static int mkSq_Far(mkSqPart *p, const mkSqBox *x, double best)
+ * x (by its sphere or its exact box, whichever it is tested by). */
+static int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
 {
-	if (mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best)) return 1;
-	if (!p->has_box) {
-		mkSq_Placed(p);
-		p->box = mkSq_PartBox(&p->outer);
-		p->has_box = 1;
-	}
-	return mkSq_BoxDistance(&p->box, x) >= best;
+	return mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best);
 }
 
 /* A part's walk of the hierarchy, nearest child first: the stack of nodes
- * with their squared distances from the part's centre, and the leaf being
- * read (positions k .. end). */
+ * with their squared distances from the part (mkSq_NodeDistance2), and the
+ * leaf being read (positions k .. end). */
 typedef struct mkSqWalk {
 	int node[MK_SQ_STACK], top, k, end;
 	double d2[MK_SQ_STACK];
 } mkSqWalk;
 
+/* Switch the part to its exact box: its half-widths, the support values
+ * at +-e_i (the rows of M, by the dual norms) rounded up, and the stacked
+ * nodes' distances again. */
+static void mkSq_BoxMode(const mkSceneQuery *q, mkSqPart *p, mkSqWalk *w)
+{
+	mkSq_Placed(p);
+	for (int i = 0; i < 3; ++i) {
+		mkVec3 row = {p->outer.M.m[i][0], p->outer.M.m[i][1], p->outer.M.m[i][2]};
+		p->h[i] = mkSq_ShapeNorm(p->outer.shape, row, 1) * (1.0 + 1e-13);
+	}
+	p->reach = 0.0;
+	p->has_box = 1;
+	for (int k = 0; k < w->top; ++k) w->d2[k] = mkSq_NodeDistance2(p, &q->node[w->node[k]]);
+}
+
 /* The walk's next candidates (at most max): the positions of obstacles not
- * certainly at least best away (mkSq_Far), in the walk's order (the child
- * nearer the part's centre first; it does not depend on best: best only
- * prunes). Returns their number, 0 when the walk is over. */
+ * certainly at least best away (mkSq_Far by the exact box), in the walk's
+ * order (the nearer child first; it does not depend on best: best only
+ * prunes). The part is switched to its exact box when its sphere does not
+ * rule out an obstacle or has opened MK_SQ_SPHERE_NODES inner nodes.
+ * Returns their number, 0 when the walk is over. */
 static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double best, int *pos, int max)
 {
 	int n = 0;
@@ -458,7 +449,13 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 	while (n < max) {
 		if (w->k < w->end) {
 			int k = w->k++;
-			if (!mkSq_Far(p, &q->sbox[k], best)) pos[n++] = k;
+			if (mkSq_Far(p, &q->sbox[k], best)) continue;
+			if (!p->has_box) {
+				mkSq_BoxMode(q, p, w);
+				lim2 = mkSq_Limit2(p, best);
+				if (mkSq_Far(p, &q->sbox[k], best)) continue;
+			}
+			pos[n++] = k;
 			continue;
 		}
 		if (w->top == 0) break;
@@ -469,6 +466,10 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 			w->k = nd->child;
 			w->end = nd->child + nd->count;
 			continue;
+		}
+		if (!p->has_box && ++p->opened > MK_SQ_SPHERE_NODES) {
+			mkSq_BoxMode(q, p, w);
+			lim2 = mkSq_Limit2(p, best);
 		}
 		double dl = mkSq_NodeDistance2(p, &q->node[nd->child]), dr = mkSq_NodeDistance2(p, &q->node[nd->child + 1]);
 		int near = dl <= dr ? nd->child : nd->child + 1;
@@ -573,7 +574,8 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, doubl
 	p.c[2] = pc.z;
 	p.placed = 0;
 	p.reach = q->reach[j];
-	p.has_box = 0;
+	p.h[0] = p.h[1] = p.h[2] = 0.0;
+	p.has_box = p.opened = 0;
 	p.j = j;
 	mkSqWalk w;
 	w.k = w.end = 0;
