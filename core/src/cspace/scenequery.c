@@ -19,6 +19,7 @@
 #define MK_SQ_STACK 128     /* traversal stack (at most the depth + 1, ~ log2 n) */
 #define MK_SQ_CHUNK 32      /* poses per pool task */
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
+#define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
 #define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
 
 typedef struct mkSqBox { double lo[3], hi[3]; } mkSqBox;
@@ -502,25 +503,88 @@ static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double 
 	return 1;
 }
 
-/* The narrow phase of the candidates at positions pos[0 .. n) in the
- * walk's order, against the clearance best: the quick certificates
- * (mkSqQuick_Pair) first, the batch on the pairs they leave (clearance mode
- * with delta = best, or status mode while no clearance is known), then for
- * each pair still not certainly at least best away: set aside when
- * certified at least best away (it cannot lower the clearance), colliding
- * when an overlap is certified (mkSq_Contact for the batch's), else the
- * one-pair query (mkSq_Pair). Returns 1 when colliding. */
-static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, mkPoseAnswer *out)
+/* Pair i's one-pair answer (mkSq_Pair), or v and s as given when the
+ * pair's overlap is already certified (s colliding), into the pose's
+ * answer. Returns 1 when colliding. */
+static int mkSq_Take(const mkSceneQuery *q, const mkSqPart *p, int i, mkPoseStatus s, double v, double *best,
+	mkPoseAnswer *out)
 {
-	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], quick[MK_SQ_BATCH], slot[MK_SQ_BATCH], nb = 0, known = isfinite(*best);
+	if (s != MK_POSE_COLLIDING) s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
+	if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
+	if (v < *best || s == MK_POSE_COLLIDING) {
+		*best = v;
+		out->obstacle = i;
+		out->part = p->j;
+	}
+	if (s != MK_POSE_COLLIDING) return 0;
+	out->status = MK_POSE_COLLIDING;
+	out->clearance = v;
+	return 1;
+}
+
+/* The pairs of a part left to the one-pair query: their obstacles,
+ * certified lower bounds of their distances and margins, the lowest bound
+ * first. */
+typedef struct mkSqLeft {
+	int n, i[MK_SQ_LEFT];
+	double lower[MK_SQ_LEFT], margin[MK_SQ_LEFT];
+} mkSqLeft;
+
+/* The pairs left, lowest bound first, by the one-pair query, each skipped
+ * when its bound exceeds the clearance found by then by its margin (it
+ * cannot lower it). Returns 1 when colliding. */
+static int mkSq_Resolve(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, double *best, mkPoseAnswer *out)
+{
+	int n = l->n;
+	l->n = 0;
+	for (int e = 0; e < n; ++e)
+		if (!(l->lower[e] > *best + l->margin[e]) && mkSq_Take(q, p, l->i[e], MK_POSE_FREE, 0.0, best, out)) return 1;
+	return 0;
+}
+
+/* Pair i left to the one-pair query with the certified lower bound lo
+ * (answering the pairs left when full). Returns 1 when colliding. */
+static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int i, double lo, double *best,
+	mkPoseAnswer *out)
+{
+	if (l->n == MK_SQ_LEFT && mkSq_Resolve(q, p, l, best, out)) return 1;
+	mkVec3 d = mkVec3_Sub(p->outer.t, q->obs[2 * i + 1].t);
+	int at = l->n++;
+	for (; at > 0 && l->lower[at - 1] > lo; --at) {
+		l->i[at] = l->i[at - 1];
+		l->lower[at] = l->lower[at - 1];
+		l->margin[at] = l->margin[at - 1];
+	}
+	l->i[at] = i;
+	l->lower[at] = lo;
+	l->margin[at] = 4e-12 * (sqrt(mkVec3_Dot(d, d)) + q->oquick[i].r + q->pquick[p->j].r);
+	return 0;
+}
+
+/* The narrow phase of the candidates at positions pos[0 .. n) in the
+ * walk's order, against the bound b = min(best, bound): best the smallest
+ * one-pair value, bound the smallest certified upper bound of a pair's
+ * distance found (the pose's clearance is at most either). The quick
+ * certificates (mkSqQuick_Pair) first, the batch on the pairs they leave
+ * (clearance mode with delta = b, or status mode while b is infinite);
+ * then, in the walk's order, each pair not certainly at least b away (by
+ * the boxes) is set aside when certified at least b away, is colliding
+ * when an overlap is certified (mkSq_Contact for the batch's), else it is
+ * left to the one-pair query (mkSq_Leave) and its certified upper bound
+ * lowers bound. Returns 1 when colliding. */
+static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, double *bound,
+	mkSqLeft *left, mkPoseAnswer *out)
+{
+	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], quick[MK_SQ_BATCH], slot[MK_SQ_BATCH], nb = 0;
+	double b = fmin(*best, *bound), upper[MK_SQ_BATCH], lower[MK_SQ_BATCH], depth[MK_SQ_BATCH];
+	int known = isfinite(b);
 	mkContact status[MK_SQ_BATCH];
 	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
-	double upper[MK_SQ_BATCH], depth[MK_SQ_BATCH];
 	mkSq_Placed(p);
 	for (int m = 0; m < n; ++m) {
 		int i = q->order[pos[m]];
 		quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
-			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, *best, &depth[m]);
+			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, b, &depth[m]);
 		slot[m] = quick[m] ? -1 : nb;
 		if (!quick[m]) { i1[nb] = 2 * i + 1; i2[nb++] = 0; }
 	}
@@ -531,37 +595,31 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 	bo.clear = clear;
 	bo.path = path;
 	bo.upper = upper;
+	bo.lower = lower;
 	mkResult r = nb == 0 ? MK_OK : mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS,
-		known ? fmax(*best, 0.0) : 0.0, &bo, NULL);
+		known ? fmax(b, 0.0) : 0.0, &bo, NULL);
 	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
 	for (int m = 0; m < n; ++m) {
-		int i = q->order[pos[m]], b = slot[m];
-		if (mkSq_Far(p, &q->sbox[pos[m]], *best)) continue;
+		int i = q->order[pos[m]], k = slot[m];
+		if (mkSq_Far(p, &q->sbox[pos[m]], fmin(*best, *bound))) continue;
 		++out->pairs;
-		if (quick[m] == 1 || (b >= 0 && ok && known && path[b] == MK_PATH_SEPARATING && clear[b])) continue;
+		if (quick[m] == 1 || (k >= 0 && ok && known && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
 		double v = -depth[m];
-		mkPoseStatus s = MK_POSE_COLLIDING;
-		if (quick[m] != 2 && !(b >= 0 && ok && path[b] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[b], &v)))
-			s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
-		if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
-		if (v < *best || s == MK_POSE_COLLIDING) {
-			*best = v;
-			out->obstacle = i;
-			out->part = p->j;
-		}
-		if (s == MK_POSE_COLLIDING) {
-			out->status = MK_POSE_COLLIDING;
-			out->clearance = v;
-			return 1;
-		}
+		if (quick[m] == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
+			return mkSq_Take(q, p, i, MK_POSE_COLLIDING, v, best, out);
+		int got = k >= 0 && ok;
+		if (got && upper[k] < *bound) *bound = upper[k];
+		if (mkSq_Leave(q, p, left, i, got && !isnan(lower[k]) ? lower[k] : -INFINITY, best, out)) return 1;
 	}
 	return 0;
 }
 
 /* One part against the scene: the walk's candidates, MK_SQ_BATCH at a time
- * (one while no clearance is known, so that the first pair sets it), each
- * group through mkSq_Narrow. Returns 1 when colliding. */
-static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, mkPoseAnswer *out)
+ * (one, answered at once, while no clearance is known, so that the first
+ * pair sets it), each group through mkSq_Narrow, then the pairs left by
+ * the one-pair query (mkSq_Resolve). Returns 1 when colliding. */
+static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, double *bound,
+	mkPoseAnswer *out)
 {
 	mkSqPart p;
 	p.smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
@@ -582,11 +640,15 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, doubl
 	w.top = 1;
 	w.node[0] = 1;
 	w.d2[0] = mkSq_NodeDistance2(&p, &q->node[1]);
+	mkSqLeft left;
+	left.n = 0;
 	int pos[MK_SQ_BATCH];
 	for (;;) {
-		int n = mkSq_Collect(q, &w, &p, *best, pos, isfinite(*best) ? MK_SQ_BATCH : 1);
-		if (n == 0) return 0;
-		if (mkSq_Narrow(q, &p, pos, n, best, out)) return 1;
+		double b = fmin(*best, *bound);
+		int n = mkSq_Collect(q, &w, &p, b, pos, isfinite(b) ? MK_SQ_BATCH : 1);
+		if (n == 0) return mkSq_Resolve(q, &p, &left, best, out);
+		if (mkSq_Narrow(q, &p, pos, n, best, bound, &left, out)) return 1;
+		if (!isfinite(*best) && mkSq_Resolve(q, &p, &left, best, out)) return 1;   /* the first pair sets best */
 	}
 }
 
@@ -600,9 +662,9 @@ mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnsw
 	out->pairs = 0;
 	if (!mkSq_Pose(q, pose, &R, &c)) { out->status = MK_POSE_UNCERTAIN; out->clearance = NAN; return MK_ERR_ARGUMENT; }
 	if (q->nob == 0) return MK_OK;
-	double best = q->opt.max_clearance;
+	double best = q->opt.max_clearance, bound = INFINITY;
 	for (int j = 0; j < q->parts; ++j)
-		if (mkSq_PartPose(q, j, R, c, &best, out)) return MK_OK;
+		if (mkSq_PartPose(q, j, R, c, &best, &bound, out)) return MK_OK;
 	out->clearance = best;
 	return MK_OK;
 }
