@@ -37,12 +37,15 @@ static double mkBs_Uni(double lo, double hi)
 	return lo + (hi - lo) * (double)(mkBs_seed >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static double mkBs_Now(void)
+static double mkBs_Clock(clockid_t c)
 {
 	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
+	clock_gettime(c, &t);
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
+
+static double mkBs_Now(void) { return mkBs_Clock(CLOCK_MONOTONIC); }
+static double mkBs_Cpu(void) { return mkBs_Clock(CLOCK_THREAD_CPUTIME_ID); }
 
 static int mkBs_CompareDouble(const void *a, const void *b)
 {
@@ -125,26 +128,21 @@ static int mkBs_Disagree(const char *peer, int judged, const mkPoseAnswer *a, co
 }
 
 /* The rounds, interleaved: t[e * rounds + r] is entry e's time in round r
- * (mink-1t, fcl, mink-2t, mink-yn, ccd). */
+ * (mink-1t, fcl, mink-2t, mink-yn, ccd), by the wall clock, and
+ * t[(5 + e) * rounds + r] by the calling thread's CPU clock (which the
+ * 1-thread entries run on; mink-2t's is not its time). */
 static void mkBs_Rounds(mkSceneQuery *const q[3], mkFclScene *const f[2], const double *poses, int np, int rounds,
 	mkPoseAnswer *const a[3], unsigned char *const hit[2], double *t)
 {
 	char msg[512];
-	for (int r = 0; r < rounds; ++r) {
-		double t0 = mkBs_Now();
-		mkSceneQuery_Run(q[0], poses, np, a[0], msg, sizeof msg);
-		double t1 = mkBs_Now();
-		mkBs_PeerRun(f[0], poses, np, hit[0]);
-		double t2 = mkBs_Now();
-		mkSceneQuery_Run(q[1], poses, np, a[1], msg, sizeof msg);
-		double t3 = mkBs_Now();
-		mkSceneQuery_Run(q[2], poses, np, a[2], msg, sizeof msg);
-		double t4 = mkBs_Now();
-		mkBs_PeerRun(f[1], poses, np, hit[1]);
-		double t5 = mkBs_Now();
-		t[r] = t1 - t0; t[rounds + r] = t2 - t1; t[2 * rounds + r] = t3 - t2; t[3 * rounds + r] = t4 - t3;
-		t[4 * rounds + r] = t5 - t4;
-	}
+	for (int r = 0; r < rounds; ++r)
+		for (int e = 0; e < 5; ++e) {
+			double w = mkBs_Now(), c = mkBs_Cpu();
+			if (e == 0 || e == 2 || e == 3) mkSceneQuery_Run(q[e == 0 ? 0 : e - 1], poses, np, a[e == 0 ? 0 : e - 1], msg, sizeof msg);
+			else mkBs_PeerRun(f[e == 1 ? 0 : 1], poses, np, hit[e == 1 ? 0 : 1]);
+			t[e * rounds + r] = mkBs_Now() - w;
+			t[(5 + e) * rounds + r] = mkBs_Cpu() - c;
+		}
 }
 
 /* One scene of n obstacles: the row. Returns the failures (exact peers'
@@ -166,7 +164,7 @@ static int mkBs_Scene(int n, int np, int rounds)
 	mkPoseAnswer *a[3];
 	unsigned char *hit[2] = {malloc((size_t)np), malloc((size_t)np)};
 	for (int e = 0; e < 3; ++e) a[e] = malloc(sizeof *a[e] * (size_t)np);
-	double *t = malloc(sizeof(double) * 5 * (size_t)rounds);
+	double *t = malloc(sizeof(double) * 10 * (size_t)rounds);
 	mkFclScene *f[2] = {mkBs_Peer(q[0], n, MK_FCL_NARROW_FCL), mkBs_Peer(q[0], n, MK_FCL_NARROW_CCD)};
 	if (!poses || !a[0] || !a[1] || !a[2] || !hit[0] || !hit[1] || !t || !f[0] || !f[1]) {
 		fprintf(stderr, "bench_scene: out of memory\n");
@@ -185,8 +183,8 @@ static int mkBs_Scene(int n, int np, int rounds)
 	}
 	int dis[2] = {mkBs_Disagree("fcl", !mkBs_sq, a[0], hit[0], np, &beyond[0]),
 		mkBs_Disagree("ccd", 1, a[0], hit[1], np, &beyond[1])};
-	double med[5];
-	for (int e = 0; e < 5; ++e) {
+	double med[10];
+	for (int e = 0; e < 10; ++e) {
 		qsort(t + e * rounds, (size_t)rounds, sizeof *t, mkBs_CompareDouble);
 		med[e] = t[e * rounds + rounds / 2];
 	}
@@ -194,6 +192,8 @@ static int mkBs_Scene(int n, int np, int rounds)
 		mkBs_sq ? "sq" : "ellipsoid", n, np, np / med[0], np / med[2], np / med[3], np / med[1], np / med[4],
 		med[1] / med[0], med[1] / med[2], med[1] / med[3], med[4] / med[3], med[0] / med[2], counts[0], counts[1],
 		counts[2], dis[0], dis[1], same ? "" : "ANSWERS DIFFER");
+	printf("  cpu time (1 thread): yn/fcl %.2f, yn/ccd %.2f, 1t/fcl %.2f; mink-yn %.3f us per pose, fcl %.3f, ccd %.3f\n",
+		med[6] / med[8], med[9] / med[8], med[6] / med[5], 1e6 * med[8] / np, 1e6 * med[6] / np, 1e6 * med[9] / np);
 	if (mkFclScene_Triangles(f[0]) > 0) printf("  fcl meshes: %ld triangles\n", mkFclScene_Triangles(f[0]));
 	fflush(stdout);
 	for (int e = 0; e < 3; ++e) { mkSceneQuery_Destroy(q[e]); free(a[e]); }
