@@ -493,11 +493,7 @@ static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double 
 	unsigned char path;
 	double up;
 	mkBatchPairs3 pairs = {1, q->obs, &p->inner, &i1, &i2};
-	mkBatchOut3 out;
-	memset(&out, 0, sizeof out);
-	out.status = &st;
-	out.upper = &up;
-	out.path = &path;
+	mkBatchOut3 out = {.status = &st, .upper = &up, .path = &path};
 	if (mkCollide3_Batch(&pairs, MK_BATCH_STATUS, 0.0, &out, NULL) != MK_OK || path != MK_PATH_OVERLAP_POINT) return 0;
 	*value = up;
 	return 1;
@@ -589,13 +585,7 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 		if (!quick[m]) { i1[nb] = 2 * i + 1; i2[nb++] = 0; }
 	}
 	mkBatchPairs3 pairs = {nb, q->obs, &p->outer, i1, i2};
-	mkBatchOut3 bo;
-	memset(&bo, 0, sizeof bo);
-	bo.status = status;
-	bo.clear = clear;
-	bo.path = path;
-	bo.upper = upper;
-	bo.lower = lower;
+	mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .clear = clear, .path = path};
 	mkResult r = nb == 0 ? MK_OK : mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS,
 		known ? fmax(b, 0.0) : 0.0, &bo, NULL);
 	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
