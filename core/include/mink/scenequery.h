@@ -9,17 +9,20 @@
  *
  * Broad phase: a bounding volume hierarchy of the obstacles' exact
  * axis-aligned boxes (from the closed-form support function at +-e_i),
- * built once by median splits; each part walks it nearest child first
+ * built once by median splits; each part walks it nearest child first,
  * with the sphere about its centre that holds it at every rotation
- * (precomputed), pruning every node no nearer than the best clearance
- * found; an obstacle the sphere does not prune is tested against the
- * part's exact box at the pose. Narrow phase: the candidates, 8 at a time
- * in the walk's order, go to mkCollide3_Batch (clearance mode, delta = the
- * clearance found so far; status mode while none is known): a pair it
- * certifies at least that far is set aside, a pair whose overlap it
- * certifies is colliding (for boxes and cylinders: the batch's status on
+ * (precomputed) and, past the top of the tree, its exact box at the pose,
+ * pruning every node no nearer than the best clearance found. Narrow
+ * phase: the candidates, 8 at a time in the walk's order: quick
+ * certificates first (a support-function bound along the centre line; a
+ * common point of two smooth bodies on the centre segment, by their
+ * gauges), then mkCollide3_Batch on the rest (clearance mode, delta = the
+ * clearance found so far; status mode while none is known): a pair
+ * certified at least that far is set aside, a pair whose overlap is
+ * certified is colliding (for boxes and cylinders: the batch's status on
  * the inner models certifies it), and every other pair gets
- * mkCollide3_Normal on the pair (2D bodies
+ * mkCollide3_Normal on the pair when the part's walk is over, lowest
+ * certified lower bound first (2D bodies
  * enter as superquadrics whose z = 0 section is the superellipse, eps1 = 1:
  * both are symmetric about z = 0, so the distance of separated pairs is the
  * 2D distance, and overlapping sections overlap in 3D).
@@ -31,9 +34,10 @@
  *    solver's answer, less a rounding allowance of 1e-12 of the pair's size,
  *    is positive: it is then a lower bound of the pair's distance;
  *  - colliding when the inner models (the declared shapes for smooth
- *    bodies) overlap for certain: the batch's point of both bodies with
- *    balls inside each whose radii add to more than 4e-12 of the pair's
- *    size (a lower bound of the depth), a point inside both (the centres,
+ *    bodies) overlap for certain: a point of both bodies (the quick
+ *    certificate's or the batch's) with balls inside each whose radii add
+ *    to more than 4e-12 of the pair's size (a lower bound of the depth), a
+ *    point inside both (the centres,
  *    their midpoint or the solver's witnesses' midpoint, by the implicit
  *    functions with a margin of 1e-9), or the solver's certified bracket
  *    of their signed distance below minus the allowance;
