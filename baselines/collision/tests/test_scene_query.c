@@ -14,7 +14,13 @@
  * Checked per pose: the status, the clearance (a lower bound of the true
  * minimum, and tight: within the models' and the references' tolerances of
  * it), the nearest obstacle, the cap max_clearance, and the answers of 1, 2
- * and 3 threads byte for byte. */
+ * and 3 threads byte for byte.
+ * Against the one-pair narrow phase (test_3d_onepair: mkCollide3_Normal on
+ * every pair, by the header's rules): the same status, and for free poses
+ * the same clearance to the last bit and the same nearest pair, uncapped
+ * and capped at 1e-9 (the yes/no question); colliding poses: the reported
+ * pair overlaps (referee) and the clearance is an upper bound of its
+ * signed distance. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -171,6 +177,92 @@ static void test_3d(void)
 	mkScene_Free(&s);
 }
 
+/* ---- 3D: the one-pair narrow phase on every pair ---- */
+
+/* Part j at the pose P. */
+static mkBody3 placed_part(const mkScene *s, const double *P, int j)
+{
+	mkMat3 R = mkMat3_FromQuat(P[3], P[4], P[5], P[6]);
+	mkBody3 part = s->parts[j].spec.body3;
+	part.t = mkVec3_Add(mkVec3_Make(P[0], P[1], P[2]), mkMat3_MulVec(R, part.t));
+	part.M = mkMat3_Mul(R, part.M);
+	return part;
+}
+
+/* The one-pair narrow phase on pair (obstacle i, part j at the pose): free
+ * with the value bound - 1e-12 scale when that is positive, colliding when
+ * the solver finds the (smooth) pair overlapping, else uncertain. */
+static mkPoseStatus onepair_pair(const mkScene *s, const double *P, int j, int i, double *value)
+{
+	mkCollision3 c;
+	if (mkCollide3_Normal(s->obstacles[i].spec.body3, placed_part(s, P, j), &c) != MK_OK) return MK_POSE_UNCERTAIN;
+	*value = c.bound - 1e-12 * c.scale;
+	if (*value > 0.0) return MK_POSE_FREE;
+	return c.status == MK_CONTACT_OVERLAPPING && c.distance < -1e-9 * c.scale ? MK_POSE_COLLIDING : MK_POSE_UNCERTAIN;
+}
+
+/* One pose of the query (capped at cap) against the one-pair narrow phase
+ * on every pair, and a colliding pose's pair against the referee. Returns
+ * 1 when they differ. */
+static int onepair_pose(const mkScene *s, const double *P, const mkPoseAnswer *a, double cap)
+{
+	double best = cap, v;
+	int coll = 0, unc = 0, ob = -1, pt = -1;
+	for (int j = 0; j < s->part_count; ++j)
+		for (int i = 0; i < s->obstacle_count; ++i) {
+			mkPoseStatus st = onepair_pair(s, P, j, i, &v);
+			coll |= st == MK_POSE_COLLIDING;
+			unc |= st == MK_POSE_UNCERTAIN;
+			if (st == MK_POSE_FREE && v < best) { best = v; ob = i; pt = j; }
+		}
+	mkPoseStatus want = coll ? MK_POSE_COLLIDING : unc ? MK_POSE_UNCERTAIN : MK_POSE_FREE;
+	int bad = a->status != want || (want == MK_POSE_FREE && (a->clearance != best || a->obstacle != ob || a->part != pt));
+	if (a->status == MK_POSE_COLLIDING) {
+		const mkCollider *ref = mkColliders_Find("referee");
+		mkColliderScratch scratch;
+		mkCollision3 c;
+		ENSURE(ref && a->obstacle >= 0 && a->part >= 0);
+		ENSURE(mkCollider_Run(ref, s->obstacles[a->obstacle].spec.body3, placed_part(s, P, a->part), &scratch, &c) == MK_OK);
+		double tol = 1e-9 * c.scale, hi = isnan(c.gap) ? c.distance : c.distance + c.gap;
+		bad |= !(hi < -tol && a->clearance <= 0.0 && a->clearance >= c.distance - tol);
+	}
+	if (bad)
+		fprintf(stderr, "  one-pair, cap %g: %s %.17g (%d, %d); one-pair %s %.17g (%d, %d)\n", cap,
+			mkPoseStatus_Name(a->status), a->clearance, a->obstacle, a->part, mkPoseStatus_Name(want), best, ob, pt);
+	return bad;
+}
+
+static void test_3d_onepair(void)
+{
+	enum { NOB = 40, NP = 100 };
+	static char text[NOB * 160 + 512];
+	scene3_text(text, sizeof text, NOB);
+	mkScene s;
+	double poses[NP * 7], caps[2] = {INFINITY, 1e-9};
+	mkPoseAnswer ans[NP];
+	prepare(text, 3, &s, poses, NP, ans);
+	int bad = 0, counts[3] = {0, 0, 0};
+	for (int c = 0; c < 2; ++c) {
+		char msg[512];
+		mkSceneQueryOptions o = mkSceneQueryOptions_Default();
+		o.max_clearance = caps[c];
+		mkSceneQuery *q = NULL;
+		ENSURE(mkSceneQuery_Create(&s, &o, &q, msg, sizeof msg) == MK_OK);
+		for (int k = 0; k < NP; ++k) {
+			mkPoseAnswer a;
+			ENSURE(mkSceneQuery_Pose(q, poses + 7 * k, &a) == MK_OK);
+			bad += onepair_pose(&s, poses + 7 * k, &a, caps[c]);
+			++counts[a.status];
+		}
+		mkSceneQuery_Destroy(q);
+	}
+	ENSURE(bad == 0);
+	ENSURE(counts[MK_POSE_FREE] > 20 && counts[MK_POSE_COLLIDING] > 10);
+	printf("3D against the one-pair narrow phase, %d obstacles, %d poses, uncapped and capped at 1e-9: %d free, "
+		"%d colliding, %d uncertain; %d differ\n", NOB, NP, counts[0], counts[1], counts[2], bad);
+	mkScene_Free(&s);
+}
+
 /* ---- 2D: boxes among smooth bodies, textbook support functions ---- */
 
 static double ref_h2(const mkSceneBody *b, mkMat2 M, mkVec2 u)
@@ -260,5 +352,6 @@ int main(void)
 {
 	test_3d();
 	test_2d();
+	test_3d_onepair();
 	return mk_summary("test_scene_query");
 }

@@ -9,12 +9,20 @@
  *
  * Broad phase: a bounding volume hierarchy of the obstacles' exact
  * axis-aligned boxes (from the closed-form support function at +-e_i),
- * built once by median splits; each part's exact box at the pose walks it
- * nearest first, pruning every node whose box is no nearer than the best
- * clearance found. Narrow phase: the candidates, 8 at a time in the walk's
- * order, screened by mkCollide3_Batch (clearance mode, delta = the
- * clearance found so far); a pair not certified at least that far gets
- * mkCollide3_Normal on the pair (2D bodies
+ * built once by median splits; each part walks it nearest child first,
+ * with the sphere about its centre that holds it at every rotation
+ * (precomputed) and, past the top of the tree, its exact box at the pose,
+ * pruning every node no nearer than the best clearance found. Narrow
+ * phase: the candidates, 8 at a time in the walk's order: quick
+ * certificates first (a support-function bound along the centre line; a
+ * common point of two smooth bodies on the centre segment, by their
+ * gauges), then mkCollide3_Batch on the rest (clearance mode, delta = the
+ * clearance found so far; status mode while none is known): a pair
+ * certified at least that far is set aside, a pair whose overlap is
+ * certified is colliding (for boxes and cylinders: the batch's status on
+ * the inner models certifies it), and every other pair gets
+ * mkCollide3_Normal on the pair when the part's walk is over, lowest
+ * certified lower bound first (2D bodies
  * enter as superquadrics whose z = 0 section is the superellipse, eps1 = 1:
  * both are symmetric about z = 0, so the distance of separated pairs is the
  * 2D distance, and overlapping sections overlap in 3D).
@@ -26,8 +34,11 @@
  *    solver's answer, less a rounding allowance of 1e-12 of the pair's size,
  *    is positive: it is then a lower bound of the pair's distance;
  *  - colliding when the inner models (the declared shapes for smooth
- *    bodies) overlap for certain: a point inside both (the centres, their
- *    midpoint or the solver's witnesses' midpoint, by the implicit
+ *    bodies) overlap for certain: a point of both bodies (the quick
+ *    certificate's or the batch's) with balls inside each whose radii add
+ *    to more than 4e-12 of the pair's size (a lower bound of the depth), a
+ *    point inside both (the centres,
+ *    their midpoint or the solver's witnesses' midpoint, by the implicit
  *    functions with a margin of 1e-9), or the solver's certified bracket
  *    of their signed distance below minus the allowance;
  *  - uncertain otherwise (touching within the allowance and the model
@@ -71,8 +82,9 @@ typedef struct mkPoseAnswer {
 	int obstacle;     /* free: the nearest obstacle; colliding: one in contact; -1: none nearer than max_clearance */
 	int part;         /* the robot part of that pair; -1 with obstacle */
 	double clearance; /* free: certified lower bound of the distance from the robot to every obstacle (capped);
-	                   * colliding: a lower bound of that pair's signed distance (<= 0); uncertain: the smallest
-	                   * lower bound found (<= 0, -inf when a solver failed) */
+	                   * colliding: an upper bound of that pair's signed distance (<= 0): minus a certified lower
+	                   * bound of its depth, 0 when only a common point certifies the contact; uncertain: the
+	                   * smallest lower bound found (<= 0, -inf when a solver failed) */
 	int pairs;        /* narrow-phase pairs computed (batch screen or one-pair query) */
 } mkPoseAnswer;
 

@@ -9,22 +9,28 @@
 #include <string.h>
 
 #include "base/message.h"
+#include "cspace/scenepair.h"
 #include "cspace/work.h"
 #include "mink/batch.h"
 #include "mink/collision.h"
 
 #define MK_SQ_ROUND 1e-12   /* rounding allowance of a pair's bound, times its size */
 #define MK_SQ_LEAF 2        /* obstacles per leaf at most */
-#define MK_SQ_STACK 128     /* traversal stack (depth ~ 2 log2 n) */
+#define MK_SQ_STACK 128     /* traversal stack (at most the depth + 1, ~ log2 n) */
 #define MK_SQ_CHUNK 32      /* poses per pool task */
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
+#define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
+#define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
 
 typedef struct mkSqBox { double lo[3], hi[3]; } mkSqBox;
 
+/* A node of the hierarchy (32 bytes: two to a cache line, the children of
+ * a node side by side at an even index), its box rounded outwards to
+ * floats. */
 typedef struct mkSqNode {
-	mkSqBox box;
-	int left, right;   /* children, or -1 for a leaf */
-	int first, count;  /* leaf: obstacles order[first .. first + count) */
+	float lo[3], hi[3];
+	int child;   /* inner node: its children child, child + 1; leaf: its first position */
+	int count;   /* leaf: the obstacles at positions child .. child + count; inner node: 0 */
 } mkSqNode;
 
 struct mkSceneQuery {
@@ -35,8 +41,11 @@ struct mkSceneQuery {
 	mkBody3 *obs;      /* [i * 2 + bound]: inner, outer models */
 	mkBody3 *part;     /* [j * 2 + bound], in the robot's frame */
 	mkSqBox *obox;     /* outer models' boxes */
-	int *order;
-	mkSqNode *node;
+	mkSqBox *sbox;     /* the same at their positions in the hierarchy: sbox[k] = obox[order[k]] */
+	double *reach;     /* part j's outer model lies within reach[j] of its centre */
+	mkSqQuick *oquick, *pquick;   /* the outer models' data for the quick certificates */
+	int *order;        /* the obstacle at each position of the hierarchy */
+	mkSqNode *node;    /* root at 1 */
 	int nnode;
 	struct mkSqKey *keys;   /* building only */
 };
@@ -101,16 +110,6 @@ static mkSqBox mkSq_BodyBox(mkBody3 b)
 	return x;
 }
 
-static double mkSq_BoxDistance(const mkSqBox *a, const mkSqBox *b)
-{
-	double d2 = 0.0;
-	for (int i = 0; i < 3; ++i) {
-		double g = fmax(a->lo[i] - b->hi[i], b->lo[i] - a->hi[i]);
-		if (g > 0.0) d2 += g * g;
-	}
-	return sqrt(d2);
-}
-
 /* ---- the hierarchy ---- */
 
 typedef struct mkSqKey { double key; int idx; } mkSqKey;
@@ -122,37 +121,61 @@ static int mkSq_CompareKey(const void *pa, const void *pb)
 	return a->idx - b->idx;
 }
 
-/* Node over order[first .. first + count): its box, then a median split on
- * the longest axis of the box. Returns the node's index. */
-static int mkSq_Build(mkSceneQuery *q, int first, int count)
+/* x rounded down and up to a float. */
+static float mkSq_Down(double x)
 {
-	int id = q->nnode++;
-	mkSqNode *n = &q->node[id];
-	for (int i = 0; i < 3; ++i) { n->box.lo[i] = INFINITY; n->box.hi[i] = -INFINITY; }
+	float f = (float)x;
+	return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+static float mkSq_Up(double x)
+{
+	float f = (float)x;
+	return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+/* Node id over order[first .. first + count): its box, then a median split
+ * on the longest axis of the box into two new nodes side by side. */
+static void mkSq_Build(mkSceneQuery *q, int id, int first, int count)
+{
+	mkSqBox b;
+	for (int i = 0; i < 3; ++i) { b.lo[i] = INFINITY; b.hi[i] = -INFINITY; }
 	for (int k = first; k < first + count; ++k)
 		for (int i = 0; i < 3; ++i) {
-			n->box.lo[i] = fmin(n->box.lo[i], q->obox[q->order[k]].lo[i]);
-			n->box.hi[i] = fmax(n->box.hi[i], q->obox[q->order[k]].hi[i]);
+			b.lo[i] = fmin(b.lo[i], q->obox[q->order[k]].lo[i]);
+			b.hi[i] = fmax(b.hi[i], q->obox[q->order[k]].hi[i]);
 		}
-	n->first = first;
+	mkSqNode *n = &q->node[id];
+	for (int i = 0; i < 3; ++i) { n->lo[i] = mkSq_Down(b.lo[i]); n->hi[i] = mkSq_Up(b.hi[i]); }
+	n->child = first;
 	n->count = count;
-	n->left = n->right = -1;
-	if (count <= MK_SQ_LEAF) return id;
+	if (count <= MK_SQ_LEAF) return;
 	int axis = 0;
 	for (int i = 1; i < 3; ++i)
-		if (n->box.hi[i] - n->box.lo[i] > n->box.hi[axis] - n->box.lo[axis]) axis = i;
+		if (b.hi[i] - b.lo[i] > b.hi[axis] - b.lo[axis]) axis = i;
 	for (int k = 0; k < count; ++k) {
 		int i = q->order[first + k];
 		q->keys[k] = (mkSqKey){q->obox[i].lo[axis] + q->obox[i].hi[axis], i};
 	}
 	qsort(q->keys, (size_t)count, sizeof *q->keys, mkSq_CompareKey);
 	for (int k = 0; k < count; ++k) q->order[first + k] = q->keys[k].idx;
-	int half = count / 2;
-	int l = mkSq_Build(q, first, half);
-	int r = mkSq_Build(q, first + half, count - half);
-	q->node[id].left = l;
-	q->node[id].right = r;
-	return id;
+	int c = q->nnode, half = count / 2;
+	q->nnode += 2;
+	n->child = c;
+	n->count = 0;
+	mkSq_Build(q, c, first, half);
+	mkSq_Build(q, c + 1, first + half, count - half);
+}
+
+/* An upper bound of the distance of part j's outer model from its centre
+ * at any rotation: the half diagonal of its exact box (over the scene's
+ * dimensions: a 2D body's distances are planar), with a rounding allowance. */
+static double mkSq_Reach(const mkSceneQuery *q, int j)
+{
+	mkSqBox x = mkSq_BodyBox(q->part[2 * j + 1]);
+	double h2 = 0.0;
+	for (int i = 0; i < q->dim; ++i) h2 += 0.25 * (x.hi[i] - x.lo[i]) * (x.hi[i] - x.lo[i]);
+	return sqrt(h2) * (1.0 + 1e-12);
 }
 
 /* ---- create ---- */
@@ -182,10 +205,14 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->obs = malloc(2 * nb * sizeof *q->obs);
 	q->part = malloc(2 * (size_t)q->parts * sizeof *q->part);
 	q->obox = malloc(nb * sizeof *q->obox);
+	q->sbox = malloc(nb * sizeof *q->sbox);
 	q->order = malloc(nb * sizeof *q->order);
-	q->node = malloc(2 * nb * sizeof *q->node);
+	q->node = aligned_alloc(64, (2 * nb + 2) * sizeof *q->node);
+	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
+	q->oquick = malloc(nb * sizeof *q->oquick);
+	q->pquick = malloc((size_t)q->parts * sizeof *q->pquick);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->order || !q->node) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	if (!q->obs || !q->part || !q->obox || !q->sbox || !q->order || !q->node || !q->reach || !q->oquick || !q->pquick) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
 		for (int i = 0; i < q->nob && r == MK_OK; ++i)
@@ -197,13 +224,20 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	}
 	if (r == MK_OK && scene->part_count == 0) /* a hand-built scene's robot: its at= unused */
 		for (int k = 0; k < 2; ++k) q->part[k].t = mkVec3_Make(0.0, 0.0, 0.0);
+	for (int j = 0; j < q->parts && r == MK_OK; ++j) {
+		q->reach[j] = mkSq_Reach(q, j);
+		q->pquick[j] = mkSqQuick_Make(q->part[2 * j + 1]);
+	}
+	for (int i = 0; i < q->nob && r == MK_OK; ++i) q->oquick[i] = mkSqQuick_Make(q->obs[2 * i + 1]);
 	if (r == MK_OK && q->nob > 0 && !(q->keys = malloc(nb * sizeof *q->keys))) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	if (r == MK_OK && q->nob > 0) {
 		for (int i = 0; i < q->nob; ++i) {
 			q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
 			q->order[i] = i;
 		}
-		mkSq_Build(q, 0, q->nob);
+		q->nnode = 2;
+		mkSq_Build(q, 1, 0, q->nob);
+		for (int k = 0; k < q->nob; ++k) q->sbox[k] = q->obox[q->order[k]];
 		free(q->keys);
 		q->keys = NULL;
 	}
@@ -218,7 +252,8 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
-	free(q->obs); free(q->part); free(q->obox); free(q->order); free(q->node); free(q->keys);
+	free(q->obs); free(q->part); free(q->obox); free(q->sbox); free(q->order); free(q->node); free(q->keys); free(q->reach);
+	free(q->oquick); free(q->pquick);
 	free(q);
 }
 
@@ -242,6 +277,17 @@ static int mkSq_Pose(const mkSceneQuery *q, const double *p, mkMat3 *R, mkVec3 *
 	*R = mkMat3_FromQuat(p[3], p[4], p[5], p[6]);
 	*c = mkVec3_Make(p[0], p[1], p[2]);
 	return mkMat3_IsFinite(*R);
+}
+
+/* What mkSq_Pose accepts, without the rotation: finite values of
+ * magnitude at most 1e150 and, in 3D, a quaternion whose squared norm is
+ * positive. */
+static int mkSq_PoseOk(const mkSceneQuery *q, const double *p)
+{
+	int n = mkSceneQuery_PoseSize(q);
+	for (int k = 0; k < n; ++k)
+		if (!isfinite(p[k]) || fabs(p[k]) > 1e150) return 0;
+	return q->dim == 2 || p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6] > 0.0;
 }
 
 static mkBody3 mkSq_Place(mkBody3 b, mkMat3 R, mkVec3 c)
@@ -286,7 +332,8 @@ static int mkSq_Overlap(mkBody3 a, mkBody3 b, const mkCollision3 *c, double tol)
 }
 
 /* The narrow phase of one pair (the one-pair query): the pair's status and
- * value as the header defines them. */
+ * value as the header defines them (free: a lower bound of the distance;
+ * colliding: an upper bound of the signed distance, <= 0). */
 static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBody3 outer, int smooth, double *value)
 {
 	mkCollision3 c;
@@ -297,104 +344,301 @@ static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBod
 	if (lb > 0.0) return MK_POSE_FREE;
 	if ((!smooth || q->scene->obstacles[i].kind != MK_SCENE_SMOOTH) && mkCollide3_Normal(q->obs[2 * i], inner, &c) != MK_OK)
 		return MK_POSE_UNCERTAIN;
-	return mkSq_Overlap(q->obs[2 * i], inner, &c, tol) ? MK_POSE_COLLIDING : MK_POSE_UNCERTAIN;
+	if (!mkSq_Overlap(q->obs[2 * i], inner, &c, tol)) return MK_POSE_UNCERTAIN;
+	*value = c.certified == 1 && c.bound + c.gap < 0.0 ? c.bound + c.gap : 0.0;
+	return MK_POSE_COLLIDING;
+}
+
+/* A robot part at the pose, tested against boxes by its centre c and,
+ * first, the sphere about c that holds its outer model (radius reach, the
+ * same at every rotation; h = 0), then its exact box (half-widths h,
+ * reach = 0), computed once the sphere has not settled a leaf's obstacle
+ * or has opened MK_SQ_SPHERE_NODES inner nodes (mkSq_BoxMode). Its models
+ * are placed when first needed (mkSq_Placed). */
+typedef struct mkSqPart {
+	const mkBody3 *rest;   /* its inner and outer models in the robot's frame */
+	mkMat3 R;              /* the pose */
+	mkVec3 at;
+	double c[3], reach, h[3];
+	mkBody3 outer, inner;  /* once placed */
+	int placed, has_box, opened, smooth, j;
+} mkSqPart;
+
+/* The part's models at the pose (computed once). */
+static void mkSq_Placed(mkSqPart *p)
+{
+	if (p->placed) return;
+	p->outer = mkSq_Place(p->rest[1], p->R, p->at);
+	p->inner = p->smooth ? p->outer : mkSq_Place(p->rest[0], p->R, p->at);   /* a smooth part's models are the body */
+	p->placed = 1;
+}
+
+/* The square of the gap between c and [lo, hi] (branch-free: one of the
+ * two terms is 0). */
+static inline double mkSq_Gap2(double c, double lo, double hi)
+{
+	double u = lo - c, v = c - hi;
+	u = u > 0.0 ? u : 0.0;
+	v = v > 0.0 ? v : 0.0;
+	return u * u + v * v;
+}
+
+/* The squared distance from the part's centre to a box grown by h: with
+ * the exact box, the squared distance between the boxes. */
+static inline double mkSq_CentreDistance2(const mkSqPart *p, const mkSqBox *x)
+{
+	return mkSq_Gap2(p->c[0], x->lo[0] - p->h[0], x->hi[0] + p->h[0])
+		+ mkSq_Gap2(p->c[1], x->lo[1] - p->h[1], x->hi[1] + p->h[1])
+		+ mkSq_Gap2(p->c[2], x->lo[2] - p->h[2], x->hi[2] + p->h[2]);
+}
+
+static inline double mkSq_NodeDistance2(const mkSqPart *p, const mkSqNode *x)
+{
+	return mkSq_Gap2(p->c[0], x->lo[0] - p->h[0], x->hi[0] + p->h[0])
+		+ mkSq_Gap2(p->c[1], x->lo[1] - p->h[1], x->hi[1] + p->h[1])
+		+ mkSq_Gap2(p->c[2], x->lo[2] - p->h[2], x->hi[2] + p->h[2]);
+}
+
+/* Boxes whose squared distance (mkSq_CentreDistance2) is at least this are
+ * at least best from the part (-1 when best <= 0: all). */
+static inline double mkSq_Limit2(const mkSqPart *p, double best)
+{
+	double lim = best + p->reach;
+	return best > 0.0 ? lim * lim : -1.0;
+}
+
+/* 1 when the part is certainly at least best away from everything in box
+ * x (by its sphere or its exact box, whichever it is tested by). */
+static int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
+{
+	return mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best);
 }
 
 /* A part's walk of the hierarchy, nearest child first: the stack of nodes
- * and the leaf being read (order[k .. end)). */
+ * with their squared distances from the part (mkSq_NodeDistance2), and the
+ * leaf being read (positions k .. end). */
 typedef struct mkSqWalk {
-	int stack[MK_SQ_STACK], top, k, end;
+	int node[MK_SQ_STACK], top, k, end;
+	double d2[MK_SQ_STACK];
 } mkSqWalk;
 
-/* The walk's next candidates (at most max): obstacles whose box is nearer
- * than best, in the walk's order (which does not depend on best: best only
- * prunes). Returns their number, 0 when the walk is over. */
-static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, const mkSqBox *pb, double best, int *idx, int max)
+/* Switch the part to its exact box: its half-widths, the support values
+ * at +-e_i (the rows of M, by the dual norms) rounded up, and the stacked
+ * nodes' distances again. */
+static void mkSq_BoxMode(const mkSceneQuery *q, mkSqPart *p, mkSqWalk *w)
+{
+	mkSq_Placed(p);
+	for (int i = 0; i < 3; ++i) {
+		mkVec3 row = {p->outer.M.m[i][0], p->outer.M.m[i][1], p->outer.M.m[i][2]};
+		p->h[i] = mkSq_ShapeNorm(p->outer.shape, row, 1) * (1.0 + 1e-13);
+	}
+	p->reach = 0.0;
+	p->has_box = 1;
+	for (int k = 0; k < w->top; ++k) w->d2[k] = mkSq_NodeDistance2(p, &q->node[w->node[k]]);
+}
+
+/* The walk's next candidates (at most max): the positions of obstacles not
+ * certainly at least best away (mkSq_Far by the exact box), in the walk's
+ * order (the nearer child first; it does not depend on best: best only
+ * prunes). The part is switched to its exact box when its sphere does not
+ * rule out an obstacle or has opened MK_SQ_SPHERE_NODES inner nodes.
+ * Returns their number, 0 when the walk is over. */
+static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double best, int *pos, int max)
 {
 	int n = 0;
+	double lim2 = mkSq_Limit2(p, best);
 	while (n < max) {
 		if (w->k < w->end) {
-			int i = q->order[w->k++];
-			if (mkSq_BoxDistance(pb, &q->obox[i]) < best) idx[n++] = i;
+			int k = w->k++;
+			if (mkSq_Far(p, &q->sbox[k], best)) continue;
+			if (!p->has_box) {
+				mkSq_BoxMode(q, p, w);
+				lim2 = mkSq_Limit2(p, best);
+				if (mkSq_Far(p, &q->sbox[k], best)) continue;
+			}
+			pos[n++] = k;
 			continue;
 		}
 		if (w->top == 0) break;
-		const mkSqNode *nd = &q->node[w->stack[--w->top]];
-		if (mkSq_BoxDistance(pb, &nd->box) >= best) continue;
-		if (nd->left >= 0) { /* the nearer child is walked first: pushed last */
-			double dl = mkSq_BoxDistance(pb, &q->node[nd->left].box), dr = mkSq_BoxDistance(pb, &q->node[nd->right].box);
-			w->stack[w->top++] = dl <= dr ? nd->right : nd->left;
-			w->stack[w->top++] = dl <= dr ? nd->left : nd->right;
+		--w->top;
+		if (w->d2[w->top] >= lim2) continue;
+		const mkSqNode *nd = &q->node[w->node[w->top]];
+		if (nd->count > 0) {
+			w->k = nd->child;
+			w->end = nd->child + nd->count;
 			continue;
 		}
-		w->k = nd->first;
-		w->end = nd->first + nd->count;
+		if (!p->has_box && ++p->opened > MK_SQ_SPHERE_NODES) {
+			mkSq_BoxMode(q, p, w);
+			lim2 = mkSq_Limit2(p, best);
+		}
+		double dl = mkSq_NodeDistance2(p, &q->node[nd->child]), dr = mkSq_NodeDistance2(p, &q->node[nd->child + 1]);
+		int near = dl <= dr ? nd->child : nd->child + 1;
+		double dn = dl <= dr ? dl : dr, df = dl <= dr ? dr : dl;
+		if (df < lim2) { w->node[w->top] = 2 * nd->child + 1 - near; w->d2[w->top++] = df; }
+		if (dn < lim2) { w->node[w->top] = near; w->d2[w->top++] = dn; }
 	}
 	return n;
 }
 
-/* The batch's screen of n candidate pairs (outer models) against the
- * clearance best: far[m] = 1 when the pair's distance is certified at least
- * best (a separating direction, MK_PATH_SEPARATING), so that it cannot lower
- * the pose's clearance; 0 when the one-pair narrow phase must decide. */
-static void mkSq_Screen(const mkSceneQuery *q, const int *idx, int n, const mkBody3 *outer, double best,
-	unsigned char *far)
+/* A pair whose outer models the batch certified to overlap: colliding when
+ * the inner models overlap for certain (the same bodies for two smooth
+ * ones; else the batch's status on the inner models), *value then minus the
+ * certified depth. 0 when the one-pair query must decide. */
+static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double upper, double *value)
 {
-	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH];
-	mkContact status[MK_SQ_BATCH];
-	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
-	for (int m = 0; m < n; ++m) { i1[m] = 2 * idx[m] + 1; i2[m] = 0; }
-	mkBatchPairs3 pairs = {n, q->obs, outer, i1, i2};
-	mkBatchOut3 out;
-	memset(&out, 0, sizeof out);
-	out.status = status;
-	out.clear = clear;
-	out.path = path;
-	mkResult r = mkCollide3_Batch(&pairs, MK_BATCH_CLEARANCE, fmax(best, 0.0), &out, NULL);
-	for (int m = 0; m < n; ++m)
-		far[m] = (unsigned char)((r == MK_OK || r == MK_ERR_CONVERGENCE) && path[m] == MK_PATH_SEPARATING && clear[m]);
+	if (p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH) { *value = upper; return 1; }
+	int i1 = 2 * i, i2 = 0;
+	mkContact st;
+	unsigned char path;
+	double up;
+	mkBatchPairs3 pairs = {1, q->obs, &p->inner, &i1, &i2};
+	mkBatchOut3 out = {.status = &st, .upper = &up, .path = &path};
+	if (mkCollide3_Batch(&pairs, MK_BATCH_STATUS, 0.0, &out, NULL) != MK_OK || path != MK_PATH_OVERLAP_POINT) return 0;
+	*value = up;
+	return 1;
 }
 
-/* One part against the scene: the pairs in the walk's order, each screened
- * by the batch (MK_SQ_BATCH at a time, against the clearance found so far)
- * and, unless certified no nearer than it, answered by mkSq_Pair. The
- * answers are those of mkSq_Pair on every pair in the walk's order: a pair
- * the screen set aside cannot change them. Returns 1 when colliding. */
-static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, mkPoseAnswer *out)
+/* Pair i's one-pair answer (mkSq_Pair), or v and s as given when the
+ * pair's overlap is already certified (s colliding), into the pose's
+ * answer. Returns 1 when colliding. */
+static int mkSq_Take(const mkSceneQuery *q, const mkSqPart *p, int i, mkPoseStatus s, double v, double *best,
+	mkPoseAnswer *out)
 {
-	mkBody3 outer = mkSq_Place(q->part[2 * j + 1], R, c), inner = mkSq_Place(q->part[2 * j], R, c);
-	int smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
-	mkSqBox pb = mkSq_BodyBox(outer);
+	if (s != MK_POSE_COLLIDING) s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
+	if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
+	if (v < *best || s == MK_POSE_COLLIDING) {
+		*best = v;
+		out->obstacle = i;
+		out->part = p->j;
+	}
+	if (s != MK_POSE_COLLIDING) return 0;
+	out->status = MK_POSE_COLLIDING;
+	out->clearance = v;
+	return 1;
+}
+
+/* The pairs of a part left to the one-pair query: their obstacles,
+ * certified lower bounds of their distances and margins, the lowest bound
+ * first. */
+typedef struct mkSqLeft {
+	int n, i[MK_SQ_LEFT];
+	double lower[MK_SQ_LEFT], margin[MK_SQ_LEFT];
+} mkSqLeft;
+
+/* The pairs left, lowest bound first, by the one-pair query, each skipped
+ * when its bound exceeds the clearance found by then by its margin (it
+ * cannot lower it). Returns 1 when colliding. */
+static int mkSq_Resolve(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, double *best, mkPoseAnswer *out)
+{
+	int n = l->n;
+	l->n = 0;
+	for (int e = 0; e < n; ++e)
+		if (!(l->lower[e] > *best + l->margin[e]) && mkSq_Take(q, p, l->i[e], MK_POSE_FREE, 0.0, best, out)) return 1;
+	return 0;
+}
+
+/* Pair i left to the one-pair query with the certified lower bound lo
+ * (answering the pairs left when full). Returns 1 when colliding. */
+static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int i, double lo, double *best,
+	mkPoseAnswer *out)
+{
+	if (l->n == MK_SQ_LEFT && mkSq_Resolve(q, p, l, best, out)) return 1;
+	mkVec3 d = mkVec3_Sub(p->outer.t, q->obs[2 * i + 1].t);
+	int at = l->n++;
+	for (; at > 0 && l->lower[at - 1] > lo; --at) {
+		l->i[at] = l->i[at - 1];
+		l->lower[at] = l->lower[at - 1];
+		l->margin[at] = l->margin[at - 1];
+	}
+	l->i[at] = i;
+	l->lower[at] = lo;
+	l->margin[at] = 4e-12 * (sqrt(mkVec3_Dot(d, d)) + q->oquick[i].r + q->pquick[p->j].r);
+	return 0;
+}
+
+/* The narrow phase of the candidates at positions pos[0 .. n) in the
+ * walk's order, against the bound b = min(best, bound): best the smallest
+ * one-pair value, bound the smallest certified upper bound of a pair's
+ * distance found (the pose's clearance is at most either). The quick
+ * certificates (mkSqQuick_Pair) first, the batch on the pairs they leave
+ * (clearance mode with delta = b, or status mode while b is infinite);
+ * then, in the walk's order, each pair not certainly at least b away (by
+ * the boxes) is set aside when certified at least b away, is colliding
+ * when an overlap is certified (mkSq_Contact for the batch's), else it is
+ * left to the one-pair query (mkSq_Leave) and its certified upper bound
+ * lowers bound. Returns 1 when colliding. */
+static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, double *bound,
+	mkSqLeft *left, mkPoseAnswer *out)
+{
+	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], quick[MK_SQ_BATCH], slot[MK_SQ_BATCH], nb = 0;
+	double b = fmin(*best, *bound), upper[MK_SQ_BATCH], lower[MK_SQ_BATCH], depth[MK_SQ_BATCH];
+	int known = isfinite(b);
+	mkContact status[MK_SQ_BATCH];
+	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
+	mkSq_Placed(p);
+	for (int m = 0; m < n; ++m) {
+		int i = q->order[pos[m]];
+		quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
+			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, b, &depth[m]);
+		slot[m] = quick[m] ? -1 : nb;
+		if (!quick[m]) { i1[nb] = 2 * i + 1; i2[nb++] = 0; }
+	}
+	mkBatchPairs3 pairs = {nb, q->obs, &p->outer, i1, i2};
+	mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .clear = clear, .path = path};
+	mkResult r = nb == 0 ? MK_OK : mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS,
+		known ? fmax(b, 0.0) : 0.0, &bo, NULL);
+	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
+	for (int m = 0; m < n; ++m) {
+		int i = q->order[pos[m]], k = slot[m];
+		if (mkSq_Far(p, &q->sbox[pos[m]], fmin(*best, *bound))) continue;
+		++out->pairs;
+		if (quick[m] == 1 || (k >= 0 && ok && known && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
+		double v = -depth[m];
+		if (quick[m] == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
+			return mkSq_Take(q, p, i, MK_POSE_COLLIDING, v, best, out);
+		int got = k >= 0 && ok;
+		if (got && upper[k] < *bound) *bound = upper[k];
+		if (mkSq_Leave(q, p, left, i, got && !isnan(lower[k]) ? lower[k] : -INFINITY, best, out)) return 1;
+	}
+	return 0;
+}
+
+/* One part against the scene: the walk's candidates, MK_SQ_BATCH at a time
+ * (one, answered at once, while no clearance is known, so that the first
+ * pair sets it), each group through mkSq_Narrow, then the pairs left by
+ * the one-pair query (mkSq_Resolve). Returns 1 when colliding. */
+static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, double *bound,
+	mkPoseAnswer *out)
+{
+	mkSqPart p;
+	p.smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
+	p.rest = &q->part[2 * j];
+	p.R = R;
+	p.at = c;
+	mkVec3 pc = mkVec3_Add(c, mkMat3_MulVec(R, p.rest[1].t));   /* as mkSq_Place: the outer model's centre */
+	p.c[0] = pc.x;
+	p.c[1] = pc.y;
+	p.c[2] = pc.z;
+	p.placed = 0;
+	p.reach = q->reach[j];
+	p.h[0] = p.h[1] = p.h[2] = 0.0;
+	p.has_box = p.opened = 0;
+	p.j = j;
 	mkSqWalk w;
-	w.top = w.k = w.end = 0;
-	w.stack[w.top++] = 0;
-	int idx[MK_SQ_BATCH];
-	unsigned char far[MK_SQ_BATCH];
+	w.k = w.end = 0;
+	w.top = 1;
+	w.node[0] = 1;
+	w.d2[0] = mkSq_NodeDistance2(&p, &q->node[1]);
+	mkSqLeft left;
+	left.n = 0;
+	int pos[MK_SQ_BATCH];
 	for (;;) {
-		/* no clearance yet (max_clearance infinite): the first pair alone */
-		int n = mkSq_Collect(q, &w, &pb, *best, idx, isfinite(*best) ? MK_SQ_BATCH : 1);
-		if (n == 0) return 0;
-		if (isfinite(*best)) mkSq_Screen(q, idx, n, &outer, *best, far);
-		else memset(far, 0, sizeof far);
-		for (int m = 0; m < n; ++m) {
-			int i = idx[m];
-			if (mkSq_BoxDistance(&pb, &q->obox[i]) >= *best) continue;
-			++out->pairs;
-			if (far[m]) continue;
-			double v;
-			mkPoseStatus s = mkSq_Pair(q, i, inner, outer, smooth, &v);
-			if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
-			if (v < *best || s == MK_POSE_COLLIDING) {
-				*best = v;
-				out->obstacle = i;
-				out->part = j;
-			}
-			if (s == MK_POSE_COLLIDING) {
-				out->status = MK_POSE_COLLIDING;
-				out->clearance = v;
-				return 1;
-			}
-		}
+		double b = fmin(*best, *bound);
+		int n = mkSq_Collect(q, &w, &p, b, pos, isfinite(b) ? MK_SQ_BATCH : 1);
+		if (n == 0) return mkSq_Resolve(q, &p, &left, best, out);
+		if (mkSq_Narrow(q, &p, pos, n, best, bound, &left, out)) return 1;
+		if (!isfinite(*best) && mkSq_Resolve(q, &p, &left, best, out)) return 1;   /* the first pair sets best */
 	}
 }
 
@@ -408,9 +652,9 @@ mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnsw
 	out->pairs = 0;
 	if (!mkSq_Pose(q, pose, &R, &c)) { out->status = MK_POSE_UNCERTAIN; out->clearance = NAN; return MK_ERR_ARGUMENT; }
 	if (q->nob == 0) return MK_OK;
-	double best = q->opt.max_clearance;
+	double best = q->opt.max_clearance, bound = INFINITY;
 	for (int j = 0; j < q->parts; ++j)
-		if (mkSq_PartPose(q, j, R, c, &best, out)) return MK_OK;
+		if (mkSq_PartPose(q, j, R, c, &best, &bound, out)) return MK_OK;
 	out->clearance = best;
 	return MK_OK;
 }
@@ -438,10 +682,8 @@ mkResult mkSceneQuery_Run(const mkSceneQuery *q, const double *poses, long n, mk
 {
 	if (!q || (n > 0 && (!poses || !out)) || n < 0) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no query, poses or answers");
 	int ps = mkSceneQuery_PoseSize(q);
-	mkMat3 R;
-	mkVec3 c;
 	for (long k = 0; k < n; ++k)
-		if (!mkSq_Pose(q, poses + k * ps, &R, &c))
+		if (!mkSq_PoseOk(q, poses + k * ps))
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "pose %ld is out of range: its %d values must be finite numbers of "
 				"magnitude at most 1e150%s", k, ps, q->dim == 3 ? " and its quaternion nonzero" : "");
 	mkSqJob J = {q, poses, n, out};

@@ -1,0 +1,44 @@
+/* scenepair.h - the scene query's quick certificates of a pair of
+ * superquadric bodies, before the batch (internal to libmink_cspace).
+ *
+ * mkSqQuick_Pair(o, ko, p, kp, R, smooth, best, &depth), margin m = 4e-12
+ * of the pair's size (|d| + r_O + r_P, as mkCollide3_PairSize):
+ *  - f(u) = |d| - h_O(u) - h_P(u) at u = d / |d|, d from o's centre to
+ *    p's, is a lower bound of the distance. Returns 1 when f(u) > best + m
+ *    (best finite: the pair is certainly at least best away), 3 when
+ *    f(u) > m and best is infinite (separated; the exact distance is
+ *    wanted), 0 when m < f(u) <= best + m (left to the batch);
+ *  - smooth != 0 (the bodies are the declared shapes): returns 2 when the
+ *    bodies overlap for certain. A point x of the centre segment inside
+ *    both, by their gauges g_O, g_P < 1, puts balls of radii (1 - g) rho
+ *    about x inside each, so the depth is at least their sum (> m, in
+ *    depth). The gauges are linear along the segment (each is homogeneous
+ *    about its own centre): g_O(x_t) = t g_O(c_P) and g_P(x_t) = (1 - t)
+ *    g_P(c_O) at x_t = c_O + t d, so the best x is an end of the interval
+ *    of t where both are below 1 (the gauges rounded up by the slack);
+ *  - 0 otherwise.
+ * p is R M_P placed: its gauge is read through kp (made from M_P) and R^T. */
+#ifndef MINK_CSPACE_SCENEPAIR_H
+#define MINK_CSPACE_SCENEPAIR_H
+
+#include "mink/body.h"
+
+/* A body's data for the quick certificates. */
+typedef struct mkSqQuick {
+	mkMat3 Mi;     /* M^-1 */
+	double r;      /* max(a, b, c) |M|_F: the radius in the pair's size (mkCollide3_PairSize) */
+	double rho;    /* a ball about the centre inside the body: sigma_min(M) / |(1/a, 1/b, 1/c)| at least */
+	double slack;  /* relative rounding of the gauge */
+} mkSqQuick;
+
+mkSqQuick mkSqQuick_Make(mkBody3 b);
+
+/* The canonical shape's gauge at y, |(|(y1/a, y2/b)|_p2, y3/c)|_p1 with
+ * p = 2 / eps (dual 0), or its support value at y, the dual norm
+ * |(|(a y1, b y2)|_q2, c y3)|_q1 with q = 2 / (2 - eps) (dual 1). */
+double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual);
+
+int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, mkMat3 R, int smooth,
+	double best, double *depth);
+
+#endif
