@@ -10,7 +10,9 @@
  * centre; body 2's centre is body 1's plus an offset of length 1e-6 ... 30
  * (logarithmically) in any direction, so that deep overlaps, touching pairs
  * and far pairs are all met. The next byte picks a start direction for
- * mkCollide3_NormalFrom, the last one the batch's mode and clearance delta.
+ * mkCollide3_NormalFrom, the next the batch's mode and clearance delta, and
+ * the last one's low bits make either body of the batch an ellipsoid
+ * (e1 = e2 = 1: the batch's ellipsoid paths).
  *
  * The oracle evaluates, with its own code (the nested l_p dual norms below,
  * not mkBody3_SupportValue), the support functions h1, h2 and the bound
@@ -333,9 +335,22 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	fuzzCheck("normal-from", rc, &c, &f1, &f2, scale);
 	rc = mkCollide3_Ray(m1, m2, &c);
 	fuzzCheck("ray", rc, &c, &f1, &f2, scale);
-	uint8_t how = fuzzTake(&r);
+	uint8_t how = fuzzTake(&r), kind = fuzzTake(&r);
 	mkBody3 mm[2] = { m1, m2 };
 	fuzzBody ff[2] = { f1, f2 };
+	/* the batch's ellipsoid paths need exponents of exactly 1, which the
+	 * decoded exponents never are: the last byte's low bits make them so */
+	for (int i = 0; i < 2; ++i)
+		if (kind & (1u << i)) {
+			ff[i].e1 = ff[i].e2 = 1.0;
+			mm[i].shape.eps1 = mm[i].shape.eps2 = 1.0;
+		}
+	if (kind & 3u) {
+		mkCollision3 ce;
+		mkResult re = mkCollide3_Normal(mm[0], mm[1], &ce);
+		fuzzCheck("normal (ellipsoids)", re, &ce, &ff[0], &ff[1], scale);
+		single = ce.status;
+	}
 	fuzzCheckBatch(mm, ff, (mkBatchMode)(how & 3), 0.5 * scale * (how >> 2) / 63.0, single, scale);
 	return 0;
 }
