@@ -6,7 +6,9 @@
  * certified lower bound of each pair's signed distance), each bound
  * positive and at least the segment's reported clearance. The bodies of
  * the dense check are placed here from the scene's declared shapes, 2D
- * ones as the superquadric whose z = 0 section they are (docs/scene.md). */
+ * ones as the superquadric whose z = 0 section they are (docs/scene.md).
+ * The same for one path per query of the experiment's maze, home and
+ * passage scenes (boxes and cylinders by their models). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,17 +33,37 @@ static const char *scene3 =
 	"obstacle sphere a=1.2 at=3,-3,-2\nobstacle superquadric a=1 b=1 c=3 eps1=0.5 eps2=1.5 at=-2,3,2\n"
 	"bounds -6,6,-6,6,-6,6\nstart -2,-2,-3,1,0,0,0\ngoal 2,2,3,0.7,0.7,0,0\n";
 
-static mkBody3 lift(const mkSceneBody *b)
+/* A scene body in 3D form: a smooth body as declared; a box or cylinder
+ * by its model on the side (inner: inside it; outer: enclosing it) at the
+ * scene query's default tolerance (1e-4 of |M|_F times the half diagonal). */
+static mkBody3 lift(const mkSceneBody *b, mkBound side)
 {
-	if (b->dim == 3) return b->spec.body3;
+	char msg[256];
+	double err, f = 0.0, s2 = 0.0;
+	int n = b->dim;
+	for (int i = 0; i < n * n; ++i) {
+		double m = n == 2 ? b->spec.body2.M.m[i / 2][i % 2] : b->spec.body3.M.m[i / 3][i % 3];
+		f += m * m;
+	}
+	if (b->kind == MK_SCENE_BOX) for (int i = 0; i < n; ++i) s2 += 0.25 * b->size[i] * b->size[i];
+	if (b->kind == MK_SCENE_CYLINDER) s2 = b->size[0] * b->size[0] + 0.25 * b->size[1] * b->size[1];
+	if (n == 3) {
+		mkBody3 out = b->spec.body3;
+		double delta = 1e-4 * sqrt(f * s2);
+		if (b->kind != MK_SCENE_SMOOTH && mkSceneBody3_Model(b, delta, side, &out, &err, msg, sizeof msg) != MK_OK)
+			ENSURE(!"the model of a box or cylinder");
+		return out;
+	}
 	mkBody2 c = b->spec.body2;
+	if (b->kind != MK_SCENE_SMOOTH && mkSceneBody2_Model(b, 1e-4 * sqrt(f * s2), side, &c, &err, msg, sizeof msg) != MK_OK)
+		ENSURE(!"the model of a box");
 	mkShape3 s = {c.shape.a, c.shape.b, 1.0, 1.0, c.shape.eps};
 	mkMat3 M = {{{c.M.m[0][0], c.M.m[0][1], 0}, {c.M.m[1][0], c.M.m[1][1], 0}, {0, 0, 1}}};
 	return mkBody3_Make(s, M, mkVec3_Make(c.t.x, c.t.y, 0));
 }
 
 /* Part j of the robot at pose p, placed from the scene's declared shape. */
-static mkBody3 place_part(const mkScene *s, const double *p, int j)
+static mkBody3 place_part(const mkScene *s, const double *p, int j, mkBound side)
 {
 	mkMat3 R;
 	mkVec3 c;
@@ -53,7 +75,7 @@ static mkBody3 place_part(const mkScene *s, const double *p, int j)
 		R = mkMat3_FromQuat(p[3], p[4], p[5], p[6]);
 		c = mkVec3_Make(p[0], p[1], p[2]);
 	}
-	mkBody3 part = lift(&s->parts[j]);
+	mkBody3 part = lift(&s->parts[j], side);
 	part.t = mkVec3_Add(c, mkMat3_MulVec(R, part.t));
 	part.M = mkMat3_Mul(R, part.M);
 	return part;
@@ -67,7 +89,8 @@ static double dense_pose(const mkScene *s, const double *p, mkColliderScratch *s
 	for (int j = 0; j < s->part_count; ++j)
 		for (int i = 0; i < s->obstacle_count; ++i) {
 			mkCollision3 col;
-			if (mkCollider_Run(ref, lift(&s->obstacles[i]), place_part(s, p, j), scratch, &col) != MK_OK) return -INFINITY;
+			mkBody3 ob = lift(&s->obstacles[i], MK_BOUND_OUTER);
+			if (mkCollider_Run(ref, ob, place_part(s, p, j, MK_BOUND_OUTER), scratch, &col) != MK_OK) return -INFINITY;
 			lo = fmin(lo, col.distance);
 		}
 	return lo;
@@ -81,7 +104,8 @@ static int dense_overlap(const mkScene *s, const double *p, mkColliderScratch *s
 	for (int j = 0; j < s->part_count; ++j)
 		for (int i = 0; i < s->obstacle_count; ++i) {
 			mkCollision3 col;
-			if (mkCollider_Run(ref, lift(&s->obstacles[i]), place_part(s, p, j), scratch, &col) == MK_OK &&
+			mkBody3 ob = lift(&s->obstacles[i], MK_BOUND_INNER);
+			if (mkCollider_Run(ref, ob, place_part(s, p, j, MK_BOUND_INNER), scratch, &col) == MK_OK &&
 				col.distance <= 0.0 && col.residual == 0.0)
 				return 1;
 		}
@@ -196,7 +220,21 @@ static void check_scene(const char *text, const char *planner, int *paths, int *
 	mkScene_Free(&s);
 }
 
-int main(void)
+/* The text of scene file NAME.txt in directory dir (static buffer). */
+static const char *read_scene(const char *dir, const char *name)
+{
+	static char text[1 << 16];
+	char path[1024];
+	snprintf(path, sizeof path, "%s/%s.txt", dir, name);
+	FILE *fp = fopen(path, "r");
+	size_t n = fp ? fread(text, 1, sizeof text - 1, fp) : 0;
+	ENSURE(fp != NULL && n > 0);
+	if (fp) fclose(fp);
+	text[n] = 0;
+	return text;
+}
+
+int main(int argc, char **argv)
 {
 	static const char *planners[] = {"RRTConnect", "PRM", "KPIECE1", "RRT"};
 	int paths = 0, bad = 0;
@@ -205,6 +243,14 @@ int main(void)
 	ENSURE(bad == 0);
 	ENSURE(paths == 4 * 3);
 	printf("%d paths of 4 planners (2D and 3D robots of 2 parts): %d segments fail the dense referee check\n", paths, bad);
+	/* the experiment's scenes of several parts and obstacle kinds: each query solved by RRTConnect */
+	static const char *files[] = {"maze2d", "home3d", "passage3d"};
+	paths = bad = 0;
+	const char *dir = argc > 1 ? argv[1] : "experiments/plan/scenes";
+	for (int k = 0; k < 3; ++k) check_scene(read_scene(dir, files[k]), "RRTConnect", &paths, &bad);
+	ENSURE(bad == 0);
+	ENSURE(paths == 2 + 2 + 1);
+	printf("%d paths in the maze, home and passage scenes: %d segments fail the dense referee check\n", paths, bad);
 	int motions = 0;
 	bad = 0;
 	check_motions(scene2, 100, &motions, &bad);
