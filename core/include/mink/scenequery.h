@@ -132,8 +132,9 @@ typedef struct mkMotionAnswer {
  * bound L = |b_pos - a_pos| + r * angle on how far any robot point moves per
  * unit of t (r = mkSceneQuery_RobotRadius, angle the total rotation) turns
  * a certified clearance c at time t (a lower bound, from the pose query or
- * from the parts' bounding spheres against the obstacles' exact boxes) into
- * an interval around t on which the clearance stays above margin. The
+ * from the parts' bounding spheres and exact boxes against the obstacles'
+ * exact boxes) into an interval around t on which the clearance stays
+ * above margin. The
  * motion is first probed for a witness of contact (a point inside a part's
  * and an obstacle's inner models, at up to 64 evenly spaced poses, coarse
  * to fine); then [0, 1], or [0, the witness's time], is covered by

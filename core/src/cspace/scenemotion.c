@@ -7,9 +7,10 @@
  * poses in coarse to fine order), then covers [0, 1] by bisection: the
  * pose at an interval's midpoint, its certified clearance c and the bound L
  * on how far any robot point moves per unit of t cover an interval around
- * it on both sides; what is left is split again. A cheap lower bound of the
- * clearance (each part's bounding sphere against the obstacles' exact boxes)
- * covers an interval without the pose query when it is large enough. */
+ * it on both sides; what is left is split again. A cheap lower bound of
+ * the clearance (each part's bounding sphere and exact box at the pose
+ * against the obstacles' exact boxes) covers an interval without the pose
+ * query when it is large enough. */
 #include "mink/scenequery.h"
 
 #include <math.h>
@@ -139,9 +140,32 @@ static double mkSm_PointBox(const double *x, const double *lo, const double *hi,
 	return sqrt(d2);
 }
 
+/* The distance between the boxes [alo, ahi] and [blo, bhi] in the first dim axes. */
+static double mkSm_BoxBox(const double *alo, const double *ahi, const double *blo, const double *bhi, int dim)
+{
+	double d2 = 0.0;
+	for (int i = 0; i < dim; ++i) {
+		double g = fmax(blo[i] - ahi[i], alo[i] - bhi[i]);
+		if (g > 0.0) d2 += g * g;
+	}
+	return sqrt(d2);
+}
+
+/* The exact box of body b in its first dim axes (grown by the rounding allowance). */
+static void mkSm_Box(const mkBody3 *b, int dim, double *lo, double *hi)
+{
+	for (int c = 0; c < dim; ++c) {
+		mkVec3 e = {c == 0, c == 1, c == 2};
+		double h = mkShape3_SupportValue(b->shape, mkMat3_MulTVec(b->M, e)) * (1.0 + MK_SM_ROUND);
+		double t = c == 0 ? b->t.x : c == 1 ? b->t.y : b->t.z;
+		lo[c] = t - h;
+		hi[c] = t + h;
+	}
+}
+
 /* Keep obstacle i (its outer box at distance d from the swept box) among
  * the MK_SM_NEAR nearest; the one it displaces, or i itself, lowers far. */
-static void mkSm_AddObstacle(mkSmMotion *m, int i, const mkBody3 *outer, double d)
+static void mkSm_AddObstacle(mkSmMotion *m, int i, const double *lo, const double *hi, double d)
 {
 	int k = m->near;
 	if (k == MK_SM_NEAR) {
@@ -153,12 +177,8 @@ static void mkSm_AddObstacle(mkSmMotion *m, int i, const mkBody3 *outer, double 
 	} else ++m->near;
 	mkSmObstacle *o = &m->ob[k];
 	o->index = i;
-	for (int c = 0; c < 3; ++c) {
-		mkVec3 e = {c == 0, c == 1, c == 2};
-		double h = mkShape3_SupportValue(outer->shape, mkMat3_MulTVec(outer->M, e)), t = c == 0 ? outer->t.x : c == 1 ? outer->t.y : outer->t.z;
-		o->lo[c] = t - h;
-		o->hi[c] = t + h;
-	}
+	memcpy(o->lo, lo, sizeof o->lo);
+	memcpy(o->hi, hi, sizeof o->hi);
 	m->far_dist[k] = d;
 }
 
@@ -185,17 +205,10 @@ static void mkSm_SetupCheap(mkSmMotion *m, double r)
 	m->near = 0;
 	m->far = INFINITY;
 	for (int i = 0; mkSceneQuery_ObstacleBody(m->q, i, 1, &b); ++i) {
-		double lo[3], hi[3], d2 = 0.0, s = 0.0;
-		for (int c = 0; c < m->dim; ++c) {
-			mkVec3 e = {c == 0, c == 1, c == 2};
-			double h = mkShape3_SupportValue(b.shape, mkMat3_MulTVec(b.M, e)), t = c == 0 ? b.t.x : c == 1 ? b.t.y : b.t.z;
-			lo[c] = t - h;
-			hi[c] = t + h;
-			double g = fmax(lo[c] - shi[c], slo[c] - hi[c]);
-			if (g > 0.0) d2 += g * g;
-			s += fabs(lo[c]) + fabs(hi[c]) + fabs(slo[c]) + fabs(shi[c]);
-		}
-		mkSm_AddObstacle(m, i, &b, sqrt(d2) - MK_SM_ROUND * s);
+		double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0}, s = 0.0;
+		mkSm_Box(&b, m->dim, lo, hi);
+		for (int c = 0; c < m->dim; ++c) s += fabs(lo[c]) + fabs(hi[c]) + fabs(slo[c]) + fabs(shi[c]);
+		mkSm_AddObstacle(m, i, lo, hi, mkSm_BoxBox(slo, shi, lo, hi, m->dim) - MK_SM_ROUND * s);
 	}
 	for (int k = 0; k < m->near; ++k) {
 		mkSceneQuery_ObstacleBody(m->q, m->ob[k].index, 0, &m->ob[k].inner);
@@ -203,9 +216,10 @@ static void mkSm_SetupCheap(mkSmMotion *m, double r)
 	}
 }
 
-/* A certified lower bound of the clearance at pose p, by the parts'
- * bounding spheres against the near obstacles' boxes and far (-inf when
- * the cheap layer is off). */
+/* A certified lower bound of the clearance at pose p: per pair of a part
+ * and a near obstacle, the larger of the distances from the part's bounding
+ * sphere and from its exact box at the pose to the obstacle's box; far for
+ * the others (-inf when the cheap layer is off). */
 static double mkSm_Cheap(const mkSmMotion *m, const double *p)
 {
 	if (m->parts == 0) return -INFINITY;
@@ -213,12 +227,14 @@ static double mkSm_Cheap(const mkSmMotion *m, const double *p)
 	mkBody3 b;
 	for (int j = 0; j < m->parts; ++j) {
 		mkSceneQuery_PartBody(m->q, p, j, 1, &b);
-		double x[3] = {b.t.x, b.t.y, b.t.z};
+		double x[3] = {b.t.x, b.t.y, b.t.z}, plo[3] = {0.0, 0.0, 0.0}, phi[3] = {0.0, 0.0, 0.0};
+		mkSm_Box(&b, m->dim, plo, phi);
 		for (int k = 0; k < m->near; ++k) {
 			const mkSmObstacle *o = &m->ob[k];
 			double s = m->rad[j];
-			for (int c = 0; c < m->dim; ++c) s += fabs(x[c]) + fabs(o->lo[c]) + fabs(o->hi[c]);
-			lo = fmin(lo, mkSm_PointBox(x, o->lo, o->hi, m->dim) - m->rad[j] - MK_SM_ROUND * s);
+			for (int c = 0; c < m->dim; ++c) s += fabs(plo[c]) + fabs(phi[c]) + fabs(o->lo[c]) + fabs(o->hi[c]);
+			double d = fmax(mkSm_PointBox(x, o->lo, o->hi, m->dim) - m->rad[j], mkSm_BoxBox(plo, phi, o->lo, o->hi, m->dim));
+			lo = fmin(lo, d - MK_SM_ROUND * s);
 		}
 	}
 	return lo;
