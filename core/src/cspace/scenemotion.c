@@ -335,8 +335,9 @@ static double mkSm_Pose(const mkSmMotion *m, const double *p, mkPoseAnswer *pa)
  * covered when [x, y] is taken: its midpoint t with room rho covers
  * [t - f rho / L, t + f rho / L], on which the clearance stays at least
  * margin + (1 - f) rho; the cheap bound covers the whole interval when large
- * enough. A midpoint with room <= stall (touching, or left uncertain by the
- * narrow phase) splits its interval in two at t. Returns 1 when [0, end] is
+ * enough, and when it reaches a quarter of that, it covers its own interval
+ * around t without the pose query. A midpoint with room <= stall (touching,
+ * or left uncertain by the narrow phase) splits its interval in two at t. Returns 1 when [0, end] is
  * covered (free_until = end), else 0 with free_until = x of the interval
  * where a pose was colliding (status set), an interval with room <= stall
  * at its midpoint became too short to split (L (y - x) / 2 <= stall), or
@@ -354,6 +355,14 @@ static int mkSm_Cover(mkSmMotion *m, double f, double end, double *lowest)
 		double cheap = mkSm_Cheap(m, p) - m->margin;
 		if (cheap > 0.0 && m->L * need <= f * cheap) {
 			*lowest = fmin(*lowest, cheap + m->margin - m->L * need);
+			continue;
+		}
+		if (cheap > 0.0 && 4.0 * f * cheap >= m->L * need && top + 2 <= MK_SM_STACK) {
+			/* the cheap bound covers a good part: its rest is split, no pose query */
+			double r = f * cheap / m->L;
+			*lowest = fmin(*lowest, cheap + m->margin - m->L * r);
+			xs[top] = t + r; ys[top++] = y;
+			xs[top] = x; ys[top++] = t - r;
 			continue;
 		}
 		if (m->out->poses >= m->max_poses) return 0;
