@@ -112,7 +112,8 @@ static void test_motions(void)
 	double r0[3] = {0, 0, 0}, r1[3] = {0, 0, MK_PI / 2};
 	ENSURE(mkSceneQuery_Motion(q, r0, r1, 0.0, 1000000, &m) == MK_OK);
 	ENSURE(m.status == MK_POSE_COLLIDING && m.obstacle == 0 && m.contact_time < 0.5);
-	ENSURE(mkSceneQuery_MotionTest(q, r0, r1, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_COLLIDING && m.obstacle == 0);
+	ENSURE(mkSceneQuery_MotionTest(q, r0, r1, 0.0, 1000000, &m) == MK_OK);
+	ENSURE(m.status == MK_POSE_COLLIDING && m.obstacle == 0);
 	mkSceneQuery_Destroy(q);
 	mkScene_Free(&s);
 	q = make("dim 2\nrobot box size=4,0.2\nobstacle circle a=0.5 at=2.5,2.5\nheadings 1\n", &s);
@@ -120,6 +121,28 @@ static void test_motions(void)
 	ENSURE(m.clearance > 0.0 && m.clearance <= sqrt(12.5) - 0.5 - 2.0 + 1e-12);
 	ENSURE(mkSceneQuery_MotionTest(q, r0, r1, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_FREE);
 	ENSURE(m.clearance > 0.0 && m.clearance <= sqrt(12.5) - 0.5 - 2.0 + 1e-12);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+	/* a chain of 17 discs of radius 0.1 (more parts than the cheap layer
+	 * takes: pose queries only) along x from -5 to 5: 1.9 from a unit disc
+	 * at (0, 3); through one at (0, 1.05), where some disc's centre lies
+	 * within 1.1 of the obstacle's at the contact found */
+	char chain[2048] = "dim 2\n";
+	for (int k = 0; k < 17; ++k)
+		snprintf(chain + strlen(chain), sizeof chain - strlen(chain), "part circle a=0.1 at=%g,0\n", 0.1 * k);
+	size_t base = strlen(chain);
+	snprintf(chain + base, sizeof chain - base, "obstacle circle a=1 at=0,3\nheadings 1\n");
+	q = make(chain, &s);
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_FREE);
+	ENSURE(m.clearance > 0.0 && m.clearance <= 1.9 + 1e-12);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+	snprintf(chain + base, sizeof chain - base, "obstacle circle a=1 at=0,1.05\nheadings 1\n");
+	q = make(chain, &s);
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_COLLIDING);
+	double near = INFINITY;
+	for (int k = 0; k < 17; ++k) near = fmin(near, hypot(10.0 * m.contact_time - 5.0 + 0.1 * k, 1.05));
+	ENSURE(near < 1.1);
 	/* interpolation: the heading the shorter way round, wrapped */
 	double h0[3] = {0, 0, 3.0}, h1[3] = {2, 4, -3.0}, p[3];
 	mkSceneQuery_Interpolate(q, h0, h1, 0.5, p);

@@ -189,7 +189,8 @@ static void mkSm_SetupCheap(mkSmMotion *m, double r)
 {
 	static const double origin[7] = {0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0};
 	mkBody3 b;
-	m->parts = 0;
+	m->parts = m->near = 0;
+	m->far = INFINITY;
 	m->rad_min = INFINITY;
 	for (int j = 0; mkSceneQuery_PartBody(m->q, origin, j, 1, &b); ++j) {
 		if (j == MK_SM_PARTS) { m->parts = 0; return; }
@@ -202,8 +203,6 @@ static void mkSm_SetupCheap(mkSmMotion *m, double r)
 		slo[c] = fmin(m->a[c], m->b[c]) - r;
 		shi[c] = fmax(m->a[c], m->b[c]) + r;
 	}
-	m->near = 0;
-	m->far = INFINITY;
 	for (int i = 0; mkSceneQuery_ObstacleBody(m->q, i, 1, &b); ++i) {
 		double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0}, s = 0.0;
 		mkSm_Box(&b, m->dim, lo, hi);
