@@ -18,7 +18,7 @@ outbase = outdir . "/planning"
 
 set datafile separator comma
 C_SCENE = 3; C_PLANNER = 5; C_CHECKER = 6; C_BUDGET = 7; C_SUCCESS = 10; C_SECONDS = 11
-SCENES = "room2d plate3d"
+SCENES = "room2d maze2d plate3d home3d passage3d"
 PLANNERS = "RRTConnect PRM KPIECE1 RRT"
 CHECKERS = "mink fcl"
 group(s, p, c) = (strcol(C_SCENE) eq s && strcol(C_PLANNER) eq p && strcol(C_CHECKER) eq c)
@@ -45,13 +45,13 @@ hit(g, i) = GS[g] == i && group(word(SCENES, i), word(PLANNERS, GP[g]), word(CHE
 
 do for [term = 1:2] {
   if (term == 1) {
-    set terminal pdfcairo size 11in, 4.5in font "Helvetica,10"
+    set terminal pdfcairo size 13in, 8in font "Helvetica,10"
     set output outbase . ".pdf"
   } else {
-    set terminal pngcairo size 1400, 580 font "Helvetica,10"
+    set terminal pngcairo size 1650, 1000 font "Helvetica,10"
     set output outbase . ".png"
   }
-  set multiplot layout 1, words(SCENES)
+  set multiplot layout 2, 3
   do for [i = 1:words(SCENES)] {
     s = word(SCENES, i)
     set title sprintf("%s: success rate against the time budget", s)
@@ -61,7 +61,7 @@ do for [term = 1:2] {
     set xrange [0.001:budget]
     set yrange [0:1.05]
     set grid
-    set key bottom right
+    set key top left opaque samplen 2 font ",8"
     plot for [g = 1:NG] datafile skip 1 \
       using (hit(g, i) ? column(C_SECONDS) : 10 * budget):(hit(g, i) ? 1.0 / GN[g] : 0) \
       smooth cumulative with steps lw 2 dashtype GC[g] lc GP[g] \

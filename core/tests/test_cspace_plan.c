@@ -65,8 +65,12 @@ static void test_motions(void)
 	mkMotionAnswer m;
 	ENSURE(mkSceneQuery_Motion(q, a, b, 0.0, 1000000, &m) == MK_OK);
 	ENSURE(m.status == MK_POSE_FREE && m.free_until == 1.0);
-	ENSURE(m.clearance > 0.5 && m.clearance <= 1.0 + 1e-12);
+	ENSURE(m.clearance >= 0.5 - 1e-9 && m.clearance <= 1.0 + 1e-12);   /* at least half the certified minimum */
 	printf("disc past a disc: certified minimum clearance %.6f (true 1) in %d poses\n", m.clearance, m.poses);
+	/* the verdict alone: free, the clearance at least a tenth of the true minimum */
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_FREE && m.free_until == 1.0);
+	ENSURE(m.clearance >= 0.1 - 1e-9 && m.clearance <= 1.0 + 1e-12);
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 1.1, 1000000, &m) == MK_OK && m.status != MK_POSE_FREE);
 	/* with a margin of 0.9 it still passes; with 1.1 it cannot */
 	ENSURE(mkSceneQuery_Motion(q, a, b, 0.9, 1000000, &m) == MK_OK && m.status == MK_POSE_FREE && m.clearance >= 0.9);
 	ENSURE(mkSceneQuery_Motion(q, a, b, 1.1, 1000000, &m) == MK_OK && m.status != MK_POSE_FREE);
@@ -83,6 +87,22 @@ static void test_motions(void)
 	ENSURE(m.contact_time >= tc && m.contact_time <= tc + 1e-3);
 	printf("disc through a disc: first contact at t = %.9f (closed form %.9f), contact found at %.6f\n", m.free_until, tc,
 		m.contact_time);
+	/* the verdict alone: some contact, the centres at x = 10 t - 5 and (0, 1.5) nearer than 2 */
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_COLLIDING);
+	ENSURE(m.free_until <= tc && hypot(10.0 * m.contact_time - 5.0, 1.5) < 2.0);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+	/* a wall 0.002 thick across the path of a disc of radius 0.01 moving 10:
+	 * the disc is inside it only for t in 0.5 +- 0.0011, far less than the
+	 * spacing of any sampling at a usual resolution; neither check passes it */
+	q = make("dim 2\nrobot circle a=0.01\nobstacle box size=0.002,4 at=0.0003,0\nheadings 1\n", &s);
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status != MK_POSE_FREE);
+	ENSURE(m.free_until <= 0.5 - 0.0011 + 0.00003);
+	ENSURE(mkSceneQuery_Motion(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_COLLIDING);
+	ENSURE(m.free_until <= 0.50003 - 0.0011 && m.free_until > 0.50003 - 0.0011 - 1e-4);
+	ENSURE(fabs(10.0 * m.contact_time - 5.0 - 0.0003) < 0.011);
+	printf("disc through a thin wall: motion test %s, first contact at t = %.7f (closed form %.7f)\n", "not free",
+		m.free_until, 0.50003 - 0.0011);
 	mkSceneQuery_Destroy(q);
 	mkScene_Free(&s);
 	/* a bar of half length 2 turning a quarter turn in place sweeps the disc
@@ -92,11 +112,37 @@ static void test_motions(void)
 	double r0[3] = {0, 0, 0}, r1[3] = {0, 0, MK_PI / 2};
 	ENSURE(mkSceneQuery_Motion(q, r0, r1, 0.0, 1000000, &m) == MK_OK);
 	ENSURE(m.status == MK_POSE_COLLIDING && m.obstacle == 0 && m.contact_time < 0.5);
+	ENSURE(mkSceneQuery_MotionTest(q, r0, r1, 0.0, 1000000, &m) == MK_OK);
+	ENSURE(m.status == MK_POSE_COLLIDING && m.obstacle == 0);
 	mkSceneQuery_Destroy(q);
 	mkScene_Free(&s);
 	q = make("dim 2\nrobot box size=4,0.2\nobstacle circle a=0.5 at=2.5,2.5\nheadings 1\n", &s);
 	ENSURE(mkSceneQuery_Motion(q, r0, r1, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_FREE);
 	ENSURE(m.clearance > 0.0 && m.clearance <= sqrt(12.5) - 0.5 - 2.0 + 1e-12);
+	ENSURE(mkSceneQuery_MotionTest(q, r0, r1, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_FREE);
+	ENSURE(m.clearance > 0.0 && m.clearance <= sqrt(12.5) - 0.5 - 2.0 + 1e-12);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+	/* a chain of 17 discs of radius 0.1 (more parts than the cheap layer
+	 * takes: pose queries only) along x from -5 to 5: 1.9 from a unit disc
+	 * at (0, 3); through one at (0, 1.05), where some disc's centre lies
+	 * within 1.1 of the obstacle's at the contact found */
+	char chain[2048] = "dim 2\n";
+	for (int k = 0; k < 17; ++k)
+		snprintf(chain + strlen(chain), sizeof chain - strlen(chain), "part circle a=0.1 at=%g,0\n", 0.1 * k);
+	size_t base = strlen(chain);
+	snprintf(chain + base, sizeof chain - base, "obstacle circle a=1 at=0,3\nheadings 1\n");
+	q = make(chain, &s);
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_FREE);
+	ENSURE(m.clearance > 0.0 && m.clearance <= 1.9 + 1e-12);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
+	snprintf(chain + base, sizeof chain - base, "obstacle circle a=1 at=0,1.05\nheadings 1\n");
+	q = make(chain, &s);
+	ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK && m.status == MK_POSE_COLLIDING);
+	double near = INFINITY;
+	for (int k = 0; k < 17; ++k) near = fmin(near, hypot(10.0 * m.contact_time - 5.0 + 0.1 * k, 1.05));
+	ENSURE(near < 1.1);
 	/* interpolation: the heading the shorter way round, wrapped */
 	double h0[3] = {0, 0, 3.0}, h1[3] = {2, 4, -3.0}, p[3];
 	mkSceneQuery_Interpolate(q, h0, h1, 0.5, p);

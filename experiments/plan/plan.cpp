@@ -1,6 +1,6 @@
 // plan.cpp - OMPL's geometric planners on a mink scene (mink_plan/plan.h):
 // SE(2) or SE(3) with the scene's bounds, mink's scene query as the state
-// validity checker, and its conservative advancement (mkSceneQuery_Motion)
+// validity checker, and its certified motion test (mkSceneQuery_MotionTest)
 // as the motion validator: a motion is valid only when certified free with
 // the asked clearance, never by sampling it at a resolution.
 #include "mink_plan/plan.h"
@@ -172,7 +172,7 @@ private:
 	mkPlanCounts *n_;
 };
 
-// The certified motion check: valid only when mkSceneQuery_Motion says free.
+// The certified motion check: valid only when mkSceneQuery_MotionTest says free.
 class mkPlanMotion : public ob::MotionValidator {
 public:
 	mkPlanMotion(const ob::SpaceInformationPtr &si, const mkSceneQuery *q, int dim, double margin, mkPlanCounts *n)
@@ -197,7 +197,7 @@ private:
 		mkPlanToPose(dim_, s1, a);
 		mkPlanToPose(dim_, s2, b);
 		++n_->motions;
-		bool ok = mkSceneQuery_Motion(q_, a, b, margin_, kMaxPoses, m) == MK_OK && m->status == MK_POSE_FREE;
+		bool ok = mkSceneQuery_MotionTest(q_, a, b, margin_, kMaxPoses, m) == MK_OK && m->status == MK_POSE_FREE;
 		return ok;
 	}
 	const mkSceneQuery *q_;

@@ -9,6 +9,8 @@
 #include <mink_plan/plan_fcl.h>
 
 #define MK_PLANNING_LIST_MAX 8
+#define MK_PLANNING_SCENES "experiments/plan/scenes/room2d.txt,experiments/plan/scenes/maze2d.txt," \
+	"experiments/plan/scenes/plate3d.txt,experiments/plan/scenes/home3d.txt,experiments/plan/scenes/passage3d.txt"
 
 typedef struct mkPlanningList {
 	char given[1024];   /* as given */
@@ -70,14 +72,13 @@ int main(int argc, char **argv)
 {
 	mkPlanningList scenes, planners;
 	char msg[1024];
-	mkPlanningList_Split(&scenes, "experiments/plan/scenes/room2d.txt,experiments/plan/scenes/plate3d.txt", msg,
-		sizeof msg);
+	mkPlanningList_Split(&scenes, MK_PLANNING_SCENES, msg, sizeof msg);
 	mkPlanningList_Split(&planners, "RRTConnect", msg, sizeof msg);
 	double budget = 2.0;
 	long res = 32;
 	mkFlag flags[] = {
-		MK_FLAG_TEXT("--scenes", "LIST", "scene files with planning queries, comma-separated (default\n"
-			"experiments/plan/scenes/room2d.txt,experiments/plan/scenes/plate3d.txt)", &scenes, mkPlanning_ParseScenes),
+		MK_FLAG_TEXT("--scenes", "LIST", "scene files with planning queries, comma-separated (default the five\n"
+			"of experiments/plan/scenes: room2d, maze2d, plate3d, home3d, passage3d)", &scenes, mkPlanning_ParseScenes),
 		MK_FLAG_TEXT("--planners", "LIST", "OMPL planners, comma-separated (default RRTConnect)", &planners,
 			mkPlanning_ParsePlanners),
 		MK_FLAG_DOUBLE("--time", "S", "planning budget per run in seconds, 0.01..600 (default 2)", &budget, 0.01, 600),

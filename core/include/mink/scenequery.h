@@ -140,19 +140,42 @@ typedef struct mkMotionAnswer {
 	int poses;             /* poses checked */
 } mkMotionAnswer;
 
-/* Certify the motion a -> b by conservative advancement, never by sampling
- * it at a resolution: at time t the pose's certified clearance c(t) (a
- * lower bound) and the bound L = |b_pos - a_pos| + r * angle on how far any
- * robot point moves per unit of t (r = mkSceneQuery_RobotRadius, angle the
- * total rotation) give a step dt = (c(t) - margin) / (2 L) on which the
- * clearance stays at least (c(t) + margin) / 2 > margin. The walk stops at
- * t = 1 (free), or when c(t) - margin falls below 1e-9 of the robot's
- * radius plus the motion's length or after max_poses poses: then a pose in
- * contact at t, or a contact found among 1000 poses evenly spaced on
- * [t, 1], makes the motion colliding (a witness, never a certificate of
+/* Certify the motion a -> b, never by sampling it at a resolution. The
+ * bound L = |b_pos - a_pos| + r * angle on how far any robot point moves per
+ * unit of t (r = mkSceneQuery_RobotRadius, angle the total rotation) turns
+ * a certified clearance c at time t (a lower bound, from the pose query or
+ * from the parts' bounding spheres and exact boxes against the obstacles'
+ * exact boxes) into an interval around t on which the clearance stays
+ * above margin. The
+ * motion is first probed for a witness of contact (a point inside a part's
+ * and an obstacle's inner models, at up to 64 evenly spaced poses, coarse
+ * to fine); then [0, 1], or [0, the witness's time], is covered by
+ * bisection, each pose covering (c - margin) / (2 L) on both sides (the
+ * clearance stays at least (c + margin) / 2 there); a pose with c - margin
+ * at most the stall value below (touching, or left uncertain by the pose
+ * query) splits its interval at it for its neighbours to cover, until the
+ * interval is too short for any robot point to move more than that value
+ * within it. Where that does not
+ * cover the motion, conservative advancement from the covered prefix
+ * (steps dt = (c(t) - margin) / (2 L)) locates the first contact: it stops
+ * when c(t) - margin falls below 1e-9 of the robot's radius plus the
+ * motion's length or after max_poses poses; then a pose in contact at t,
+ * or among 1000 poses evenly spaced on (t, end] (end the witness's time or
+ * 1), makes the motion colliding (a witness, never a certificate of
  * freedom); else it is uncertain. margin >= 0. Returns MK_ERR_ARGUMENT on
  * a bad pose or margin (out->status uncertain). */
 MK_API mkResult mkSceneQuery_Motion(const mkSceneQuery *q, const double *a, const double *b, double margin,
+	long max_poses, mkMotionAnswer *out);
+
+/* The verdict alone, sooner: the same certificates as mkSceneQuery_Motion
+ * (free: clearance > margin certified on all of [0, 1]; colliding: a
+ * certified contact at contact_time), but the first witness or colliding
+ * pose found ends the check (contact_time is a contact, not the first one;
+ * free_until the covered prefix), each pose covers 0.9 (c - margin) / L on
+ * both sides (clearance reported: at least margin + (c - margin) / 10), and
+ * a stall (as above) ends it as uncertain without the search for contact.
+ * What a motion validator of a planner needs. */
+MK_API mkResult mkSceneQuery_MotionTest(const mkSceneQuery *q, const double *a, const double *b, double margin,
 	long max_poses, mkMotionAnswer *out);
 
 MK_EXTERN_C_END

@@ -6,7 +6,9 @@
  * certified lower bound of each pair's signed distance), each bound
  * positive and at least the segment's reported clearance. The bodies of
  * the dense check are placed here from the scene's declared shapes, 2D
- * ones as the superquadric whose z = 0 section they are (docs/scene.md). */
+ * ones as the superquadric whose z = 0 section they are (docs/scene.md).
+ * The same for one path per query of the experiment's maze, home and
+ * passage scenes (boxes and cylinders by their models). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,19 +33,38 @@ static const char *scene3 =
 	"obstacle sphere a=1.2 at=3,-3,-2\nobstacle superquadric a=1 b=1 c=3 eps1=0.5 eps2=1.5 at=-2,3,2\n"
 	"bounds -6,6,-6,6,-6,6\nstart -2,-2,-3,1,0,0,0\ngoal 2,2,3,0.7,0.7,0,0\n";
 
-static mkBody3 lift(const mkSceneBody *b)
+/* A scene body in 3D form: a smooth body as declared; a box or cylinder
+ * by its model on the side (inner: inside it; outer: enclosing it) at the
+ * scene query's default tolerance (1e-4 of |M|_F times the half diagonal). */
+static mkBody3 lift(const mkSceneBody *b, mkBound side)
 {
-	if (b->dim == 3) return b->spec.body3;
+	char msg[256];
+	double err, f = 0.0, s2 = 0.0;
+	int n = b->dim;
+	for (int i = 0; i < n * n; ++i) {
+		double m = n == 2 ? b->spec.body2.M.m[i / 2][i % 2] : b->spec.body3.M.m[i / 3][i % 3];
+		f += m * m;
+	}
+	if (b->kind == MK_SCENE_BOX) for (int i = 0; i < n; ++i) s2 += 0.25 * b->size[i] * b->size[i];
+	if (b->kind == MK_SCENE_CYLINDER) s2 = b->size[0] * b->size[0] + 0.25 * b->size[1] * b->size[1];
+	if (n == 3) {
+		mkBody3 out = b->spec.body3;
+		double delta = 1e-4 * sqrt(f * s2);
+		if (b->kind != MK_SCENE_SMOOTH && mkSceneBody3_Model(b, delta, side, &out, &err, msg, sizeof msg) != MK_OK)
+			ENSURE(!"the model of a box or cylinder");
+		return out;
+	}
 	mkBody2 c = b->spec.body2;
+	if (b->kind != MK_SCENE_SMOOTH && mkSceneBody2_Model(b, 1e-4 * sqrt(f * s2), side, &c, &err, msg, sizeof msg) != MK_OK)
+		ENSURE(!"the model of a box");
 	mkShape3 s = {c.shape.a, c.shape.b, 1.0, 1.0, c.shape.eps};
 	mkMat3 M = {{{c.M.m[0][0], c.M.m[0][1], 0}, {c.M.m[1][0], c.M.m[1][1], 0}, {0, 0, 1}}};
 	return mkBody3_Make(s, M, mkVec3_Make(c.t.x, c.t.y, 0));
 }
 
-/* The smallest referee bound over (part, obstacle) pairs at pose p. */
-static double dense_pose(const mkScene *s, const double *p, mkColliderScratch *scratch)
+/* Part j of the robot at pose p, placed from the scene's declared shape. */
+static mkBody3 place_part(const mkScene *s, const double *p, int j, mkBound side)
 {
-	const mkCollider *ref = mkColliders_Find("referee");
 	mkMat3 R;
 	mkVec3 c;
 	if (s->dim == 2) {
@@ -54,29 +75,114 @@ static double dense_pose(const mkScene *s, const double *p, mkColliderScratch *s
 		R = mkMat3_FromQuat(p[3], p[4], p[5], p[6]);
 		c = mkVec3_Make(p[0], p[1], p[2]);
 	}
+	mkBody3 part = lift(&s->parts[j], side);
+	part.t = mkVec3_Add(c, mkMat3_MulVec(R, part.t));
+	part.M = mkMat3_Mul(R, part.M);
+	return part;
+}
+
+/* The smallest referee bound over (part, obstacle) pairs at pose p. */
+static double dense_pose(const mkScene *s, const double *p, mkColliderScratch *scratch)
+{
+	const mkCollider *ref = mkColliders_Find("referee");
 	double lo = INFINITY;
-	for (int j = 0; j < s->part_count; ++j) {
-		mkBody3 part = lift(&s->parts[j]);
-		part.t = mkVec3_Add(c, mkMat3_MulVec(R, part.t));
-		part.M = mkMat3_Mul(R, part.M);
+	for (int j = 0; j < s->part_count; ++j)
 		for (int i = 0; i < s->obstacle_count; ++i) {
 			mkCollision3 col;
-			if (mkCollider_Run(ref, lift(&s->obstacles[i]), part, scratch, &col) != MK_OK) return -INFINITY;
+			mkBody3 ob = lift(&s->obstacles[i], MK_BOUND_OUTER);
+			if (mkCollider_Run(ref, ob, place_part(s, p, j, MK_BOUND_OUTER), scratch, &col) != MK_OK) return -INFINITY;
 			lo = fmin(lo, col.distance);
 		}
-	}
 	return lo;
+}
+
+/* A certified overlap of some (part, obstacle) pair at pose p by the
+ * referee (origin enclosed in the Minkowski difference: residual 0). */
+static int dense_overlap(const mkScene *s, const double *p, mkColliderScratch *scratch)
+{
+	const mkCollider *ref = mkColliders_Find("referee");
+	for (int j = 0; j < s->part_count; ++j)
+		for (int i = 0; i < s->obstacle_count; ++i) {
+			mkCollision3 col;
+			mkBody3 ob = lift(&s->obstacles[i], MK_BOUND_INNER);
+			if (mkCollider_Run(ref, ob, place_part(s, p, j, MK_BOUND_INNER), scratch, &col) == MK_OK &&
+				col.distance <= 0.0 && col.residual == 0.0)
+				return 1;
+		}
+	return 0;
+}
+
+/* The scene of the text and its query (default options). */
+static mkSceneQuery *make_query(const char *text, mkScene *s)
+{
+	char msg[1024];
+	mkSceneQuery *q = NULL;
+	ENSURE(mkScene_Parse(text, s, msg, sizeof msg) == MK_OK);
+	mkSceneQueryOptions qo = mkSceneQueryOptions_Default();
+	ENSURE(mkSceneQuery_Create(s, &qo, &q, msg, sizeof msg) == MK_OK);
+	return q;
+}
+
+/* Random motions from free starts, each position coordinate moving up to
+ * half the bounds' mean extent: every verdict of mkSceneQuery_MotionTest is
+ * checked by the referee: free ones at 401 poses (every bound positive),
+ * colliding ones at their contact time (a certified overlap); and it agrees
+ * with mkSceneQuery_Motion wherever both decide. */
+static void check_motions(const char *text, int n, int *count, int *bad)
+{
+	mkScene s;
+	mkSceneQuery *q = make_query(text, &s);
+	mkColliderScratch scratch;
+	unsigned long long x = 29;
+	int dim = s.dim, seen[3] = {0, 0, 0};
+	double ext = 0.0;
+	for (int d = 0; d < dim; ++d) ext += (s.bounds_hi[d] - s.bounds_lo[d]) * (s.bounds_hi[d] - s.bounds_lo[d]);
+	for (int k = 0; k < n;) {
+		double a[7], b[7], u[14];
+		for (int i = 0; i < 14; ++i) { x = x * 6364136223846793005ULL + 1442695040888963407ULL; u[i] = (x >> 11) * 0x1p-53; }
+		for (int d = 0; d < dim; ++d) {
+			a[d] = s.bounds_lo[d] + u[d] * (s.bounds_hi[d] - s.bounds_lo[d]);
+			b[d] = a[d] + 0.5 * sqrt(ext / dim) * (2.0 * u[7 + d] - 1.0);
+		}
+		if (dim == 2) { a[2] = MK_PI * (2.0 * u[3] - 1.0); b[2] = MK_PI * (2.0 * u[10] - 1.0); }
+		else for (int i = 3; i < 7; ++i) { a[i] = 2.0 * u[i] - 1.0; b[i] = 2.0 * u[7 + i] - 1.0; }
+		mkPoseAnswer pa;
+		if (mkSceneQuery_Pose(q, a, &pa) != MK_OK || pa.status != MK_POSE_FREE) continue;
+		++k;
+		mkMotionAnswer m, full;
+		ENSURE(mkSceneQuery_MotionTest(q, a, b, 0.0, 1000000, &m) == MK_OK);
+		ENSURE(mkSceneQuery_Motion(q, a, b, 0.0, 1000000, &full) == MK_OK);
+		++seen[m.status];
+		int ok = m.status == MK_POSE_UNCERTAIN || full.status == MK_POSE_UNCERTAIN || m.status == full.status;
+		double pose[7];
+		if (m.status == MK_POSE_FREE)
+			for (int t = 0; t <= 400 && ok; ++t) {
+				mkSceneQuery_Interpolate(q, a, b, t / 400.0, pose);
+				ok = dense_pose(&s, pose, &scratch) > 0.0;
+			}
+		if (m.status == MK_POSE_COLLIDING) {
+			mkSceneQuery_Interpolate(q, a, b, m.contact_time, pose);
+			ok = ok && dense_overlap(&s, pose, &scratch);
+		}
+		if (!ok) {
+			++*bad;
+			fprintf(stderr, "  motion %d: test %s, full %s, contact %.17g\n", k, mkPoseStatus_Name(m.status),
+				mkPoseStatus_Name(full.status), m.contact_time);
+		}
+	}
+	*count += n;
+	printf("%dD: %d random motions: %d free, %d colliding, %d uncertain\n", dim, n, seen[0], seen[1], seen[2]);
+	ENSURE(seen[0] > n / 10 && seen[1] > n / 10 && seen[2] <= n / 50);
+	mkSceneQuery_Destroy(q);
+	mkScene_Free(&s);
 }
 
 /* Plan every query of the scene with the planner; check each path. */
 static void check_scene(const char *text, const char *planner, int *paths, int *bad)
 {
 	mkScene s;
+	mkSceneQuery *q = make_query(text, &s);
 	char msg[1024];
-	ENSURE(mkScene_Parse(text, &s, msg, sizeof msg) == MK_OK);
-	mkSceneQueryOptions qo = mkSceneQueryOptions_Default();
-	mkSceneQuery *q = NULL;
-	ENSURE(mkSceneQuery_Create(&s, &qo, &q, msg, sizeof msg) == MK_OK);
 	mkPlanOptions o = mkPlanOptions_Default();
 	o.planner = planner;
 	o.time = 20.0;   /* these planners stop at their first path: the budget only bounds a loaded machine's wait */
@@ -114,7 +220,21 @@ static void check_scene(const char *text, const char *planner, int *paths, int *
 	mkScene_Free(&s);
 }
 
-int main(void)
+/* The text of scene file NAME.txt in directory dir (static buffer). */
+static const char *read_scene(const char *dir, const char *name)
+{
+	static char text[1 << 16];
+	char path[1024];
+	snprintf(path, sizeof path, "%s/%s.txt", dir, name);
+	FILE *fp = fopen(path, "r");
+	size_t n = fp ? fread(text, 1, sizeof text - 1, fp) : 0;
+	ENSURE(fp != NULL && n > 0);
+	if (fp) fclose(fp);
+	text[n] = 0;
+	return text;
+}
+
+int main(int argc, char **argv)
 {
 	static const char *planners[] = {"RRTConnect", "PRM", "KPIECE1", "RRT"};
 	int paths = 0, bad = 0;
@@ -123,6 +243,20 @@ int main(void)
 	ENSURE(bad == 0);
 	ENSURE(paths == 4 * 3);
 	printf("%d paths of 4 planners (2D and 3D robots of 2 parts): %d segments fail the dense referee check\n", paths, bad);
+	/* the experiment's scenes of several parts and obstacle kinds: each query solved by RRTConnect */
+	static const char *files[] = {"maze2d", "home3d", "passage3d"};
+	paths = bad = 0;
+	const char *dir = argc > 1 ? argv[1] : "experiments/plan/scenes";
+	for (int k = 0; k < 3; ++k) check_scene(read_scene(dir, files[k]), "RRTConnect", &paths, &bad);
+	ENSURE(bad == 0);
+	ENSURE(paths == 2 + 2 + 1);
+	printf("%d paths in the maze, home and passage scenes: %d segments fail the dense referee check\n", paths, bad);
+	int motions = 0;
+	bad = 0;
+	check_motions(scene2, 100, &motions, &bad);
+	check_motions(scene3, 100, &motions, &bad);
+	ENSURE(bad == 0);
+	printf("%d random motions: %d verdicts of the motion test fail the referee's check\n", motions, bad);
 	/* bad input: a start in collision names its line */
 	mkScene s;
 	char msg[1024];

@@ -1,7 +1,8 @@
 /* mink_plan/plan.h - motion planning on a mink scene with OMPL's planners
  * (C++17 inside, a C interface here): mink's scene query as the state
- * validity checker and its certified motion check (conservative
- * advancement, mkSceneQuery_Motion) as the motion validator. OMPL stays
+ * validity checker and its certified motion check (mkSceneQuery_MotionTest;
+ * the returned path certified again by mkSceneQuery_Motion) as the motion
+ * validator. OMPL stays
  * out of the core; this library is the only code that includes it. */
 #ifndef MINK_PLAN_PLAN_H
 #define MINK_PLAN_PLAN_H
