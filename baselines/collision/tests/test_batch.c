@@ -127,6 +127,11 @@ static void mkCheckMode(int kind, mkBatchMode mode, const mkBody3 *b1, const mkB
 		/* the referee: certain when its bracket is within 1e-10 of the scale */
 		if (ref[p].residual <= 1e-10 && fabs(ref[p].distance) > 1e-9 * scale)
 			ENSURE((got.status[p] == MK_CONTACT_SEPARATED) == (ref[p].distance > 0.0));
+		/* a separated pair's bracket [lower, upper] holds the referee's */
+		if (got.path[p] == MK_PATH_SEPARATING && ref[p].residual <= 1e-10) {
+			ENSURE_LE(got.lower[p], ref[p].distance + ref[p].gap + 1e-12 * scale);
+			ENSURE_LE(ref[p].bound - 1e-12 * scale, got.upper[p]);
+		}
 		if (isfinite(got.distance[p]) && ref[p].distance > 0.0) {
 			ENSURE_LE(ref[p].bound - 1e-12 * scale, got.distance[p]);
 			ENSURE_LE(got.distance[p], ref[p].distance + ref[p].gap + 1e-12 * scale);

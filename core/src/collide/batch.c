@@ -49,6 +49,8 @@ static double mkBatch_PairNorm(double u, double v, double p)
 	double m = u > v ? u : v, k = u > v ? v : u;
 	if (!(m > 0.0))
 		return 0.0;
+	if (p == 2.0) /* an ellipsoid's: no pow */
+		return m * sqrt(1.0 + (k / m) * (k / m));
 	return m * pow(1.0 + pow(k / m, p), 1.0 / p);
 }
 
@@ -83,6 +85,18 @@ static double mkBatchGauge_At(const mkBatchGauge *g, const mkBody3 *b, mkVec3 x)
 	return mkBatch_PairNorm(in, fabs(y.z) / s->c, 2.0 / s->eps1) * (1.0 + g->slack) + g->slack;
 }
 
+/* At a point x with gauges v1, v2 < 1 the balls of radii (1 - v_i) rho_i
+ * about x lie in the bodies: 1 when their sum *depth exceeds need. */
+static int mkBatchGauge_Depth(const mkBatchGauge *g1, const mkBody3 *b1, const mkBatchGauge *g2, const mkBody3 *b2,
+	mkVec3 x, double need, double *depth)
+{
+	double v1 = mkBatchGauge_At(g1, b1, x), v2 = mkBatchGauge_At(g2, b2, x);
+	if (!(v1 < 1.0 && v2 < 1.0))
+		return 0;
+	*depth = (1.0 - v1) * g1->rho + (1.0 - v2) * g2->rho;
+	return *depth > need;
+}
+
 /* A point of both bodies on the centre segment whose balls inside them add
  * to more than need: 1 and *x, *depth (the certified lower bound of the
  * depth), else 0. */
@@ -105,11 +119,17 @@ static int mkBatch_OverlapPoint(const mkBody3 *b1, const mkBody3 *b2, mkVec3 d, 
 		t = u2 * g2.rho - u1 * g1.rho > 0.0 ? hi : lo;
 	}
 	*x = mkVec3_Add(b1->t, mkVec3_Scale(d, t));
-	double v1 = mkBatchGauge_At(&g1, b1, *x), v2 = mkBatchGauge_At(&g2, b2, *x);
-	if (!(v1 < 1.0 && v2 < 1.0))
-		return 0;
-	*depth = (1.0 - v1) * g1.rho + (1.0 - v2) * g2.rho;
-	return *depth > need;
+	return mkBatchGauge_Depth(&g1, b1, &g2, b2, *x, need, depth);
+}
+
+/* Whether the point x of both bodies has balls inside them adding to more
+ * than need (*depth, the certified lower bound of the depth). */
+static int mkBatch_OverlapAt(const mkBody3 *b1, const mkBody3 *b2, mkVec3 x, double need, double *depth)
+{
+	mkBatchGauge g1, g2;
+	mkBatchGauge_Init(&g1, b1);
+	mkBatchGauge_Init(&g2, b2);
+	return mkBatchGauge_Depth(&g1, b1, &g2, b2, x, need, depth);
 }
 
 /* A tetrahedron w[0..4): when it holds the origin, its barycentric weights
@@ -305,49 +325,165 @@ typedef struct mkBatchEllQueue {
 
 static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta, const mkBatchOut3 *out);
 
-/* Queues pair k of ellipsoids (its context c) from the unit start n
- * (second: from a search's direction); runs the queue when it is full. */
-static void mkBatchEll_Push(mkBatchEllQueue *q, const mkPairCtx *c, int k, mkVec3 n0, int second, mkBatchMode mode,
-	double delta, const mkBatchOut3 *out)
+/* Queues pair k of ellipsoids b1, b2 (Q_i = P_i P_i^T, the centre line d,
+ * the scale) from the unit start n (second: from a search's direction);
+ * runs the queue when it is full. */
+static void mkBatchEll_Push(mkBatchEllQueue *q, const mkBody3 *b1, const mkBody3 *b2, double Q1[3][3],
+	double Q2[3][3], mkVec3 dv, double scale, int k, mkVec3 n0, int second, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out)
 {
 	int l = q->count++;
 	mkBatchEllIn *in = &q->in;
 	static const int ix[6][2] = { { 0, 0 }, { 0, 1 }, { 0, 2 }, { 1, 1 }, { 1, 2 }, { 2, 2 } };
 	for (int i = 0; i < 6; ++i) {
-		in->Q1[i][l] = c->k1.Q[ix[i][0]][ix[i][1]];
-		in->Q2[i][l] = c->k2.Q[ix[i][0]][ix[i][1]];
+		in->Q1[i][l] = Q1[ix[i][0]][ix[i][1]];
+		in->Q2[i][l] = Q2[ix[i][0]][ix[i][1]];
 	}
-	const double d[3] = { c->d.x, c->d.y, c->d.z }, n[3] = { n0.x, n0.y, n0.z };
+	const double d[3] = { dv.x, dv.y, dv.z }, n[3] = { n0.x, n0.y, n0.z };
 	for (int i = 0; i < 3; ++i) {
 		in->d[i][l] = d[i];
 		in->n[i][l] = n[i];
 	}
-	in->scale[l] = c->scale;
-	q->b1[l] = c->b1;
-	q->b2[l] = c->b2;
+	in->scale[l] = scale;
+	q->b1[l] = b1;
+	q->b2[l] = b2;
 	q->pair[l] = k;
 	q->second[l] = second;
 	if (q->count == MK_BATCH_NLANES)
 		mkBatchEll_Flush(q, mode, delta, out);
 }
 
+/* Steps of mkBatchEll_Quick after the centre line (measured on the paper's
+ * ellipsoid pairs: the centre line certified 1922 of the 1942 separated
+ * ones, one step 19 more, two steps the last). */
+#define MK_BATCH_ELL_STEPS 2
+
+/* Q = P P^T, P = M diag(a, b, c): h(n) = sqrt(n^T Q n). */
+static void mkBatchEll_Q(const mkBody3 *b, double Q[3][3])
+{
+	double P[3][3];
+	mkSupBody_PQ(b, P, Q);
+}
+
+static mkVec3 mkBatchEll_Mul(double Q[3][3], mkVec3 n)
+{
+	return mkVec3_Make(Q[0][0] * n.x + Q[0][1] * n.y + Q[0][2] * n.z, Q[1][0] * n.x + Q[1][1] * n.y + Q[1][2] * n.z,
+		Q[2][0] * n.x + Q[2][1] * n.y + Q[2][2] * n.z);
+}
+
+/* adj(A) d: the direction of A^-1 d for a positive definite A (det A > 0). */
+static mkVec3 mkBatchEll_AdjMul(double A[3][3], mkVec3 d)
+{
+	double c00 = A[1][1] * A[2][2] - A[1][2] * A[2][1], c01 = A[0][2] * A[2][1] - A[0][1] * A[2][2];
+	double c02 = A[0][1] * A[1][2] - A[0][2] * A[1][1], c11 = A[0][0] * A[2][2] - A[0][2] * A[2][0];
+	double c12 = A[0][2] * A[1][0] - A[0][0] * A[1][2], c22 = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+	return mkVec3_Make(c00 * d.x + c01 * d.y + c02 * d.z, c01 * d.x + c11 * d.y + c12 * d.z,
+		c02 * d.x + c12 * d.y + c22 * d.z);
+}
+
+/* The next direction, (Q1 / h1 + Q2 / h2)^-1 d up to a positive factor. */
+static mkVec3 mkBatchEll_Next(double Q1[3][3], double Q2[3][3], double h1, double h2, mkVec3 d)
+{
+	double A[3][3], i1 = 1.0 / h1, i2 = 1.0 / h2;
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			A[i][j] = Q1[i][j] * i1 + Q2[i][j] * i2;
+	return mkBatchEll_AdjMul(A, d);
+}
+
+/* Two ellipsoids before any search (the status and clearance modes; in the
+ * distance mode only for an overlap, after the Newton lanes): the
+ * separating certificate (as the search's) at the centre line d and then at
+ * up to MK_BATCH_ELL_STEPS directions n' = (Q1 / h1 + Q2 / h2)^-1 d, h_i =
+ * sqrt(n^T Q_i n) at the last n. That is the fixed point of the largest
+ * <n, d> / (h1(n) + h2(n)) (its gradient vanishes where d is parallel to
+ * Q1 n / h1 + Q2 n / h2); the pair is separated exactly when that largest
+ * value exceeds 1, and every n with f(n) = (<n, d> - h1 - h2) / |n| above
+ * the margin certifies it. Where the last has f < 0, the point where the
+ * bodies scaled about their centres by mu = <n, d> / (h1 + h2) would touch
+ * at the fixed point (inside both when mu < 1) is tried for an overlap
+ * (mkBatch_OverlapAt; measured, further steps before it cost more than
+ * they certified). Writes the answer and
+ * returns MK_PATH_SEPARATING or MK_PATH_OVERLAP_POINT, or returns -1: the
+ * search takes the pair. */
+static int mkBatchEll_Quick(const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
+	const mkBatchOut3 *out, int k)
+{
+	double Q1[3][3], Q2[3][3];
+	mkBatchEll_Q(b1, Q1);
+	mkBatchEll_Q(b2, Q2);
+	mkVec3 d = mkVec3_Sub(b2->t, b1->t), n = d;
+	double margin = MK_BATCH_MARGIN * mkScale(b1, b2);
+	int clearance = mode == MK_BATCH_CLEARANCE;
+	double need = clearance ? delta + margin : margin, below = clearance ? delta - margin : -INFINITY;
+	for (int step = 0;; ++step) {
+		mkVec3 q1 = mkBatchEll_Mul(Q1, n), q2 = mkBatchEll_Mul(Q2, n);
+		double h1 = sqrt(mkVec3_Dot(n, q1)), h2 = sqrt(mkVec3_Dot(n, q2)), nl = mkVec3_LengthInline(n);
+		double nd = mkVec3_Dot(n, d), f = (nd - h1 - h2) / nl;
+		if (!(h1 > 0.0) || !(h2 > 0.0) || !isfinite(f))
+			return -1;
+		if (f > margin && mode == MK_BATCH_DISTANCE)
+			return -1; /* (the search's direction, then the Newton lanes, give the distance) */
+		if (f > margin) {
+			mkVec3 p1 = mkVec3_Add(b1->t, mkVec3_Scale(q1, 1.0 / h1)), p2 = mkVec3_Sub(b2->t, mkVec3_Scale(q2, 1.0 / h2));
+			double upper = mkVec3_LengthInline(mkVec3_Sub(p2, p1));
+			if (f > need || upper < below) {
+				mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, f, upper, mkVec3_Scale(n, 1.0 / nl), p1, p2, f > need,
+					MK_PATH_SEPARATING);
+				return MK_PATH_SEPARATING;
+			}
+			return -1; /* (in the touching band, or the clearance undecided) */
+		}
+		if (step == MK_BATCH_ELL_STEPS) {
+			/* c1 + mu s1 and c2 - mu s2 (mu = <n, d> / (h1 + h2)) meet at the
+			 * fixed point: their mean, a point of both bodies there */
+			double mu = nd / (h1 + h2);
+			mkVec3 x = mkVec3_Scale(mkVec3_Add(mkVec3_Add(b1->t, mkVec3_Scale(q1, mu / h1)),
+				mkVec3_Sub(b2->t, mkVec3_Scale(q2, mu / h2))), 0.5);
+			double depth;
+			if (f >= 0.0 || !mkBatch_OverlapAt(b1, b2, x, margin, &depth))
+				return -1;
+			mkBatch_Put(out, k, MK_CONTACT_OVERLAPPING, NAN, -INFINITY, -depth, mkVec3_Make(NAN, NAN, NAN), x, x, 0,
+				MK_PATH_OVERLAP_POINT);
+			return MK_PATH_OVERLAP_POINT;
+		}
+		n = mkBatchEll_Next(Q1, Q2, h1, h2, d);
+	}
+}
+
 /* Sets up pair k's search (its bodies b1, b2) in g. Returns 1, or 0 when
  * the pair goes to the one-pair query at once (FULL, or a scale that is not
- * finite), which has then answered it (*path), or -1 when it went to the
+ * finite), which has then answered it (*path), or when mkBatchEll_Quick
+ * answered two ellipsoids, or -1 when it went to the
  * Newton lanes q instead (DISTANCE, two ellipsoids, q not NULL). */
 static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
 	const mkBatchOut3 *out, int k, mkBatchPath *path, mkBatchEllQueue *q)
 {
+	/* (in the distance mode, a pair the Newton lanes sent on: q NULL) */
+	if (mode != MK_BATCH_FULL && (!q || mode != MK_BATCH_DISTANCE) && b1->shape.eps1 == 1.0 && b1->shape.eps2 == 1.0
+		&& b2->shape.eps1 == 1.0 && b2->shape.eps2 == 1.0) {
+		int quick = mkBatchEll_Quick(b1, b2, mode, delta, out, k);
+		if (quick >= 0) {
+			*path = (mkBatchPath)quick;
+			return 0;
+		}
+	}
+	if (q && mode == MK_BATCH_DISTANCE && b1->shape.eps1 == 1.0 && b1->shape.eps2 == 1.0 && b2->shape.eps1 == 1.0
+		&& b2->shape.eps2 == 1.0) {
+		mkVec3 d = mkVec3_Sub(b2->t, b1->t);
+		double dl = mkVec3_LengthInline(d), scale = mkScale(b1, b2), Q1[3][3], Q2[3][3];
+		if (dl > 0.0 && isfinite(scale)) {
+			mkBatchEll_Q(b1, Q1);
+			mkBatchEll_Q(b2, Q2);
+			mkBatchEll_Push(q, b1, b2, Q1, Q2, d, scale, k, mkVec3_Scale(d, 1.0 / dl), 0, mode, delta, out);
+			return -1;
+		}
+	}
 	mkPairCtx_Init(&g->c, b1, b2);
 	g->pair = k;
 	if (mode == MK_BATCH_FULL || !isfinite(g->c.scale)) {
 		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
 		return 0;
-	}
-	double dl = mkVec3_LengthInline(g->c.d);
-	if (q && mode == MK_BATCH_DISTANCE && g->c.k1.ellipsoid && g->c.k2.ellipsoid && dl > 0.0) {
-		mkBatchEll_Push(q, &g->c, k, mkVec3_Scale(g->c.d, 1.0 / dl), 0, mode, delta, out);
-		return -1;
 	}
 	double margin = MK_BATCH_MARGIN * g->c.scale;
 	int clearance = mode == MK_BATCH_CLEARANCE;
@@ -373,7 +509,7 @@ static int mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double 
 		return p;
 	}
 	if (p == MK_PATH_SEPARATING && g->c.k1.ellipsoid && g->c.k2.ellipsoid) {
-		mkBatchEll_Push(q, &g->c, k, r->n, 1, mode, delta, out);
+		mkBatchEll_Push(q, b1, b2, g->c.k1.Q, g->c.k2.Q, g->c.d, g->c.scale, k, r->n, 1, mode, delta, out);
 		return -1;
 	}
 	if (p == MK_PATH_SEPARATING) /* started from r->n it was no faster (measured) */

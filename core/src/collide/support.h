@@ -97,17 +97,24 @@ typedef struct mkSupBody {
 	int ellipsoid;
 } mkSupBody;
 
-MK_PAIR_FN void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
+/* P = M diag(a, b, c) of body b and, when Q is not NULL, Q = P P^T. */
+static inline void mkSupBody_PQ(const mkBody3 *b, double P[3][3], double Q[3][3])
 {
-	double D[3] = { b->shape.a, b->shape.b, b->shape.c };
+	double D[3] = { b->shape.a, b->shape.b, b->shape.c }, p[3][3];
 	for (int i = 0; i < 3; ++i)
 		for (int j = 0; j < 3; ++j)
-			k->P[i][j] = b->M.m[i][j] * D[j];
-	k->ellipsoid = mkShape3_IsEllipsoid(b->shape);
-	if (k->ellipsoid) {
+			P[i][j] = p[i][j] = b->M.m[i][j] * D[j];
+	if (Q)
 		for (int i = 0; i < 3; ++i)
 			for (int j = i; j < 3; ++j)
-				k->Q[i][j] = k->Q[j][i] = k->P[i][0] * k->P[j][0] + k->P[i][1] * k->P[j][1] + k->P[i][2] * k->P[j][2];
+				Q[i][j] = Q[j][i] = p[i][0] * p[j][0] + p[i][1] * p[j][1] + p[i][2] * p[j][2];
+}
+
+MK_PAIR_FN void mkSupBody_Init(mkSupBody *k, const mkBody3 *b)
+{
+	k->ellipsoid = b->shape.eps1 == 1.0 && b->shape.eps2 == 1.0; /* mkShape3_IsEllipsoid, inline */
+	mkSupBody_PQ(b, k->P, k->ellipsoid ? k->Q : NULL);
+	if (k->ellipsoid) {
 		k->q1 = k->q2 = 2.0;
 		k->iq1 = k->iq2 = 0.5;
 	} else {
