@@ -277,7 +277,8 @@ static void fuzzCheckBatch(const mkBody3 *m, const fuzzBody *f, mkBatchMode mode
 		if (!isnan(up[k]) && up[k] < INFINITY) FUZZ_CHECK(L <= up[k] + tol, "batch upper");
 		if (path[k] == MK_PATH_SEPARATING) {
 			double fn = fuzzBound(a, b, n);
-			FUZZ_CHECK(fn >= -tol && (!isfinite(lo[k]) || fabs(fn - lo[k]) <= tol), "batch separating");
+			/* lower: f(n), or a bound below it (bounds of the support functions) */
+			FUZZ_CHECK(fn >= -tol && (!isfinite(lo[k]) || lo[k] <= fn + tol), "batch separating");
 		}
 		if (path[k] == MK_PATH_OVERLAP_POINT) {
 			double x[3] = { p1[k].x, p1[k].y, p1[k].z };

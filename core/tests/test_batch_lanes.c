@@ -163,7 +163,7 @@ static void mkCheckBatch(mkImpl impl, const mkBody3 *b1, const mkBody3 *b2)
 	for (int mode = 0; mode < 3; ++mode) {
 		for (int v = 0; v < 2; ++v) {
 			mkBatchOut3 o = { st[v], NULL, lo[v], NULL, n[v], x[v], NULL, NULL, path[v] };
-			ENSURE(mkCollide3_BatchImpl(use[v], &pairs, (mkBatchMode)mode, 0.5, &o, NULL) == MK_OK);
+			ENSURE(mkCollide3_BatchImpl(use[v], 0, &pairs, (mkBatchMode)mode, 0.5, &o, NULL) == MK_OK);
 		}
 		for (int p = 0; p < MK_N; ++p) {
 			ENSURE(st[0][p] == st[1][p]);

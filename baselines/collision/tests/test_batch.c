@@ -69,9 +69,15 @@ static mkBatchOut3 mkOut_View(mkOut *o)
 static void mkCheckCertificates(const mkBody3 *b1, const mkBody3 *b2, const mkOut *o, int p)
 {
 	if (o->path[p] == MK_PATH_SEPARATING) {
-		double f = mkCollide3_Bound(b1[p], b2[p], o->normal[p]);
-		ENSURE(f > 0.0);
-		ENSURE_NEAR(f, o->lower[p], 1e-13 * mkCollide3_PairSize(b1[p], b2[p]));
+		/* lower: f(n) where the search evaluated it, else a bound below it
+		 * from bounds of the support functions; the witnesses are points
+		 * of the bodies at most upper apart */
+		double f = mkCollide3_Bound(b1[p], b2[p], o->normal[p]), size = mkCollide3_PairSize(b1[p], b2[p]);
+		ENSURE(f > 0.0 && o->lower[p] > 0.0);
+		ENSURE_LE(o->lower[p], f + 1e-13 * size);
+		ENSURE_LE(mkBody3_Implicit(b1[p], o->p1[p]), 1.0 + 1e-9);
+		ENSURE_LE(mkBody3_Implicit(b2[p], o->p2[p]), 1.0 + 1e-9);
+		ENSURE_LE(o->upper[p], mkVec3_Length(mkVec3_Sub(o->p2[p], o->p1[p])) + 1e-13 * size);
 		ENSURE(o->status[p] == MK_CONTACT_SEPARATED);
 		if (isfinite(o->distance[p])) {
 			/* a distance of the Newton lanes: the witnesses on the bodies,
@@ -104,9 +110,10 @@ static void mkCheckMode(int kind, mkBatchMode mode, const mkBody3 *b1, const mkB
 	ENSURE(st.separating + st.overlap_point + st.one_pair + st.failed == MK_N && st.failed == 0);
 	ENSURE(st.newton <= st.separating && st.newton_left <= st.one_pair);
 	ENSURE(mode == MK_BATCH_DISTANCE || st.newton + st.newton_left == 0);
-	printf("  %-17s %-9s bounds: %3d separating, %3d overlap point; one-pair query: %3d; Newton lanes: %3d answered, "
-		"%d left\n", mkKindNames[kind], mkBatchMode_Name(mode), st.separating, st.overlap_point, st.one_pair,
-		st.newton, st.newton_left);
+	ENSURE(st.quick <= st.separating + st.overlap_point && stw.quick == 0);
+	printf("  %-17s %-9s bounds: %3d separating, %3d overlap point (%3d before any search); one-pair query: %3d; "
+		"Newton lanes: %3d answered, %d left\n", mkKindNames[kind], mkBatchMode_Name(mode), st.separating,
+		st.overlap_point, st.quick, st.one_pair, st.newton, st.newton_left);
 	for (int p = 0; p < MK_N; ++p) {
 		double scale = mkCollide3_PairSize(b1[p], b2[p]);
 		ENSURE(got.status[p] == want.status[p]);

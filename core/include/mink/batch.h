@@ -8,7 +8,15 @@
  *                      with balls about x inside each (so the depth is at
  *                      least the sum of their radii). Either certificate is
  *                      accepted only beyond MK_BATCH_MARGIN * scale, outside
- *                      the touching band. Both are searched for by Gilbert's
+ *                      the touching band. First, before any search, at the
+ *                      centre line n = (c2 - c1) / |c2 - c1|: f(n) bounded
+ *                      below without transcendental functions, through
+ *                      upper bounds of h1, h2 (each level of a nested norm
+ *                      bounded by its l2 norm where eps >= 1, else its l1
+ *                      norm; exact for ellipsoids); two ellipsoids also take
+ *                      two steps towards their best direction and try the
+ *                      point where the bodies, scaled about their centres,
+ *                      would touch. Then Gilbert's
  *                      iteration on B2 - B1 from the centre line (a point of
  *                      both: a tetrahedron of B2 - B1 holding a ball about
  *                      the origin); a pair neither settles goes to the
@@ -94,9 +102,14 @@ typedef struct mkBatchOut3 {
 	mkContact *status;
 	double *distance;   /* DISTANCE: sd of non-overlapping pairs; FULL: sd */
 	double *lower;      /* sd >= lower (certified; -inf when only an upper */
-	double *upper;      /* bound is known); sd <= upper (+inf likewise) */
+	double *upper;      /* bound is known); sd <= upper (+inf likewise);
+	                       a separating direction's lower is f(normal) where
+	                       the search evaluated it, a bound below f(normal)
+	                       where the bounds before any search settled it */
 	mkVec3 *normal;     /* the separating direction (bounds) or the solver's */
-	mkVec3 *p1, *p2;    /* witnesses: the support points at normal, or the
+	mkVec3 *p1, *p2;    /* witnesses: the support points at normal (before
+	                       any search: the ends of the bodies' axes farthest
+	                       along +-normal, points of the bodies), or the
 	                       solver's; an overlap point: p1 = p2 = the point */
 	unsigned char *clear; /* CLEARANCE: 1 when sd >= delta, else 0 */
 	unsigned char *path;  /* mkBatchPath */
@@ -106,10 +119,13 @@ typedef struct mkBatchOut3 {
  * MK_BATCH_DISTANCE, how the separated pairs of ellipsoids fared in the
  * Newton lanes: newton answered there (also counted in separating),
  * newton_left left them for the one-pair query (also counted in one_pair or
- * failed). */
+ * failed); quick: answered before any search (also counted in separating or
+ * overlap_point): by bounds of the support functions at the centre line,
+ * or for two ellipsoids by their few direct steps. */
 typedef struct mkBatchStats3 {
 	int separating, overlap_point, one_pair, failed;
 	int newton, newton_left;
+	int quick;
 } mkBatchStats3;
 
 /* Answers the pairs in the mode (delta: the clearance, finite and >= 0,

@@ -1,23 +1,15 @@
 /* batch.c - many pairs per call (mink/batch.h): certificates first, the
  * one-pair query where they do not settle a pair.
  *
- * Gilbert's iteration on W = B2 - B1 (mkBatch_Gilbert) looks for both: a
+ * Before any search, at the centre line: bounds of the support functions
+ * and, for two ellipsoids, a few direct steps (batch_quick.h). Then
+ * Gilbert's iteration on W = B2 - B1 (mkGilbert_Step) looks for both: a
  * separating direction (f(m) = <m, d> - h1(m) - h2(-m) <= sd, the support
  * values through mkPair_Eval as the solver evaluates them), or a
- * tetrahedron of points of W holding a ball about the origin.
- *
- * Where it gives up on an overlap, a point on the centre segment: the gauge
- * g(y) = |(|(y1/a, y2/b)|_p2, y3/c)|_p1 of the canonical body (p = 2/eps:
- * the nested norm whose unit ball it is; pair norms from the ratio of the
- * smaller to the larger component, no overflow) at y = M^-1 (x - t). With
- * u = g < 1, x + (1 - u)(B - t) lies in B, and B - t holds the ball of
- * radius rho = sigma_min(M) / |(1/a, 1/b, 1/c)| (the body holds its
- * cross-polytope, since every p >= 1 norm is at most the l1 norm;
- * sigma_min(M) >= 1 / |M^-1|_F). Balls of radii r1, r2 about one point x
- * inside B1 and B2 put the ball of radius r1 + r2 about the origin inside
- * B1 - B2: the depth is at least r1 + r2. The gauges are linear along the
- * segment: the end of the common interval that maximises the bound, the
- * gauges evaluated again at the point itself. */
+ * tetrahedron of points of W holding a ball about the origin; where it
+ * gives up on an overlap, a point on the centre segment
+ * (mkBatch_OverlapPoint). Separated pairs of ellipsoids in the distance
+ * mode run Newton's iteration in vector lanes (batch_newton.h). */
 #include <mink/batch.h>
 
 #include <float.h>
@@ -25,6 +17,7 @@
 #include <string.h>
 
 #include "collide/collision_impl.h"
+#include "collide/batch_quick.h"
 #include "collide/hull.h"
 #include "collide/pair.h"
 
@@ -41,95 +34,6 @@ int mkBatchMode_FromName(const char *name)
 		if (strcmp(name, mkBatchModeNames[i]) == 0)
 			return i;
 	return -1;
-}
-
-/* |(u, v)|_p of u, v >= 0, from the ratio of the smaller to the larger. */
-static double mkBatch_PairNorm(double u, double v, double p)
-{
-	double m = u > v ? u : v, k = u > v ? v : u;
-	if (!(m > 0.0))
-		return 0.0;
-	if (p == 2.0) /* an ellipsoid's: no pow */
-		return m * sqrt(1.0 + (k / m) * (k / m));
-	return m * pow(1.0 + pow(k / m, p), 1.0 / p);
-}
-
-/* One body's data for the overlap test. */
-typedef struct mkBatchGauge {
-	mkMat3 Mi;
-	double slack; /* a bound on the relative rounding of g */
-	double rho;   /* inradius about the centre */
-} mkBatchGauge;
-
-static void mkBatchGauge_Init(mkBatchGauge *g, const mkBody3 *b)
-{
-	g->Mi = mkMat3_Inverse(b->M);
-	double fm = 0.0, fi = 0.0;
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j) {
-			fm += b->M.m[i][j] * b->M.m[i][j];
-			fi += g->Mi.m[i][j] * g->Mi.m[i][j];
-		}
-	const mkShape3 *s = &b->shape;
-	double inv = sqrt(1.0 / (s->a * s->a) + 1.0 / (s->b * s->b) + 1.0 / (s->c * s->c));
-	g->rho = 1.0 / (sqrt(fi) * inv);
-	g->slack = 64.0 * DBL_EPSILON * (1.0 + sqrt(fm * fi));
-}
-
-/* The gauge of body b at the point x (rounding slack added). */
-static double mkBatchGauge_At(const mkBatchGauge *g, const mkBody3 *b, mkVec3 x)
-{
-	mkVec3 y = mkMat3_MulVec(g->Mi, mkVec3_Sub(x, b->t));
-	const mkShape3 *s = &b->shape;
-	double in = mkBatch_PairNorm(fabs(y.x) / s->a, fabs(y.y) / s->b, 2.0 / s->eps2);
-	return mkBatch_PairNorm(in, fabs(y.z) / s->c, 2.0 / s->eps1) * (1.0 + g->slack) + g->slack;
-}
-
-/* At a point x with gauges v1, v2 < 1 the balls of radii (1 - v_i) rho_i
- * about x lie in the bodies: 1 when their sum *depth exceeds need. */
-static int mkBatchGauge_Depth(const mkBatchGauge *g1, const mkBody3 *b1, const mkBatchGauge *g2, const mkBody3 *b2,
-	mkVec3 x, double need, double *depth)
-{
-	double v1 = mkBatchGauge_At(g1, b1, x), v2 = mkBatchGauge_At(g2, b2, x);
-	if (!(v1 < 1.0 && v2 < 1.0))
-		return 0;
-	*depth = (1.0 - v1) * g1->rho + (1.0 - v2) * g2->rho;
-	return *depth > need;
-}
-
-/* A point of both bodies on the centre segment whose balls inside them add
- * to more than need: 1 and *x, *depth (the certified lower bound of the
- * depth), else 0. */
-static int mkBatch_OverlapPoint(const mkBody3 *b1, const mkBody3 *b2, mkVec3 d, double need, mkVec3 *x,
-	double *depth)
-{
-	mkBatchGauge g1, g2;
-	mkBatchGauge_Init(&g1, b1);
-	mkBatchGauge_Init(&g2, b2);
-	double t;
-	if (mkVec3_LengthInline(d) == 0.0) {
-		t = 0.0;
-	} else {
-		double u1 = mkBatchGauge_At(&g1, b1, b2->t);   /* g1 at t = 1 */
-		double u2 = mkBatchGauge_At(&g2, b2, b1->t);   /* g2 at t = 0 */
-		double lo = u2 > 0.0 ? fmax(0.0, 1.0 - 1.0 / u2) : 0.0, hi = u1 > 0.0 ? fmin(1.0, 1.0 / u1) : 1.0;
-		if (!(lo < hi))
-			return 0;
-		/* (1 - t u1) rho1 + (1 - (1 - t) u2) rho2: slope u2 rho2 - u1 rho1 */
-		t = u2 * g2.rho - u1 * g1.rho > 0.0 ? hi : lo;
-	}
-	*x = mkVec3_Add(b1->t, mkVec3_Scale(d, t));
-	return mkBatchGauge_Depth(&g1, b1, &g2, b2, *x, need, depth);
-}
-
-/* Whether the point x of both bodies has balls inside them adding to more
- * than need (*depth, the certified lower bound of the depth). */
-static int mkBatch_OverlapAt(const mkBody3 *b1, const mkBody3 *b2, mkVec3 x, double need, double *depth)
-{
-	mkBatchGauge g1, g2;
-	mkBatchGauge_Init(&g1, b1);
-	mkBatchGauge_Init(&g2, b2);
-	return mkBatchGauge_Depth(&g1, b1, &g2, b2, x, need, depth);
 }
 
 /* A tetrahedron w[0..4): when it holds the origin, its barycentric weights
@@ -353,128 +257,41 @@ static void mkBatchEll_Push(mkBatchEllQueue *q, const mkBody3 *b1, const mkBody3
 		mkBatchEll_Flush(q, mode, delta, out);
 }
 
-/* Steps of mkBatchEll_Quick after the centre line (measured on the paper's
- * ellipsoid pairs: the centre line certified 1922 of the 1942 separated
- * ones, one step 19 more, two steps the last). */
-#define MK_BATCH_ELL_STEPS 2
-
-/* Q = P P^T, P = M diag(a, b, c): h(n) = sqrt(n^T Q n). */
-static void mkBatchEll_Q(const mkBody3 *b, double Q[3][3])
-{
-	double P[3][3];
-	mkSupBody_PQ(b, P, Q);
-}
-
-static mkVec3 mkBatchEll_Mul(double Q[3][3], mkVec3 n)
-{
-	return mkVec3_Make(Q[0][0] * n.x + Q[0][1] * n.y + Q[0][2] * n.z, Q[1][0] * n.x + Q[1][1] * n.y + Q[1][2] * n.z,
-		Q[2][0] * n.x + Q[2][1] * n.y + Q[2][2] * n.z);
-}
-
-/* adj(A) d: the direction of A^-1 d for a positive definite A (det A > 0). */
-static mkVec3 mkBatchEll_AdjMul(double A[3][3], mkVec3 d)
-{
-	double c00 = A[1][1] * A[2][2] - A[1][2] * A[2][1], c01 = A[0][2] * A[2][1] - A[0][1] * A[2][2];
-	double c02 = A[0][1] * A[1][2] - A[0][2] * A[1][1], c11 = A[0][0] * A[2][2] - A[0][2] * A[2][0];
-	double c12 = A[0][2] * A[1][0] - A[0][0] * A[1][2], c22 = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-	return mkVec3_Make(c00 * d.x + c01 * d.y + c02 * d.z, c01 * d.x + c11 * d.y + c12 * d.z,
-		c02 * d.x + c12 * d.y + c22 * d.z);
-}
-
-/* The next direction, (Q1 / h1 + Q2 / h2)^-1 d up to a positive factor. */
-static mkVec3 mkBatchEll_Next(double Q1[3][3], double Q2[3][3], double h1, double h2, mkVec3 d)
-{
-	double A[3][3], i1 = 1.0 / h1, i2 = 1.0 / h2;
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j)
-			A[i][j] = Q1[i][j] * i1 + Q2[i][j] * i2;
-	return mkBatchEll_AdjMul(A, d);
-}
-
-/* Two ellipsoids before any search (the status and clearance modes; in the
- * distance mode only for an overlap, after the Newton lanes): the
- * separating certificate (as the search's) at the centre line d and then at
- * up to MK_BATCH_ELL_STEPS directions n' = (Q1 / h1 + Q2 / h2)^-1 d, h_i =
- * sqrt(n^T Q_i n) at the last n. That is the fixed point of the largest
- * <n, d> / (h1(n) + h2(n)) (its gradient vanishes where d is parallel to
- * Q1 n / h1 + Q2 n / h2); the pair is separated exactly when that largest
- * value exceeds 1, and every n with f(n) = (<n, d> - h1 - h2) / |n| above
- * the margin certifies it. Where the last has f < 0, the point where the
- * bodies scaled about their centres by mu = <n, d> / (h1 + h2) would touch
- * at the fixed point (inside both when mu < 1) is tried for an overlap
- * (mkBatch_OverlapAt; measured, further steps before it cost more than
- * they certified). Writes the answer and
- * returns MK_PATH_SEPARATING or MK_PATH_OVERLAP_POINT, or returns -1: the
- * search takes the pair. */
-static int mkBatchEll_Quick(const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
-	const mkBatchOut3 *out, int k)
-{
-	double Q1[3][3], Q2[3][3];
-	mkBatchEll_Q(b1, Q1);
-	mkBatchEll_Q(b2, Q2);
-	mkVec3 d = mkVec3_Sub(b2->t, b1->t), n = d;
-	double margin = MK_BATCH_MARGIN * mkScale(b1, b2);
-	int clearance = mode == MK_BATCH_CLEARANCE;
-	double need = clearance ? delta + margin : margin, below = clearance ? delta - margin : -INFINITY;
-	for (int step = 0;; ++step) {
-		mkVec3 q1 = mkBatchEll_Mul(Q1, n), q2 = mkBatchEll_Mul(Q2, n);
-		double h1 = sqrt(mkVec3_Dot(n, q1)), h2 = sqrt(mkVec3_Dot(n, q2)), nl = mkVec3_LengthInline(n);
-		double nd = mkVec3_Dot(n, d), f = (nd - h1 - h2) / nl;
-		if (!(h1 > 0.0) || !(h2 > 0.0) || !isfinite(f))
-			return -1;
-		if (f > margin && mode == MK_BATCH_DISTANCE)
-			return -1; /* (the search's direction, then the Newton lanes, give the distance) */
-		if (f > margin) {
-			mkVec3 p1 = mkVec3_Add(b1->t, mkVec3_Scale(q1, 1.0 / h1)), p2 = mkVec3_Sub(b2->t, mkVec3_Scale(q2, 1.0 / h2));
-			double upper = mkVec3_LengthInline(mkVec3_Sub(p2, p1));
-			if (f > need || upper < below) {
-				mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, f, upper, mkVec3_Scale(n, 1.0 / nl), p1, p2, f > need,
-					MK_PATH_SEPARATING);
-				return MK_PATH_SEPARATING;
-			}
-			return -1; /* (in the touching band, or the clearance undecided) */
-		}
-		if (step == MK_BATCH_ELL_STEPS) {
-			/* c1 + mu s1 and c2 - mu s2 (mu = <n, d> / (h1 + h2)) meet at the
-			 * fixed point: their mean, a point of both bodies there */
-			double mu = nd / (h1 + h2);
-			mkVec3 x = mkVec3_Scale(mkVec3_Add(mkVec3_Add(b1->t, mkVec3_Scale(q1, mu / h1)),
-				mkVec3_Sub(b2->t, mkVec3_Scale(q2, mu / h2))), 0.5);
-			double depth;
-			if (f >= 0.0 || !mkBatch_OverlapAt(b1, b2, x, margin, &depth))
-				return -1;
-			mkBatch_Put(out, k, MK_CONTACT_OVERLAPPING, NAN, -INFINITY, -depth, mkVec3_Make(NAN, NAN, NAN), x, x, 0,
-				MK_PATH_OVERLAP_POINT);
-			return MK_PATH_OVERLAP_POINT;
-		}
-		n = mkBatchEll_Next(Q1, Q2, h1, h2, d);
-	}
-}
-
 /* Sets up pair k's search (its bodies b1, b2) in g. Returns 1, or 0 when
- * the pair goes to the one-pair query at once (FULL, or a scale that is not
- * finite), which has then answered it (*path), or when mkBatchEll_Quick
- * answered two ellipsoids, or -1 when it went to the
+ * the pair was answered before any search (use_quick: mkBatchQuick_Bound,
+ * mkBatchQuick_Ellipsoids; counted in stats->quick) or went to the one-pair query
+ * at once (FULL, a scale that is not finite, or DISTANCE on a pair the
+ * bounds found separated), *path saying which, or -1 when it went to the
  * Newton lanes q instead (DISTANCE, two ellipsoids, q not NULL). */
 static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
-	const mkBatchOut3 *out, int k, mkBatchPath *path, mkBatchEllQueue *q)
+	const mkBatchOut3 *out, int k, mkBatchPath *path, mkBatchEllQueue *q, mkBatchStats3 *stats, int use_quick)
 {
-	/* (in the distance mode, a pair the Newton lanes sent on: q NULL) */
-	if (mode != MK_BATCH_FULL && (!q || mode != MK_BATCH_DISTANCE) && b1->shape.eps1 == 1.0 && b1->shape.eps2 == 1.0
-		&& b2->shape.eps1 == 1.0 && b2->shape.eps2 == 1.0) {
-		int quick = mkBatchEll_Quick(b1, b2, mode, delta, out, k);
-		if (quick >= 0) {
-			*path = (mkBatchPath)quick;
-			return 0;
-		}
+	int ellipsoids = b1->shape.eps1 == 1.0 && b1->shape.eps2 == 1.0 && b2->shape.eps1 == 1.0 && b2->shape.eps2 == 1.0;
+	int clearance = mode == MK_BATCH_CLEARANCE, distance = mode == MK_BATCH_DISTANCE;
+	double scale = mkScale(b1, b2), margin = MK_BATCH_MARGIN * scale;
+	double need = clearance ? delta + margin : margin, below = clearance ? delta - margin : -INFINITY;
+	mkBatchQuick r;
+	/* (two ellipsoids in the distance mode only when the Newton lanes sent them on: q NULL) */
+	int quick = !use_quick || mode == MK_BATCH_FULL ? -1
+		: !ellipsoids ? mkBatchQuick_Bound(b1, b2, need, below, margin, distance, &r)
+		: !q || !distance ? mkBatchQuick_Ellipsoids(b1, b2, need, below, margin, distance, &r) : -1;
+	if (quick >= 0 && distance && r.status == MK_CONTACT_SEPARATED) {
+		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k); /* (the search would only have found it separated) */
+		return 0;
 	}
-	if (q && mode == MK_BATCH_DISTANCE && b1->shape.eps1 == 1.0 && b1->shape.eps2 == 1.0 && b2->shape.eps1 == 1.0
-		&& b2->shape.eps2 == 1.0) {
+	if (quick >= 0) {
+		mkBatch_Put(out, k, r.status, NAN, r.lower, r.upper, r.n, r.p1, r.p2, r.clear, (mkBatchPath)quick);
+		*path = (mkBatchPath)quick;
+		if (stats)
+			stats->quick += 1;
+		return 0;
+	}
+	if (q && distance && ellipsoids) {
 		mkVec3 d = mkVec3_Sub(b2->t, b1->t);
-		double dl = mkVec3_LengthInline(d), scale = mkScale(b1, b2), Q1[3][3], Q2[3][3];
+		double dl = mkVec3_LengthInline(d), P[3][3], Q1[3][3], Q2[3][3];
 		if (dl > 0.0 && isfinite(scale)) {
-			mkBatchEll_Q(b1, Q1);
-			mkBatchEll_Q(b2, Q2);
+			mkSupBody_PQ(b1, P, Q1);
+			mkSupBody_PQ(b2, P, Q2);
 			mkBatchEll_Push(q, b1, b2, Q1, Q2, d, scale, k, mkVec3_Scale(d, 1.0 / dl), 0, mode, delta, out);
 			return -1;
 		}
@@ -485,9 +302,7 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
 		return 0;
 	}
-	double margin = MK_BATCH_MARGIN * g->c.scale;
-	int clearance = mode == MK_BATCH_CLEARANCE;
-	mkGilbert_Begin(g, clearance ? delta + margin : margin, clearance ? delta - margin : -INFINITY);
+	mkGilbert_Begin(g, need, below);
 	return 1;
 }
 
@@ -643,7 +458,7 @@ static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
  * lane taking the next pair as its search ends; then each answer
  * (mkBatch_Finish). */
 static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
-	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf, mkBatchEllFn ef)
+	mkBatchStats3 *stats, int *failed, mkBatchLanesFn vf, mkBatchEllFn ef, int use_quick)
 {
 	mkBatchEllQueue q;
 	q.count = q.nretry = 0;
@@ -658,7 +473,7 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 				int retry = q.nretry > 0, k = retry ? q.retry[--q.nretry] : next++;
 				mkBatchPath p;
 				int b = mkBatch_Begin(&g[l], mkBatch_Body(pairs, 0, k), mkBatch_Body(pairs, 1, k), mode, delta, out, k,
-					&p, retry ? NULL : &q);
+					&p, retry ? NULL : &q, stats, use_quick);
 				if (b > 0) {
 					live[l] = 1;
 					++nlive;
@@ -740,10 +555,11 @@ static mkBatchEllFn mkBatch_EllFn(mkImpl impl)
 	return mkBatch_EllipsoidLanesScalar;
 }
 
-/* Both entries: the certificates first, with the lanes of impl (reference
- * = impl >= 0), or the one-pair query alone (reference -1). */
+/* Both entries: the certificates first (use_quick: those before any
+ * search too), with the lanes of impl (reference = impl >= 0), or the
+ * one-pair query alone (reference -1). */
 static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
-	mkBatchStats3 *stats, int reference)
+	mkBatchStats3 *stats, int reference, int use_quick)
 {
 	if (!mkBatch_ArgsOk(pairs, mode, delta, out))
 		return MK_ERR_ARGUMENT;
@@ -752,7 +568,7 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 	int failed = 0;
 	if (reference >= 0) {
 		mkBatch_Lanes(pairs, mode, delta, out, stats, &failed, mkBatch_LanesFn((mkImpl)reference),
-			mkBatch_EllFn((mkImpl)reference));
+			mkBatch_EllFn((mkImpl)reference), use_quick);
 		return failed ? MK_ERR_CONVERGENCE : MK_OK;
 	}
 	for (int k = 0; k < pairs->count; ++k) {
@@ -766,17 +582,17 @@ static mkResult mkBatch_Run(const mkBatchPairs3 *pairs, mkBatchMode mode, double
 mkResult mkCollide3_Batch(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
 	mkBatchStats3 *stats)
 {
-	return mkBatch_Run(pairs, mode, delta, out, stats, MK_IMPL_AUTO);
+	return mkBatch_Run(pairs, mode, delta, out, stats, MK_IMPL_AUTO, 1);
 }
 
-mkResult mkCollide3_BatchImpl(mkImpl impl, const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
+mkResult mkCollide3_BatchImpl(mkImpl impl, int quick, const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
 	const mkBatchOut3 *out, mkBatchStats3 *stats)
 {
 	if ((int)impl < MK_IMPL_AUTO || (int)impl > MK_IMPL_AVX512)
 		return MK_ERR_ARGUMENT;
 	if (impl != MK_IMPL_AUTO && !mkImpl_Available(impl))
 		return MK_ERR_UNSUPPORTED;
-	return mkBatch_Run(pairs, mode, delta, out, stats, (int)impl);
+	return mkBatch_Run(pairs, mode, delta, out, stats, (int)impl, quick != 0);
 }
 
 const char *mkCollide3_BatchLanes(void)
@@ -794,5 +610,5 @@ const char *mkCollide3_BatchLanes(void)
 mkResult mkCollide3_BatchReference(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
 	mkBatchStats3 *stats)
 {
-	return mkBatch_Run(pairs, mode, delta, out, stats, -1);
+	return mkBatch_Run(pairs, mode, delta, out, stats, -1, 0);
 }

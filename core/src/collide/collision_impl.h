@@ -53,8 +53,10 @@ void mkBatch_EllipsoidLanesAvx2(const mkBatchEllIn *in, mkBatchEllOut *out);
 void mkBatch_EllipsoidLanesAvx512(const mkBatchEllIn *in, mkBatchEllOut *out);
 /* mkCollide3_Batch with the lanes of impl (MK_IMPL_SCALAR: the scalar
  * support map; MK_IMPL_AVX2 / MK_IMPL_AVX512 where available, else
- * MK_ERR_UNSUPPORTED; MK_IMPL_AUTO: the widest available). */
-mkResult mkCollide3_BatchImpl(mkImpl impl, const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
+ * MK_ERR_UNSUPPORTED; MK_IMPL_AUTO: the widest available); quick 0 leaves
+ * out the certificates before any search (batch_quick.h), so that every
+ * pair goes through the lanes. */
+mkResult mkCollide3_BatchImpl(mkImpl impl, int quick, const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,
 	const mkBatchOut3 *out, mkBatchStats3 *stats);
 
 #endif
