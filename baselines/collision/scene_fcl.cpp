@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <mink/colliders.h>
+#include <mink/fcl_mesh.hpp>
 
 struct mkFclScene {
 	int narrow = MK_FCL_NARROW_FCL;
@@ -48,47 +49,6 @@ fcl::Transform3d mkFclPlace(const mkMat3 &R, const mkVec3 &t)
 	return T;
 }
 
-// sign(c) |c|^e
-double mkFclPow(double c, double e) { return std::copysign(std::pow(std::fabs(c), e), c); }
-
-// The surface mesh of b (vertices t + M s(eta, omega), on the surface): res
-// rings of 2 res vertices between the two poles.
-std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> mkFclMesh(const mkBody3 &b, int res, long *triangles)
-{
-	std::vector<fcl::Vector3d> v;
-	std::vector<fcl::Triangle> tri;
-	const double pi = 3.14159265358979323846;
-	int nl = 2 * res;
-	auto put = [&](double eta, double om) {
-		mkVec3 s = mkVec3_Make(b.shape.a * mkFclPow(std::cos(eta), b.shape.eps1) * mkFclPow(std::cos(om), b.shape.eps2),
-			b.shape.b * mkFclPow(std::cos(eta), b.shape.eps1) * mkFclPow(std::sin(om), b.shape.eps2),
-			b.shape.c * mkFclPow(std::sin(eta), b.shape.eps1));
-		mkVec3 x = mkVec3_Add(b.t, mkMat3_MulVec(b.M, s));
-		v.emplace_back(x.x, x.y, x.z);
-	};
-	put(-pi / 2, 0.0);
-	for (int r = 1; r <= res; ++r)
-		for (int k = 0; k < nl; ++k) put(-pi / 2 + pi * r / (res + 1), 2.0 * pi * k / nl);
-	put(pi / 2, 0.0);
-	int top = (int)v.size() - 1;
-	for (int k = 0; k < nl; ++k) {
-		int k1 = (k + 1) % nl;
-		tri.emplace_back(0, 1 + k1, 1 + k);
-		tri.emplace_back(top, 1 + (res - 1) * nl + k, 1 + (res - 1) * nl + k1);
-		for (int r = 0; r + 1 < res; ++r) {
-			int a = 1 + r * nl, c = 1 + (r + 1) * nl;
-			tri.emplace_back(a + k, a + k1, c + k1);
-			tri.emplace_back(a + k, c + k1, c + k);
-		}
-	}
-	auto m = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-	m->beginModel();
-	m->addSubModel(v, tri);
-	m->endModel();
-	*triangles += (long)tri.size();
-	return m;
-}
-
 // FCL's geometry of b and the transform that places it (b's frame when a
 // mesh or the centre's rotation when a shape).
 std::shared_ptr<fcl::CollisionObjectd> mkFclObject(const mkBody3 &b, mkFclScene *s, int res)
@@ -99,7 +59,9 @@ std::shared_ptr<fcl::CollisionObjectd> mkFclObject(const mkBody3 &b, mkFclScene 
 	if (rot && ell) {
 		g = std::make_shared<fcl::Ellipsoidd>(b.shape.a, b.shape.b, b.shape.c);
 	} else if (s->narrow == MK_FCL_NARROW_FCL) {
-		g = mkFclMesh(b, res, &s->triangles);
+		mkFclMesh m = mkFclMesh_Superquadric(b, res);
+		s->triangles += (long)m.triangles.size();
+		g = mkFclMesh_Convex(m);
 		T = fcl::Transform3d::Identity();
 	} else if (rot) {
 		g = std::make_shared<fcl::Boxd>(2.0 * b.shape.a, 2.0 * b.shape.b, 2.0 * b.shape.c);

@@ -4,9 +4,11 @@
  * narrow phases behind it:
  *  - MK_FCL_NARROW_FCL: FCL's own (fcl::collide, default request) on FCL's
  *    geometry of each body: its native ellipsoid for an ellipsoid placed by
- *    a rotation, else a triangle mesh of the surface (mesh_res rings of
- *    2 mesh_res vertices between the poles, every vertex on the surface:
- *    the mesh lies inside the body, so it can miss contacts);
+ *    a rotation, else the convex polytope (fcl::Convex) of its surface
+ *    mesh (mkFclMesh_Superquadric of mink/fcl_mesh.hpp: mesh_res rings of
+ *    2 mesh_res vertices between the poles, 4 mesh_res^2 triangles, every
+ *    vertex on the surface: the mesh lies inside the body, so it can miss
+ *    contacts);
  *  - MK_FCL_NARROW_CCD: libccd's GJK (the registry's ccd-gjk: exact
  *    support functions) on the exact bodies, the broad phase on FCL
  *    shapes that hold them (the ellipsoid; a box of the semi-axes for a
