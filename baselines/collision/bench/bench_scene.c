@@ -2,8 +2,9 @@
  * poses among N obstacles (ellipsoids, or superquadrics with --kind sq),
  * mink's scene query (mink/scenequery.h, 1 and 2 threads) against FCL
  * 0.7's DynamicAABBTreeCollisionManager with FCL's narrow phase (native
- * ellipsoids; superquadrics as meshes of --mesh N rings) and with libccd's
- * GJK on the exact bodies behind the same broad phase (mink/scene_fcl.h).
+ * ellipsoids; superquadrics as convex meshes of --mesh N rings) and with
+ * libccd's GJK on the exact bodies behind the same broad phase
+ * (mink/scene_fcl.h).
  * The entries run interleaved, round by round (mink-1t, fcl, mink-2t,
  * mink-yn, ccd), on the same poses; the rows give the median time of a
  * round as poses per second and the ratios. mink-yn is the query asked for
@@ -224,7 +225,7 @@ int main(int argc, char **argv)
 				"  a robot of 2 ellipsoids at POSES random poses (default 2000) among 10, 100, 1000, 10000 obstacles\n"
 				"  (up to MAX_OBSTACLES, default 1000): ellipsoids, or superquadrics with --kind sq. mink's scene\n"
 				"  query on 1 and 2 threads against FCL 0.7's DynamicAABBTreeCollisionManager with FCL's narrow phase\n"
-				"  (superquadrics as meshes of N rings of 2N vertices, default 16) and with libccd's GJK behind it,\n"
+				"  (superquadrics as convex meshes of N rings of 2N vertices, default 16) and with libccd's GJK behind it,\n"
 				"  interleaved for ROUNDS rounds (default 5), SEED (default 2029).\n");
 			return 0;
 		}
@@ -254,7 +255,7 @@ int main(int argc, char **argv)
 	printf("# bench_scene: %d poses, %d rounds interleaved (mink-1t, fcl, mink-2t, mink-yn, ccd), median round; poses per second\n"
 		"# mink-1t, -2t: certified free/colliding and the nearest obstacle's clearance per pose (1, 2 threads);\n"
 		"# mink-yn: certified free/colliding only (max_clearance 1e-9, 1 thread);\n"
-		"# fcl: DynamicAABBTreeCollisionManager + fcl::collide (ellipsoids native, superquadrics as meshes of %d rings)\n"
+		"# fcl: DynamicAABBTreeCollisionManager + fcl::collide (ellipsoids native, superquadrics as convex meshes of %d rings)\n"
 		"# ccd: the same broad phase + libccd's GJK on the exact bodies; both yes/no, first contact\n"
 		"%-9s %6s %6s %10s %10s %10s %10s %10s %7s %7s %7s %7s %6s %5s %5s %4s %5s %5s\n", np, rounds, mkBs_mesh, "kind",
 		"obst", "poses", "mink-1t/s", "mink-2t/s", "mink-yn/s", "fcl/s", "ccd/s", "1t/fcl", "2t/fcl", "yn/fcl", "yn/ccd",
