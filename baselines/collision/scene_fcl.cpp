@@ -10,13 +10,16 @@
 #include <cmath>
 #include <memory>
 #include <new>
+#include <stdexcept>
 #include <vector>
 
 #include <mink/colliders.h>
+#include <mink/fcl_mesh.hpp>
 
 struct mkFclScene {
 	int narrow = MK_FCL_NARROW_FCL;
 	std::vector<mkBody3> obs, robot, placed;   // exact bodies (the ccd narrow phase)
+	std::vector<char> box;                     // obstacle i is a box
 	std::vector<std::shared_ptr<fcl::CollisionObjectd>> obstacles, parts;
 	std::vector<fcl::Transform3d> rest;   // each part's placement in the robot's frame
 	fcl::DynamicAABBTreeCollisionManagerd manager;
@@ -48,58 +51,28 @@ fcl::Transform3d mkFclPlace(const mkMat3 &R, const mkVec3 &t)
 	return T;
 }
 
-// sign(c) |c|^e
-double mkFclPow(double c, double e) { return std::copysign(std::pow(std::fabs(c), e), c); }
-
-// The surface mesh of b (vertices t + M s(eta, omega), on the surface): res
-// rings of 2 res vertices between the two poles.
-std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> mkFclMesh(const mkBody3 &b, int res, long *triangles)
-{
-	std::vector<fcl::Vector3d> v;
-	std::vector<fcl::Triangle> tri;
-	const double pi = 3.14159265358979323846;
-	int nl = 2 * res;
-	auto put = [&](double eta, double om) {
-		mkVec3 s = mkVec3_Make(b.shape.a * mkFclPow(std::cos(eta), b.shape.eps1) * mkFclPow(std::cos(om), b.shape.eps2),
-			b.shape.b * mkFclPow(std::cos(eta), b.shape.eps1) * mkFclPow(std::sin(om), b.shape.eps2),
-			b.shape.c * mkFclPow(std::sin(eta), b.shape.eps1));
-		mkVec3 x = mkVec3_Add(b.t, mkMat3_MulVec(b.M, s));
-		v.emplace_back(x.x, x.y, x.z);
-	};
-	put(-pi / 2, 0.0);
-	for (int r = 1; r <= res; ++r)
-		for (int k = 0; k < nl; ++k) put(-pi / 2 + pi * r / (res + 1), 2.0 * pi * k / nl);
-	put(pi / 2, 0.0);
-	int top = (int)v.size() - 1;
-	for (int k = 0; k < nl; ++k) {
-		int k1 = (k + 1) % nl;
-		tri.emplace_back(0, 1 + k1, 1 + k);
-		tri.emplace_back(top, 1 + (res - 1) * nl + k, 1 + (res - 1) * nl + k1);
-		for (int r = 0; r + 1 < res; ++r) {
-			int a = 1 + r * nl, c = 1 + (r + 1) * nl;
-			tri.emplace_back(a + k, a + k1, c + k1);
-			tri.emplace_back(a + k, c + k1, c + k);
-		}
-	}
-	auto m = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-	m->beginModel();
-	m->addSubModel(v, tri);
-	m->endModel();
-	*triangles += (long)tri.size();
-	return m;
-}
-
-// FCL's geometry of b and the transform that places it (b's frame when a
-// mesh or the centre's rotation when a shape).
-std::shared_ptr<fcl::CollisionObjectd> mkFclObject(const mkBody3 &b, mkFclScene *s, int res)
+// FCL's geometry of b (of the box t + M [-half, half] when half is not
+// null) and the transform that places it (b's frame when a mesh or the
+// centre's rotation when a shape).
+std::shared_ptr<fcl::CollisionObjectd> mkFclObject(const mkBody3 &b, const double *half, mkFclScene *s, int res)
 {
 	bool rot = mkFclRotation(b), ell = b.shape.eps1 == 1.0 && b.shape.eps2 == 1.0;
 	std::shared_ptr<fcl::CollisionGeometryd> g;
 	fcl::Transform3d T = mkFclPlace(b.M, b.t);
-	if (rot && ell) {
+	if (half && s->narrow == MK_FCL_NARROW_FCL) {
+		mkFclMesh m = mkFclMesh_Box(b.M, b.t, mkVec3_Make(half[0], half[1], half[2]));
+		s->triangles += (long)m.triangles.size();
+		g = mkFclMesh_Convex(m);
+		T = fcl::Transform3d::Identity();
+	} else if (half) {
+		if (!rot) throw std::invalid_argument("a box for FCL's native box must be placed by a rotation");
+		g = std::make_shared<fcl::Boxd>(2.0 * half[0], 2.0 * half[1], 2.0 * half[2]);
+	} else if (rot && ell) {
 		g = std::make_shared<fcl::Ellipsoidd>(b.shape.a, b.shape.b, b.shape.c);
 	} else if (s->narrow == MK_FCL_NARROW_FCL) {
-		g = mkFclMesh(b, res, &s->triangles);
+		mkFclMesh m = mkFclMesh_Superquadric(b, res);
+		s->triangles += (long)m.triangles.size();
+		g = mkFclMesh_Convex(m);
 		T = fcl::Transform3d::Identity();
 	} else if (rot) {
 		g = std::make_shared<fcl::Boxd>(2.0 * b.shape.a, 2.0 * b.shape.b, 2.0 * b.shape.c);
@@ -124,14 +97,15 @@ struct mkFclHit {
 bool mkFclOnPair(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *data)
 {
 	mkFclHit *h = static_cast<mkFclHit *>(data);
-	if (h->s->narrow == MK_FCL_NARROW_FCL) {
+	long u1 = (long)(intptr_t)o1->getUserData(), u2 = (long)(intptr_t)o2->getUserData();
+	bool box = (u1 > 0 && h->s->box[u1 - 1]) || (u2 > 0 && h->s->box[u2 - 1]);
+	if (h->s->narrow == MK_FCL_NARROW_FCL || box) {
 		fcl::CollisionRequestd req;
 		fcl::CollisionResultd res;
 		fcl::collide(o1, o2, req, res);
 		h->hit = h->hit || res.isCollision();
 		return h->hit;
 	}
-	long u1 = (long)(intptr_t)o1->getUserData(), u2 = (long)(intptr_t)o2->getUserData();
 	const mkBody3 &a = u1 > 0 ? h->s->obs[u1 - 1] : h->s->placed[-u1 - 1];
 	const mkBody3 &b = u2 > 0 ? h->s->obs[u2 - 1] : h->s->placed[-u2 - 1];
 	mkColliderScratch scratch;
@@ -145,6 +119,12 @@ bool mkFclOnPair(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *dat
 extern "C" mkFclScene *mkFclScene_Create(int n, const mkBody3 *obstacles, int parts, const mkBody3 *robot, int mesh_res,
 	int narrow)
 {
+	return mkFclScene_CreateBoxes(n, obstacles, nullptr, parts, robot, mesh_res, narrow);
+}
+
+extern "C" mkFclScene *mkFclScene_CreateBoxes(int n, const mkBody3 *obstacles, const double *box_half, int parts,
+	const mkBody3 *robot, int mesh_res, int narrow)
+{
 	if (n < 0 || parts < 1 || mesh_res < 2 || mesh_res > 1000 || (narrow != MK_FCL_NARROW_FCL && narrow != MK_FCL_NARROW_CCD))
 		return nullptr;
 	mkFclScene *s = new (std::nothrow) mkFclScene;
@@ -157,7 +137,9 @@ extern "C" mkFclScene *mkFclScene_Create(int n, const mkBody3 *obstacles, int pa
 		s->placed = s->robot;
 		std::vector<fcl::CollisionObjectd *> objs;
 		for (int i = 0; i < n; ++i) {
-			s->obstacles.push_back(mkFclObject(obstacles[i], s, mesh_res));
+			const double *half = box_half && box_half[3 * i] > 0.0 ? box_half + 3 * i : nullptr;
+			s->box.push_back(half != nullptr);
+			s->obstacles.push_back(mkFclObject(obstacles[i], half, s, mesh_res));
 			s->obstacles.back()->setUserData((void *)(intptr_t)(1 + i));
 			objs.push_back(s->obstacles.back().get());
 		}
@@ -166,7 +148,7 @@ extern "C" mkFclScene *mkFclScene_Create(int n, const mkBody3 *obstacles, int pa
 		// a part's object in the robot's frame: its own placement, composed
 		// with the pose at each check
 		for (int j = 0; j < parts; ++j) {
-			s->parts.push_back(mkFclObject(robot[j], s, mesh_res));
+			s->parts.push_back(mkFclObject(robot[j], nullptr, s, mesh_res));
 			s->parts.back()->setUserData((void *)(intptr_t)(-(1 + j)));
 			s->rest.push_back(s->parts.back()->getTransform());
 		}

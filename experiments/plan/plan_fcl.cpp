@@ -4,7 +4,6 @@
 #include "mink_plan/plan_fcl.h"
 
 #include <cmath>
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -13,6 +12,8 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/util/Console.h>
+
+#include <mink/fcl_mesh.hpp>
 
 #include "plan_internal.h"
 
@@ -42,72 +43,7 @@ bool mkFclIsRotation(const mkMat3 &M)
 	return mkMat3_Det(M) > 0.0;
 }
 
-Geometry mkFclMesh(const std::vector<fcl::Vector3d> &v, const std::vector<fcl::Triangle> &t)
-{
-	auto verts = std::make_shared<std::vector<fcl::Vector3d>>(v);
-	auto faces = std::make_shared<std::vector<int>>();
-	for (const auto &f : t) {
-		faces->push_back(3);
-		for (int i = 0; i < 3; ++i) faces->push_back((int)f[i]);
-	}
-	return std::make_shared<fcl::Convexd>(verts, (int)t.size(), faces);
-}
-
-// The prism over the closed outline p (counter-clockwise) from z0 to z1.
-Geometry mkFclPrism(const std::vector<fcl::Vector3d> &p, const fcl::Vector3d &up)
-{
-	int n = (int)p.size();
-	std::vector<fcl::Vector3d> v;
-	std::vector<fcl::Triangle> t;
-	fcl::Vector3d c0 = fcl::Vector3d::Zero();
-	for (const auto &x : p) c0 += x / n;
-	for (const auto &x : p) v.push_back(x);
-	for (const auto &x : p) v.push_back(x + up);
-	v.push_back(c0);
-	v.push_back(c0 + up);
-	for (int i = 0; i < n; ++i) {
-		int j = (i + 1) % n;
-		t.emplace_back(i, j, n + j);
-		t.emplace_back(i, n + j, n + i);
-		t.emplace_back(2 * n, j, i);
-		t.emplace_back(2 * n + 1, n + i, n + j);
-	}
-	return mkFclMesh(v, t);
-}
-
 fcl::Vector3d mkFclVec(mkVec3 p) { return fcl::Vector3d(p.x, p.y, p.z); }
-
-// The surface points of a superquadric body at res x res/2 directions.
-Geometry mkFclSuperquadric(const mkBody3 &b, int res)
-{
-	int rings = res / 2 - 1;
-	std::vector<fcl::Vector3d> v;
-	std::vector<fcl::Triangle> t;
-	auto at = [&](mkVec3 u) {
-		return mkFclVec(mkVec3_Add(mkMat3_MulVec(b.M, mkShape3_Point(b.shape, u)), b.t));
-	};
-	v.push_back(at(mkVec3{ 0, 0, -1 }));
-	for (int i = 0; i < rings; ++i) {
-		double phi = -M_PI / 2 + M_PI * (i + 1) / (rings + 1);
-		for (int j = 0; j < res; ++j) {
-			double lam = 2 * M_PI * j / res;
-			v.push_back(at(mkVec3{ std::cos(phi) * std::cos(lam), std::cos(phi) * std::sin(lam), std::sin(phi) }));
-		}
-	}
-	v.push_back(at(mkVec3{ 0, 0, 1 }));
-	int top = (int)v.size() - 1;
-	for (int j = 0; j < res; ++j) {
-		int k = (j + 1) % res;
-		t.emplace_back(0, 1 + k, 1 + j);
-		t.emplace_back(top, 1 + (rings - 1) * res + j, 1 + (rings - 1) * res + k);
-		for (int i = 0; i + 1 < rings; ++i) {
-			int a = 1 + i * res, c = a + res;
-			t.emplace_back(a + j, a + k, c + k);
-			t.emplace_back(a + j, c + k, c + j);
-		}
-	}
-	return mkFclMesh(v, t);
-}
 
 mkFclBody mkFclBody3(const mkSceneBody &sb, int res)
 {
@@ -120,21 +56,19 @@ mkFclBody mkFclBody3(const mkSceneBody &sb, int res)
 		out.pose.translation() = mkFclVec(b.t);
 		return out;
 	}
-	if (sb.kind == MK_SCENE_SMOOTH) { out.geometry = mkFclSuperquadric(b, res); return out; }
+	// res longitudes on res/2 rings (mink/fcl_mesh.hpp)
+	if (sb.kind == MK_SCENE_SMOOTH) { out.geometry = mkFclMesh_Convex(mkFclMesh_Superquadric(b, res / 2)); return out; }
+	if (sb.kind == MK_SCENE_BOX) {
+		mkVec3 h = { sb.size[0] / 2, sb.size[1] / 2, sb.size[2] / 2 };
+		out.geometry = mkFclMesh_Convex(mkFclMesh_Box(b.M, b.t, h));
+		return out;
+	}
 	auto map = [&](double x, double y, double z) { return mkFclVec(mkVec3_Add(mkMat3_MulVec(b.M, mkVec3{ x, y, z }), b.t)); };
 	std::vector<fcl::Vector3d> ring;
-	double h;
-	if (sb.kind == MK_SCENE_BOX) {
-		double l = sb.size[0] / 2, w = sb.size[1] / 2;
-		h = sb.size[2];
-		ring = { map(-l, -w, -h / 2), map(l, -w, -h / 2), map(l, w, -h / 2), map(-l, w, -h / 2) };
-	} else {
-		double r = sb.size[0];
-		h = sb.size[1];
-		for (int j = 0; j < res; ++j)
-			ring.push_back(map(r * std::cos(2 * M_PI * j / res), r * std::sin(2 * M_PI * j / res), -h / 2));
-	}
-	out.geometry = mkFclPrism(ring, map(0, 0, h / 2) - map(0, 0, -h / 2));
+	double r = sb.size[0], h = sb.size[1];
+	for (int j = 0; j < res; ++j)
+		ring.push_back(map(r * std::cos(2 * M_PI * j / res), r * std::sin(2 * M_PI * j / res), -h / 2));
+	out.geometry = mkFclMesh_Convex(mkFclMesh_Prism(ring, map(0, 0, h / 2) - map(0, 0, -h / 2)));
 	return out;
 }
 
@@ -156,9 +90,8 @@ mkFclBody mkFclBody2(const mkSceneBody &sb, int res)
 			ring.push_back(map(mkShape2_Point(b.shape, mkVec2{ std::cos(a), std::sin(a) })));
 		}
 	}
-	if (mkMat2_Det(b.M) < 0) std::reverse(ring.begin(), ring.end());
 	mkFclBody out;
-	out.geometry = mkFclPrism(ring, fcl::Vector3d(0, 0, 2));
+	out.geometry = mkFclMesh_Convex(mkFclMesh_Prism(ring, fcl::Vector3d(0, 0, 2)));
 	return out;
 }
 

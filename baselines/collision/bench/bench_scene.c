@@ -1,9 +1,12 @@
 /* bench_scene.c - scene checks: a robot of two ellipsoid parts at random
- * poses among N obstacles (ellipsoids, or superquadrics with --kind sq),
+ * poses among N obstacles (ellipsoids, superquadrics with --kind sq, or
+ * boxes with --kind box: FCL on their exact 12-triangle meshes, libccd's
+ * GJK replaced by FCL's native box),
  * mink's scene query (mink/scenequery.h, 1 and 2 threads) against FCL
  * 0.7's DynamicAABBTreeCollisionManager with FCL's narrow phase (native
- * ellipsoids; superquadrics as meshes of --mesh N rings) and with libccd's
- * GJK on the exact bodies behind the same broad phase (mink/scene_fcl.h).
+ * ellipsoids; superquadrics as convex meshes of --mesh N rings) and with
+ * libccd's GJK on the exact bodies behind the same broad phase
+ * (mink/scene_fcl.h).
  * The entries run interleaved, round by round (mink-1t, fcl, mink-2t,
  * mink-yn, ccd), on the same poses; the rows give the median time of a
  * round as poses per second and the ratios. mink-yn is the query asked for
@@ -12,13 +15,14 @@
  * colliding; uncertain poses are counted apart): the disagreements are
  * counted, and the first ones listed with mink's clearance bound.
  *
- * usage: bench_scene [--kind ellipsoid|sq] [--mesh N] [POSES [MAX_OBSTACLES [ROUNDS [SEED]]]]
+ * usage: bench_scene [--kind ellipsoid|sq|box] [--mesh N] [POSES [MAX_OBSTACLES [ROUNDS [SEED]]]]
  * (defaults ellipsoid, 16, 2000 1000 5 2029; scenes of 10, 100, 1000,
  * 10000 obstacles up to MAX_OBSTACLES). Exit 1 when a verdict of an exact
- * peer (FCL on ellipsoids, libccd) disagrees with mink's by more than the
- * contact band (|clearance bound| > 1e-6 of the robot's size), or when
- * mink's answers differ between its entries; FCL's meshes are counted, never
- * judged; timings never decide the exit status. */
+ * peer (FCL on ellipsoids and on boxes' exact meshes, libccd, FCL's
+ * native box) disagrees with mink's by more than the contact band
+ * (|clearance bound| > 1e-6 of the robot's size), or when mink's answers
+ * differ between its entries; FCL's superquadric meshes are counted,
+ * never judged; timings never decide the exit status. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -54,11 +58,13 @@ static int mkBs_CompareDouble(const void *a, const void *b)
 }
 
 static int mkBs_sq = 0;   /* --kind sq: superquadric obstacles */
+static int mkBs_box = 0;  /* --kind box: box obstacles */
 static int mkBs_mesh = 16; /* --mesh: rings of FCL's meshes */
 
-/* The scene text: n obstacles (ellipsoids, or superquadrics with exponents
- * in [0.3, 1.7]), random semi-axes in [0.3, 1.5] and orientations, in a
- * cube whose side keeps about 1 obstacle per 80 unit volumes. */
+/* The scene text: n obstacles (ellipsoids, superquadrics with exponents
+ * in [0.3, 1.7], or boxes), random semi-axes (half sides) in [0.3, 1.5]
+ * and orientations, in a cube whose side keeps about 1 obstacle per 80 unit
+ * volumes. */
 static char *mkBs_SceneText(int n)
 {
 	size_t len = (size_t)n * 200 + 512, k;
@@ -69,7 +75,9 @@ static char *mkBs_SceneText(int n)
 		"part ellipsoid a=0.5 b=0.3 c=0.3 quat=0.9,0.2,0.3,0 at=1.2,0.3,0.2\nobject clutter\n");
 	for (int i = 0; i < n; ++i) {
 		double a = mkBs_Uni(0.3, 1.5), b = mkBs_Uni(0.3, 1.5), c = mkBs_Uni(0.3, 1.5);
-		if (mkBs_sq)
+		if (mkBs_box)
+			k += (size_t)snprintf(t + k, len - k, "obstacle box size=%.6f,%.6f,%.6f", 2 * a, 2 * b, 2 * c);
+		else if (mkBs_sq)
 			k += (size_t)snprintf(t + k, len - k, "obstacle superquadric a=%.6f b=%.6f c=%.6f eps1=%.4f eps2=%.4f", a, b, c,
 				mkBs_Uni(0.3, 1.7), mkBs_Uni(0.3, 1.7));
 		else
@@ -82,19 +90,30 @@ static char *mkBs_SceneText(int n)
 	return t;
 }
 
-/* A peer's scene of the query's bodies (the generated scenes' bodies are
- * smooth: their models are the bodies). */
-static mkFclScene *mkBs_Peer(const mkSceneQuery *q, int n, int narrow)
+/* A peer's scene of the query's bodies (smooth bodies are their own
+ * models; a box obstacle goes to the peer as the exact box of the scene). */
+static mkFclScene *mkBs_Peer(const mkScene *sc, const mkSceneQuery *q, int n, int narrow)
 {
 	mkBody3 *obs = malloc(sizeof *obs * (size_t)n + 1), robot[2];
-	double pose[7] = {0, 0, 0, 1, 0, 0, 0};
+	double pose[7] = {0, 0, 0, 1, 0, 0, 0}, *half = calloc(3 * (size_t)n + 1, sizeof *half);
 	mkFclScene *s = NULL;
-	if (obs) {
-		for (int i = 0; i < n; ++i) mkSceneQuery_ObstacleBody(q, i, 0, &obs[i]);
+	if (obs && half) {
+		for (int i = 0; i < n; ++i) {
+			mkSceneQuery_ObstacleBody(q, i, 0, &obs[i]);
+			const mkSceneBody *b = &sc->obstacles[i];
+			if (b->kind != MK_SCENE_BOX) continue;
+			if (mkVec3_Length(mkVec3_Sub(obs[i].t, b->spec.body3.t)) > 1e-12 * (1.0 + mkVec3_Length(obs[i].t))) {
+				fprintf(stderr, "bench_scene: the query's obstacle %d is not the scene's obstacle %d\n", i, i);
+				exit(1);
+			}
+			obs[i].M = b->spec.body3.M;
+			for (int d = 0; d < 3; ++d) half[3 * i + d] = 0.5 * b->size[d];
+		}
 		for (int j = 0; j < 2; ++j) mkSceneQuery_PartBody(q, pose, j, 0, &robot[j]);
-		s = mkFclScene_Create(n, obs, 2, robot, mkBs_mesh, narrow);
+		s = mkFclScene_CreateBoxes(n, obs, half, 2, robot, mkBs_mesh, narrow);
 	}
 	free(obs);
+	free(half);
 	return s;
 }
 
@@ -165,7 +184,7 @@ static int mkBs_Scene(int n, int np, int rounds)
 	unsigned char *hit[2] = {malloc((size_t)np), malloc((size_t)np)};
 	for (int e = 0; e < 3; ++e) a[e] = malloc(sizeof *a[e] * (size_t)np);
 	double *t = malloc(sizeof(double) * 10 * (size_t)rounds);
-	mkFclScene *f[2] = {mkBs_Peer(q[0], n, MK_FCL_NARROW_FCL), mkBs_Peer(q[0], n, MK_FCL_NARROW_CCD)};
+	mkFclScene *f[2] = {mkBs_Peer(&s, q[0], n, MK_FCL_NARROW_FCL), mkBs_Peer(&s, q[0], n, MK_FCL_NARROW_CCD)};
 	if (!poses || !a[0] || !a[1] || !a[2] || !hit[0] || !hit[1] || !t || !f[0] || !f[1]) {
 		fprintf(stderr, "bench_scene: out of memory\n");
 		exit(1);
@@ -189,7 +208,7 @@ static int mkBs_Scene(int n, int np, int rounds)
 		med[e] = t[e * rounds + rounds / 2];
 	}
 	printf("%-9s %6d %6d %10.0f %10.0f %10.0f %10.0f %10.0f %7.2f %7.2f %7.2f %7.2f %6.2f %5d %5d %4d %5d %5d %s\n",
-		mkBs_sq ? "sq" : "ellipsoid", n, np, np / med[0], np / med[2], np / med[3], np / med[1], np / med[4],
+		mkBs_box ? "box" : mkBs_sq ? "sq" : "ellipsoid", n, np, np / med[0], np / med[2], np / med[3], np / med[1], np / med[4],
 		med[1] / med[0], med[1] / med[2], med[1] / med[3], med[4] / med[3], med[0] / med[2], counts[0], counts[1],
 		counts[2], dis[0], dis[1], same ? "" : "ANSWERS DIFFER");
 	printf("  cpu time (1 thread): yn/fcl %.2f, yn/ccd %.2f, 1t/fcl %.2f; mink-yn %.3f us per pose, fcl %.3f, ccd %.3f\n",
@@ -220,21 +239,23 @@ int main(int argc, char **argv)
 	int npos = 0;
 	for (int i = 1; i < argc; ++i) {
 		if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-			printf("usage: bench_scene [--kind ellipsoid|sq] [--mesh N] [POSES [MAX_OBSTACLES [ROUNDS [SEED]]]]\n"
+			printf("usage: bench_scene [--kind ellipsoid|sq|box] [--mesh N] [POSES [MAX_OBSTACLES [ROUNDS [SEED]]]]\n"
 				"  a robot of 2 ellipsoids at POSES random poses (default 2000) among 10, 100, 1000, 10000 obstacles\n"
-				"  (up to MAX_OBSTACLES, default 1000): ellipsoids, or superquadrics with --kind sq. mink's scene\n"
-				"  query on 1 and 2 threads against FCL 0.7's DynamicAABBTreeCollisionManager with FCL's narrow phase\n"
-				"  (superquadrics as meshes of N rings of 2N vertices, default 16) and with libccd's GJK behind it,\n"
+				"  (up to MAX_OBSTACLES, default 1000): ellipsoids, superquadrics (--kind sq) or boxes (--kind box).\n"
+				"  mink's scene query on 1 and 2 threads against FCL 0.7's DynamicAABBTreeCollisionManager with FCL's narrow phase\n"
+				"  (superquadrics as convex meshes of N rings of 2N vertices, default 16; boxes as exact 12-triangle\n"
+				"  meshes) and with libccd's GJK behind it (on boxes FCL's native box),\n"
 				"  interleaved for ROUNDS rounds (default 5), SEED (default 2029).\n");
 			return 0;
 		}
 		if (!strcmp(argv[i], "--kind") && i + 1 < argc) {
 			++i;
-			if (strcmp(argv[i], "ellipsoid") && strcmp(argv[i], "sq")) {
-				fprintf(stderr, "bench_scene: --kind = '%s' is not known: must be ellipsoid or sq\n", argv[i]);
+			if (strcmp(argv[i], "ellipsoid") && strcmp(argv[i], "sq") && strcmp(argv[i], "box")) {
+				fprintf(stderr, "bench_scene: --kind = '%s' is not known: must be ellipsoid, sq or box\n", argv[i]);
 				return 2;
 			}
 			mkBs_sq = !strcmp(argv[i], "sq");
+			mkBs_box = !strcmp(argv[i], "box");
 		} else if (!strcmp(argv[i], "--mesh") && i + 1 < argc) {
 			mkBs_mesh = (int)mkBs_Arg(argv[++i], "--mesh", 2, 1000);
 		} else if (argv[i][0] == '-' && argv[i][1] == '-') {
@@ -254,8 +275,9 @@ int main(int argc, char **argv)
 	printf("# bench_scene: %d poses, %d rounds interleaved (mink-1t, fcl, mink-2t, mink-yn, ccd), median round; poses per second\n"
 		"# mink-1t, -2t: certified free/colliding and the nearest obstacle's clearance per pose (1, 2 threads);\n"
 		"# mink-yn: certified free/colliding only (max_clearance 1e-9, 1 thread);\n"
-		"# fcl: DynamicAABBTreeCollisionManager + fcl::collide (ellipsoids native, superquadrics as meshes of %d rings)\n"
-		"# ccd: the same broad phase + libccd's GJK on the exact bodies; both yes/no, first contact\n"
+		"# fcl: DynamicAABBTreeCollisionManager + fcl::collide (ellipsoids native, superquadrics as convex meshes of %d rings,\n"
+		"#   boxes as exact 12-triangle convex meshes)\n"
+		"# ccd: the same broad phase + libccd's GJK on the exact bodies (boxes: FCL's native box); both yes/no, first contact\n"
 		"%-9s %6s %6s %10s %10s %10s %10s %10s %7s %7s %7s %7s %6s %5s %5s %4s %5s %5s\n", np, rounds, mkBs_mesh, "kind",
 		"obst", "poses", "mink-1t/s", "mink-2t/s", "mink-yn/s", "fcl/s", "ccd/s", "1t/fcl", "2t/fcl", "yn/fcl", "yn/ccd",
 		"2t/1t", "free", "coll", "unc", "d-fcl", "d-ccd");

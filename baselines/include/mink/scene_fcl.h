@@ -4,9 +4,11 @@
  * narrow phases behind it:
  *  - MK_FCL_NARROW_FCL: FCL's own (fcl::collide, default request) on FCL's
  *    geometry of each body: its native ellipsoid for an ellipsoid placed by
- *    a rotation, else a triangle mesh of the surface (mesh_res rings of
- *    2 mesh_res vertices between the poles, every vertex on the surface:
- *    the mesh lies inside the body, so it can miss contacts);
+ *    a rotation, else the convex polytope (fcl::Convex) of its surface
+ *    mesh (mkFclMesh_Superquadric of mink/fcl_mesh.hpp: mesh_res rings of
+ *    2 mesh_res vertices between the poles, 4 mesh_res^2 triangles, every
+ *    vertex on the surface: the mesh lies inside the body, so it can miss
+ *    contacts);
  *  - MK_FCL_NARROW_CCD: libccd's GJK (the registry's ccd-gjk: exact
  *    support functions) on the exact bodies, the broad phase on FCL
  *    shapes that hold them (the ellipsoid; a box of the semi-axes for a
@@ -32,6 +34,14 @@ enum { MK_FCL_NARROW_FCL = 0, MK_FCL_NARROW_CCD = 1 };
  * argument or when out of memory. */
 mkFclScene *mkFclScene_Create(int n, const mkBody3 *obstacles, int parts, const mkBody3 *robot, int mesh_res,
 	int narrow);
+/* As mkFclScene_Create, with obstacle i the box t + M [-h, h] (the M and t
+ * of obstacles[i], half sizes h = box_half[3i .. 3i + 2]) wherever
+ * box_half[3i] > 0 (box_half may be NULL: no boxes): for
+ * MK_FCL_NARROW_FCL its exact mesh (12 triangles, mkFclMesh_Box, as
+ * fcl::Convex); for MK_FCL_NARROW_CCD FCL's native fcl::Box (M a rotation)
+ * and fcl::collide for the pairs it is in (libccd's GJK inside FCL). */
+mkFclScene *mkFclScene_CreateBoxes(int n, const mkBody3 *obstacles, const double *box_half, int parts,
+	const mkBody3 *robot, int mesh_res, int narrow);
 /* The robot at rotation R (9 values) and position c (3): 1 when a part is found in contact
  * with an obstacle, else 0. */
 int mkFclScene_Check(mkFclScene *s, const double *R, const double *c);

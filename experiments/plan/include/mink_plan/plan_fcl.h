@@ -9,9 +9,10 @@
  * Geometry (the declared shapes of the scene):
  *   3D ellipsoids and spheres placed by a rotation: fcl::Ellipsoid (native);
  *   3D superquadrics (and ellipsoids under a non-rigid map): convex meshes
- *     (fcl::Convex, GJK through libccd) of the surface points at res x
- *     (res/2 - 1) directions (longitude x latitude) plus the poles;
- *   3D boxes: the convex mesh of their 8 corners (exact);
+ *     (fcl::Convex, GJK through libccd) of the surface points at res
+ *     longitudes x res/2 latitudes plus the poles (mkFclMesh_Superquadric
+ *     of mink/fcl_mesh.hpp at res/2 rings: res = 32 gives 1024 triangles);
+ *   3D boxes: the convex mesh of their 8 corners (exact, 12 triangles);
  *   3D cylinders: prisms over a regular res-gon inscribed in the circle;
  *   2D bodies: prisms z in [-1, 1] over their outline (boxes: the 4
  *     corners; curved bodies: res boundary points); the robot moves in the
