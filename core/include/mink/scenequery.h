@@ -162,8 +162,10 @@ typedef struct mkMotionAnswer {
  * motion's length or after max_poses poses; then a pose in contact at t,
  * or among 1000 poses evenly spaced on (t, end] (end the witness's time or
  * 1), makes the motion colliding (a witness, never a certificate of
- * freedom); else it is uncertain. margin >= 0. Returns MK_ERR_ARGUMENT on
- * a bad pose or margin (out->status uncertain). */
+ * freedom); else mkSceneQuery_MotionTest's coarser cover is tried (it may
+ * pass by the pose that stalled this one): free when it certifies the
+ * motion free (with its weaker clearance bound), else uncertain. margin >= 0.
+ * Returns MK_ERR_ARGUMENT on a bad pose or margin (out->status uncertain). */
 MK_API mkResult mkSceneQuery_Motion(const mkSceneQuery *q, const double *a, const double *b, double margin,
 	long max_poses, mkMotionAnswer *out);
 

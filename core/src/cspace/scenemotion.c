@@ -497,5 +497,14 @@ mkResult mkSceneQuery_Motion(const mkSceneQuery *q, const double *a, const doubl
 		else if (out->status != MK_POSE_COLLIDING && end > t) mkSm_FindContact(&m, t, end);
 	}
 	out->clearance = lowest;
+	if (out->status == MK_POSE_UNCERTAIN) {
+		/* a stall (a pose the pose query left uncertain): the test's coarser
+		 * cover may pass by it, and certifies as soundly */
+		mkMotionAnswer test;
+		if (mkSceneQuery_MotionTest(q, a, b, margin, max_poses, &test) == MK_OK && test.status == MK_POSE_FREE) {
+			test.poses += out->poses;
+			*out = test;
+		}
+	}
 	return MK_OK;
 }
