@@ -305,6 +305,7 @@ int mkCmd_Plan(int argc, char **argv)
 	memset(&s, 0, sizeof s);
 	if ((rc = mkSceneCmd_LoadFile("plan", scene_file, &s)) != 0) return rc;
 	mkSceneQueryOptions qo = mkSceneQueryOptions_Default();
+	qo.clearance_rel = MK_PLAN_CLEARANCE_REL;
 	mkSceneQuery *q = NULL;
 	char msg[1024];
 	if (mkSceneQuery_Create(&s, &qo, &q, msg, sizeof msg) != MK_OK) {

@@ -59,6 +59,7 @@ int mkPlanningScene_Load(mkPlanningScene *s, const char *path, char *msg, size_t
 	}
 	if (rc == MK_OK) {
 		mkSceneQueryOptions qo = mkSceneQueryOptions_Default();
+		qo.clearance_rel = MK_PLAN_CLEARANCE_REL;
 		rc = mkSceneQuery_Create(&s->scene, &qo, &s->query, why, sizeof why);
 	}
 	if (rc != MK_OK) {

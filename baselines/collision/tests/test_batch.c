@@ -146,6 +146,41 @@ static void mkCheckMode(int kind, mkBatchMode mode, const mkBody3 *b1, const mkB
 	}
 }
 
+/* mkCollide3_BatchBracket: the reference's statuses; every separated pair's
+ * bracket holds the referee's distance and, where the search gave it, is at
+ * most rel of its upper end wide. */
+static void mkCheckBracket(int kind, const mkBody3 *b1, const mkBody3 *b2, const mkCollision3 *ref)
+{
+	static mkOut got, want;
+	const double rel = 0.1;
+	mkBatchPairs3 pairs = { MK_N, b1, b2, NULL, NULL };
+	mkBatchOut3 vg = mkOut_View(&got), vw = mkOut_View(&want);
+	mkBatchStats3 st;
+	ENSURE(mkCollide3_BatchBracket(&pairs, rel, &vg, &st) == MK_OK);
+	ENSURE(mkCollide3_BatchReference(&pairs, MK_BATCH_STATUS, 0.0, &vw, NULL) == MK_OK);
+	printf("  %-17s bracket   bounds: %3d separating, %3d overlap point; one-pair query: %3d\n", mkKindNames[kind],
+		st.separating, st.overlap_point, st.one_pair);
+	for (int p = 0; p < MK_N; ++p) {
+		double scale = mkCollide3_PairSize(b1[p], b2[p]);
+		ENSURE(got.status[p] == want.status[p]);
+		if (got.path[p] == MK_PATH_OVERLAP_POINT)
+			ENSURE(mkBody3_Implicit(b1[p], got.p1[p]) < 1.0 && mkBody3_Implicit(b2[p], got.p1[p]) < 1.0);
+		if (got.status[p] != MK_CONTACT_SEPARATED)
+			continue;
+		if (got.path[p] == MK_PATH_SEPARATING) {
+			ENSURE(got.lower[p] > 0.0 && got.upper[p] - got.lower[p] <= rel * got.upper[p]);
+			ENSURE(mkCollide3_Bound(b1[p], b2[p], got.normal[p]) >= got.lower[p] - 1e-13 * scale);
+		}
+		if (ref[p].residual <= 1e-10) {
+			ENSURE_LE(got.lower[p], ref[p].distance + ref[p].gap + 1e-12 * scale);
+			ENSURE_LE(ref[p].bound - 1e-12 * scale, got.upper[p]);
+		}
+	}
+	mkBatchOut3 none = { got.status, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL };
+	ENSURE(mkCollide3_BatchBracket(&pairs, 0.0, &none, NULL) == MK_ERR_ARGUMENT);
+	ENSURE(mkCollide3_BatchBracket(&pairs, 1.0, &none, NULL) == MK_ERR_ARGUMENT);
+}
+
 /* Bad arguments: MK_ERR_ARGUMENT, nothing written. */
 static void mkCheckArguments(const mkBody3 *b1, const mkBody3 *b2)
 {
@@ -185,6 +220,7 @@ int main(void)
 			ENSURE(mkCollider_Run(referee, b1[p], b2[p], &scratch, &ref[p]) == MK_OK);
 		for (int mode = 0; mode < 4; ++mode)
 			mkCheckMode(kind, (mkBatchMode)mode, b1, b2, ref);
+		mkCheckBracket(kind, b1, b2, ref);
 	}
 	mkCheckArguments(b1, b2);
 	return mk_summary("test_batch");

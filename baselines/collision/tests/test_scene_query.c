@@ -118,6 +118,7 @@ static void test_3d(void)
 	ENSURE(mkSceneQuery_Create(&s, &o, &q, msg, sizeof msg) == MK_OK);
 	int counts[3] = {0, 0, 0}, bad_status = 0, bad_lower = 0, bad_tight = 0, bad_nearest = 0;
 	long pairs = 0;
+	double true_lo[NP], true_hi[NP], true_tol[NP];
 	for (int k = 0; k < NP; ++k) {
 		double lo = INFINITY, hi = INFINITY, lo_reported = NAN, scale = 0.0;
 		int overlap = 0;
@@ -138,6 +139,9 @@ static void test_3d(void)
 			}
 		}
 		double tol = 1e-9 * scale;
+		true_lo[k] = lo;
+		true_hi[k] = hi;
+		true_tol[k] = tol;
 		const mkPoseAnswer *a = &ans[k];
 		++counts[a->status];
 		pairs += a->pairs;
@@ -168,6 +172,28 @@ static void test_3d(void)
 		if (ans[k].status == MK_POSE_FREE) ENSURE(c.clearance == fmin(ans[k].clearance, 0.5));
 		if (ans[k].status == MK_POSE_FREE && ans[k].clearance >= 0.5) ENSURE(c.obstacle == -1);
 	}
+	/* clearance_rel: the same statuses; a free pose's clearance a lower bound
+	 * of the referee's minimum within that fraction of it */
+	mkSceneQueryOptions orel = mkSceneQueryOptions_Default();
+	orel.clearance_rel = 0.1;
+	mkSceneQuery *qr = NULL;
+	ENSURE(mkSceneQuery_Create(&s, &orel, &qr, msg, sizeof msg) == MK_OK);
+	int rel_looser = 0;
+	for (int k = 0; k < NP; ++k) {
+		mkPoseAnswer c;
+		ENSURE(mkSceneQuery_Pose(qr, poses + 7 * k, &c) == MK_OK);
+		ENSURE(c.status == ans[k].status);
+		if (c.status != MK_POSE_FREE) continue;
+		ENSURE_LE(c.clearance, true_hi[k] + true_tol[k]);
+		ENSURE_LE(0.9 * true_lo[k] - true_tol[k], c.clearance);
+		rel_looser += c.clearance < ans[k].clearance;
+	}
+	printf("3D clearance_rel 0.1: the same statuses; %d of %d free poses got a looser lower bound\n", rel_looser,
+		counts[MK_POSE_FREE]);
+	mkSceneQuery_Destroy(qr);
+	orel.clearance_rel = 0.6;
+	ENSURE(mkSceneQuery_Create(&s, &orel, &qr, msg, sizeof msg) == MK_ERR_ARGUMENT);
+	ENSURE(strstr(msg, "clearance_rel") != NULL);
 	/* a bad pose is named */
 	poses[7 * 3 + 3] = poses[7 * 3 + 4] = poses[7 * 3 + 5] = poses[7 * 3 + 6] = 0.0;
 	ENSURE(mkSceneQuery_Run(q, poses, NP, ans, msg, sizeof msg) == MK_ERR_ARGUMENT);

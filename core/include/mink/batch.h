@@ -138,6 +138,17 @@ typedef struct mkBatchStats3 {
 MK_API mkResult mkCollide3_Batch(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
 	mkBatchStats3 *stats);
 
+/* Certified brackets [lower, upper] of the signed distance of the separated
+ * pairs at most rel * upper wide (0 < rel < 1): a lower bound of the
+ * clearance within rel of it, without the one-pair solver's last digits
+ * where the certificates' search gets there (the bracket [f(m), |z|] of its
+ * iteration, at most MK_BATCH_EVALS evaluations); the other separated pairs
+ * get the one-pair query's bracket. Statuses as MK_BATCH_STATUS (overlaps
+ * by their certificate); clear is 1 for separated pairs. Returns as
+ * mkCollide3_Batch; MK_ERR_ARGUMENT also for rel outside (0, 1). */
+MK_API mkResult mkCollide3_BatchBracket(const mkBatchPairs3 *pairs, double rel, const mkBatchOut3 *out,
+	mkBatchStats3 *stats);
+
 /* The same answers from the one-pair query alone (mkCollide3_Normal on every
  * pair; every path MK_PATH_ONE_PAIR or MK_PATH_FAILED): the reference. */
 MK_API mkResult mkCollide3_BatchReference(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta,

@@ -72,9 +72,14 @@ typedef struct mkSceneQueryOptions {
 	int threads;          /* >= 1 */
 	double model_rel;     /* boxes and cylinders: model error as a fraction of the body's reach, in [1e-6, 0.1] */
 	double max_clearance; /* > 0: clearances beyond it are reported as max_clearance (INFINITY: exact nearest) */
+	double clearance_rel; /* in [0, 0.5]: 0, the clearance is the one-pair query's certified lower bound (exact to
+	                       * about 1e-12 of the pair's size); > 0, a certified lower bound within this fraction of
+	                       * it, from the batch's brackets (mkCollide3_BatchBracket) where they suffice, the one-pair
+	                       * query elsewhere: what a motion check needs, much sooner near box-like bodies. The
+	                       * statuses are the same. */
 } mkSceneQueryOptions;
 
-/* 1 thread, model_rel 1e-4, max_clearance INFINITY. */
+/* 1 thread, model_rel 1e-4, max_clearance INFINITY, clearance_rel 0. */
 MK_API mkSceneQueryOptions mkSceneQueryOptions_Default(void);
 
 typedef struct mkPoseAnswer {

@@ -23,6 +23,9 @@
 
 static const char *const mkBatchModeNames[4] = { "status", "clearance", "distance", "full" };
 
+/* mkCollide3_BatchBracket's mode (no name: not one of mkBatchMode's). */
+#define MK_BATCH_BRACKET ((mkBatchMode)4)
+
 const char *mkBatchMode_Name(mkBatchMode mode)
 {
 	return (int)mode >= 0 && (int)mode < 4 ? mkBatchModeNames[mode] : NULL;
@@ -87,6 +90,7 @@ typedef struct mkGilbert {
 	mkBatchCert r;
 	mkVec3 a[4], b[4], w[4], m;
 	double need, below, margin;
+	double rel; /* MK_BATCH_BRACKET: the bracket's largest relative width, else 0 */
 	int k, evals, pair;
 } mkGilbert;
 
@@ -97,6 +101,7 @@ static void mkGilbert_Begin(mkGilbert *g, double need, double below)
 	g->k = g->evals = 0;
 	g->need = need;
 	g->below = below;
+	g->rel = 0.0;
 	g->margin = MK_BATCH_MARGIN * g->c.scale;
 	g->r.f = -INFINITY;
 	g->r.upper = INFINITY;
@@ -141,7 +146,7 @@ static int mkGilbert_Step(mkGilbert *g, const mkSupAt *s1, const mkSupAt *s2)
 	g->k = j;
 	double zl = mkVec3_LengthInline(z);
 	r->upper = fmin(r->upper, zl);
-	if (r->f > g->margin && zl < g->below)
+	if (r->f > g->margin && (zl < g->below || r->upper - r->f <= g->rel * r->upper))
 		return MK_PATH_SEPARATING;
 	/* converged (within rounding) short of a certificate, degenerate, or
 	 * out of evaluations */
@@ -267,9 +272,11 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 	const mkBatchOut3 *out, int k, mkBatchPath *path, mkBatchEllQueue *q, mkBatchStats3 *stats, int use_quick)
 {
 	int ellipsoids = b1->shape.eps1 == 1.0 && b1->shape.eps2 == 1.0 && b2->shape.eps1 == 1.0 && b2->shape.eps2 == 1.0;
-	int clearance = mode == MK_BATCH_CLEARANCE, distance = mode == MK_BATCH_DISTANCE;
+	int clearance = mode == MK_BATCH_CLEARANCE, distance = mode == MK_BATCH_DISTANCE, bracket = mode == MK_BATCH_BRACKET;
 	double scale = mkScale(b1, b2), margin = MK_BATCH_MARGIN * scale;
-	double need = clearance ? delta + margin : margin, below = clearance ? delta - margin : -INFINITY;
+	/* (a bracket: never the first separating direction, only a narrow bracket) */
+	double need = clearance ? delta + margin : bracket ? INFINITY : margin;
+	double below = clearance ? delta - margin : -INFINITY;
 	mkBatchQuick r;
 	/* (two ellipsoids in the distance mode only when the Newton lanes sent them on: q NULL) */
 	int quick = !use_quick || mode == MK_BATCH_FULL ? -1
@@ -303,6 +310,8 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 		return 0;
 	}
 	mkGilbert_Begin(g, need, below);
+	if (bracket)
+		g->rel = delta;
 	return 1;
 }
 
@@ -320,7 +329,8 @@ static int mkBatch_Finish(mkGilbert *g, mkBatchPath p, mkBatchMode mode, double 
 	int k = g->pair;
 	double margin = MK_BATCH_MARGIN * g->c.scale;
 	if (p == MK_PATH_SEPARATING && mode != MK_BATCH_DISTANCE) {
-		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r->f, r->upper, r->n, r->p1, r->p2, r->f > delta + margin, p);
+		mkBatch_Put(out, k, MK_CONTACT_SEPARATED, NAN, r->f, r->upper, r->n, r->p1, r->p2,
+			mode == MK_BATCH_CLEARANCE ? r->f > delta + margin : 1, p);
 		return p;
 	}
 	if (p == MK_PATH_SEPARATING && g->c.k1.ellipsoid && g->c.k2.ellipsoid) {
@@ -408,10 +418,12 @@ static void mkBatchEll_Flush(mkBatchEllQueue *q, mkBatchMode mode, double delta,
 /* NULL pointers, negative counts, unknown modes, bad deltas. */
 static int mkBatch_ArgsOk(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out)
 {
-	if (!pairs || !out || !out->status || pairs->count < 0 || mkBatchMode_Name(mode) == NULL)
+	if (!pairs || !out || !out->status || pairs->count < 0 || (mkBatchMode_Name(mode) == NULL && mode != MK_BATCH_BRACKET))
 		return 0;
 	if (pairs->count > 0 && (!pairs->bodies1 || !pairs->bodies2))
 		return 0;
+	if (mode == MK_BATCH_BRACKET)
+		return delta > 0.0 && delta < 1.0;
 	return mode != MK_BATCH_CLEARANCE || (isfinite(delta) && delta >= 0.0);
 }
 
@@ -605,6 +617,11 @@ const char *mkCollide3_BatchLanes(void)
 		return "avx2";
 #endif
 	return f ? "vector" : "scalar";
+}
+
+mkResult mkCollide3_BatchBracket(const mkBatchPairs3 *pairs, double rel, const mkBatchOut3 *out, mkBatchStats3 *stats)
+{
+	return mkBatch_Run(pairs, MK_BATCH_BRACKET, rel, out, stats, MK_IMPL_AUTO, 1);
 }
 
 mkResult mkCollide3_BatchReference(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,

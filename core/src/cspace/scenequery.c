@@ -190,6 +190,9 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "threads = %d is out of range: must be in [1, 1024]", opt->threads);
 	if (!(opt->model_rel >= 1e-6 && opt->model_rel <= 0.1))
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "model_rel = %g is out of range: must be in [1e-06, 0.1]", opt->model_rel);
+	if (!(opt->clearance_rel >= 0.0 && opt->clearance_rel <= 0.5))
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "clearance_rel = %g is out of range: must be in [0, 0.5]",
+			opt->clearance_rel);
 	if (!(opt->max_clearance > 0.0))
 		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "max_clearance = %g is out of range: must be positive (or inf)",
 			opt->max_clearance);
@@ -499,13 +502,14 @@ static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double 
 	return 1;
 }
 
-/* Pair i's one-pair answer (mkSq_Pair), or v and s as given when the
- * pair's overlap is already certified (s colliding), into the pose's
- * answer. Returns 1 when colliding. */
+/* Pair i's one-pair answer (mkSq_Pair; s uncertain), or v and s as given
+ * (its overlap already certified: s colliding; a certified lower bound v of
+ * its distance: s free), into the pose's answer. Returns 1 when
+ * colliding. */
 static int mkSq_Take(const mkSceneQuery *q, const mkSqPart *p, int i, mkPoseStatus s, double v, double *best,
 	mkPoseAnswer *out)
 {
-	if (s != MK_POSE_COLLIDING) s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
+	if (s == MK_POSE_UNCERTAIN) s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
 	if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
 	if (v < *best || s == MK_POSE_COLLIDING) {
 		*best = v;
@@ -534,7 +538,7 @@ static int mkSq_Resolve(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, d
 	int n = l->n;
 	l->n = 0;
 	for (int e = 0; e < n; ++e)
-		if (!(l->lower[e] > *best + l->margin[e]) && mkSq_Take(q, p, l->i[e], MK_POSE_FREE, 0.0, best, out)) return 1;
+		if (!(l->lower[e] > *best + l->margin[e]) && mkSq_Take(q, p, l->i[e], MK_POSE_UNCERTAIN, 0.0, best, out)) return 1;
 	return 0;
 }
 
@@ -562,12 +566,14 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
  * one-pair value, bound the smallest certified upper bound of a pair's
  * distance found (the pose's clearance is at most either). The quick
  * certificates (mkSqQuick_Pair) first, the batch on the pairs they leave
- * (clearance mode with delta = b, or status mode while b is infinite);
- * then, in the walk's order, each pair not certainly at least b away (by
- * the boxes) is set aside when certified at least b away, is colliding
- * when an overlap is certified (mkSq_Contact for the batch's), else it is
- * left to the one-pair query (mkSq_Leave) and its certified upper bound
- * lowers bound. Returns 1 when colliding. */
+ * (clearance mode with delta = b, or status mode while b is infinite;
+ * with clearance_rel, brackets that narrow); then, in the walk's order,
+ * each pair not certainly at least b away (by the boxes) is set aside when
+ * certified at least b away, is colliding when an overlap is certified
+ * (mkSq_Contact for the batch's), with clearance_rel takes the lower end of
+ * its bracket as its value, else it is left to the one-pair query
+ * (mkSq_Leave) and its certified upper bound lowers bound. Returns 1 when
+ * colliding. */
 static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, double *bound,
 	mkSqLeft *left, mkPoseAnswer *out)
 {
@@ -586,14 +592,24 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 	}
 	mkBatchPairs3 pairs = {nb, q->obs, &p->outer, i1, i2};
 	mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .clear = clear, .path = path};
-	mkResult r = nb == 0 ? MK_OK : mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS,
-		known ? fmax(b, 0.0) : 0.0, &bo, NULL);
+	double rel = q->opt.clearance_rel;
+	mkResult r = nb == 0 ? MK_OK : rel > 0.0 ? mkCollide3_BatchBracket(&pairs, rel, &bo, NULL)
+		: mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS, known ? fmax(b, 0.0) : 0.0, &bo, NULL);
 	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
 	for (int m = 0; m < n; ++m) {
 		int i = q->order[pos[m]], k = slot[m];
 		if (mkSq_Far(p, &q->sbox[pos[m]], fmin(*best, *bound))) continue;
 		++out->pairs;
-		if (quick[m] == 1 || (k >= 0 && ok && known && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
+		if (quick[m] == 1 || (k >= 0 && ok && known && rel == 0.0 && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
+		if (k >= 0 && ok && rel > 0.0 && path[k] == MK_PATH_SEPARATING) {
+			/* a bracket at most rel wide: its lower end (rounded down) is the pair's value */
+			double v = lower[k] - MK_SQ_ROUND * mkCollide3_PairSize(q->obs[2 * i + 1], p->outer);
+			if (upper[k] < *bound) *bound = upper[k];
+			if (v > 0.0) {
+				mkSq_Take(q, p, i, MK_POSE_FREE, v, best, out);
+				continue;
+			}
+		}
 		double v = -depth[m];
 		if (quick[m] == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
 			return mkSq_Take(q, p, i, MK_POSE_COLLIDING, v, best, out);
