@@ -135,7 +135,7 @@ const mkMethod mkMethod_Geometric = {
 	"geometric",
 	"closed-form geometric: body 1 offset through the map that makes ellipse body 2 a sphere",
 	"Yan & Chirikjian, Geometriae Dedicata 2015; Ruan et al., WAFR 2018 (body2 an ellipse/ellipsoid)",
-	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT,
+	MK_METHOD_2D | MK_METHOD_3D | MK_METHOD_EXACT | MK_METHOD_BASELINE,
 	mkGeometric2_Accepts, mkGeometric3_Accepts, mkGeometric2_Run, mkGeometric3_Run,
 };
 

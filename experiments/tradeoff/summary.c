@@ -27,10 +27,11 @@ typedef struct mkCurveData {
 
 static const double mkThresholds[] = { 1e-2, 1e-3, 1e-6, 1e-9 };
 
-/* A closed form is a registry method that returns boundary points (not
- * MK_METHOD_SAMPLED), decided by its flags, not its name; the rows name a
- * closed form sampled otherwise as "NAME@sampling". Sampled methods and
- * methods the registry does not know (external ones) are the baselines. */
+/* A closed form is a registry method that returns boundary points and is
+ * not a published peer (neither MK_METHOD_SAMPLED nor MK_METHOD_BASELINE),
+ * decided by its flags, not its name; the rows name a closed form sampled
+ * otherwise as "NAME@sampling". Sampled methods, baselines and methods the
+ * registry does not know (external ones) are the baselines. */
 static int mkIsClosed(const char *method)
 {
 	char name[128];
@@ -40,7 +41,7 @@ static int mkIsClosed(const char *method)
 	memcpy(name, method, len);
 	name[len] = '\0';
 	const mkMethod *m = mkRegistry_Find(name);
-	return m && !(m->flags & MK_METHOD_SAMPLED);
+	return m && !(m->flags & (MK_METHOD_SAMPLED | MK_METHOD_BASELINE));
 }
 
 /* The points in order of first appearance; NaN errors sort last (a median
@@ -209,8 +210,9 @@ void mkTradeoff_Summary(mkDoc *d, const char *dir, mkTally *tally)
 	if (usable) {
 		mkDoc_Para(d, "Medians over the pairs of each level: hausdorff_rel of the returned points against the "
 			"true contact set, and seconds per call. A method reaches an error at its fastest level whose median "
-			"error is at most that; \"closed form\" is every registered method that returns boundary points (not "
-			"sampled, by its flags), the others (sampled methods, external ones) are baselines. "
+			"error is at most that; \"closed form\" is every registered method that returns boundary points and is "
+			"not a published peer (by its flags), the others (sampled methods, the geometric formula, external ones) "
+			"are baselines. "
 			"Baseline points the closed form's points do not dominate (none as fast and as accurate) are listed, "
 			"the error ratio at equal time is taken over the baseline points it does dominate.");
 		for (int dim = 2; dim <= 3; ++dim)

@@ -35,9 +35,12 @@ typedef enum mkMethodFlags {
 	MK_METHOD_3D = 2,       /* runs in 3D */
 	MK_METHOD_EXACT = 4,    /* its points lie exactly on the smooth boundary */
 	MK_METHOD_SAMPLED = 8,  /* n is samples per body, output is a hull */
-	MK_METHOD_APPROX = 16   /* a faster, less accurate tier of an exact method: its points lie
+	MK_METHOD_APPROX = 16,  /* a faster, less accurate tier of an exact method: its points lie
 	                           within a stated distance of the smooth boundary (relative to the
 	                           sum's size, mkSum2_Size; mkMethod_Tolerance in mink/registry.h) */
+	MK_METHOD_BASELINE = 32 /* a published peer the closed form is compared with, though it returns
+	                           boundary points (the ellipsoid "geometric" formula); every sampled
+	                           method is a baseline too */
 } mkMethodFlags;
 
 typedef struct mkMethod {
