@@ -271,15 +271,20 @@ static void mkBatchEll_Push(mkBatchEllQueue *q, const mkBody3 *b1, const mkBody3
 static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkBatchMode mode, double delta,
 	const mkBatchOut3 *out, int k, mkBatchPath *path, mkBatchEllQueue *q, mkBatchStats3 *stats, int use_quick)
 {
+	double scale = mkScale(b1, b2);
+	if (mode == MK_BATCH_FULL || !isfinite(scale)) {
+		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
+		return 0;
+	}
 	int ellipsoids = b1->shape.eps1 == 1.0 && b1->shape.eps2 == 1.0 && b2->shape.eps1 == 1.0 && b2->shape.eps2 == 1.0;
 	int clearance = mode == MK_BATCH_CLEARANCE, distance = mode == MK_BATCH_DISTANCE, bracket = mode == MK_BATCH_BRACKET;
-	double scale = mkScale(b1, b2), margin = MK_BATCH_MARGIN * scale;
+	double margin = MK_BATCH_MARGIN * scale;
 	/* (a bracket: never the first separating direction, only a narrow bracket) */
 	double need = clearance ? delta + margin : bracket ? INFINITY : margin;
 	double below = clearance ? delta - margin : -INFINITY;
 	mkBatchQuick r;
 	/* (two ellipsoids in the distance mode only when the Newton lanes sent them on: q NULL) */
-	int quick = !use_quick || mode == MK_BATCH_FULL ? -1
+	int quick = !use_quick ? -1
 		: !ellipsoids ? mkBatchQuick_Bound(b1, b2, need, below, margin, distance, &r)
 		: !q || !distance ? mkBatchQuick_Ellipsoids(b1, b2, need, below, margin, distance, &r) : -1;
 	if (quick >= 0 && distance && r.status == MK_CONTACT_SEPARATED) {
@@ -296,19 +301,15 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 	if (q && distance && ellipsoids) {
 		mkVec3 d = mkVec3_Sub(b2->t, b1->t);
 		double dl = mkVec3_LengthInline(d), P[3][3], Q1[3][3], Q2[3][3];
-		if (dl > 0.0 && isfinite(scale)) {
+		if (dl > 0.0) {
 			mkSupBody_PQ(b1, P, Q1);
 			mkSupBody_PQ(b2, P, Q2);
 			mkBatchEll_Push(q, b1, b2, Q1, Q2, d, scale, k, mkVec3_Scale(d, 1.0 / dl), 0, mode, delta, out);
 			return -1;
 		}
 	}
-	mkPairCtx_Init(&g->c, b1, b2);
+	mkPairCtx_InitScaled(&g->c, b1, b2, scale);
 	g->pair = k;
-	if (mode == MK_BATCH_FULL || !isfinite(g->c.scale)) {
-		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k);
-		return 0;
-	}
 	mkGilbert_Begin(g, need, below);
 	if (bracket)
 		g->rel = delta;

@@ -334,14 +334,20 @@ MK_PAIR_FN double mkScale(const mkBody3 *b1, const mkBody3 *b2)
 	return mkVec3_LengthInline(mkVec3_Sub(b2->t, b1->t)) + r[0] + r[1];
 }
 
-MK_PAIR_FN void mkPairCtx_Init(mkPairCtx *c, const mkBody3 *b1, const mkBody3 *b2)
+/* The pair's context with its scale (mkScale) already known. */
+MK_PAIR_FN void mkPairCtx_InitScaled(mkPairCtx *c, const mkBody3 *b1, const mkBody3 *b2, double scale)
 {
 	c->b1 = b1;
 	c->b2 = b2;
 	mkSupBody_Init(&c->k1, b1);
 	mkSupBody_Init(&c->k2, b2);
 	c->d = mkVec3_Sub(b2->t, b1->t);
-	c->scale = mkScale(b1, b2);
+	c->scale = scale;
+}
+
+MK_PAIR_FN void mkPairCtx_Init(mkPairCtx *c, const mkBody3 *b1, const mkBody3 *b2)
+{
+	mkPairCtx_InitScaled(c, b1, b2, mkScale(b1, b2));
 }
 
 /* The start of both queries (after clearing out): the pair's context set
