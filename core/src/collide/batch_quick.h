@@ -1,6 +1,5 @@
 /* batch_quick.h - the batch's certificates outside Gilbert's search, as
- * static definitions for batch.c (kept in its translation unit: measured,
- * the calls out of it cost a quarter of a status batch of ellipsoids): a
+ * static definitions for batch.c (inlined into its per-pair loop): a
  * pair's answer before any search, and an overlap point where the search
  * gave up. need, below and margin as the search's (batch.c): a separating
  * direction is an answer when its bound f exceeds margin and either
@@ -239,8 +238,8 @@ static int mkBatchQuick_Ellipsoids(const mkBody3 *b1, const mkBody3 *b2, double 
 
 /* An upper bound of a pair norm |(u, v)|_q (u, v >= 0) of a support
  * function, q = 2 / (2 - eps): |.|_2 where eps >= 1 (q >= 2), else |.|_1
- * (every q >= 1). Without a branch: the draws' exponents mispredict one
- * (measured, a third of a status batch of superquadrics). */
+ * (every q >= 1), chosen without a branch (the exponents vary from pair to
+ * pair, so a branch on them is mispredicted). */
 static double mkBatchBound_Pair(double u, double v, double eps)
 {
 	double l1 = u + v;

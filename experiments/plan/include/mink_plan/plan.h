@@ -15,11 +15,9 @@ extern "C" {
 #endif
 
 /* The scene query's clearance_rel for planning (mkSceneQueryOptions): the
- * certified motion checks need a lower bound of each pose's clearance, not
- * its last digits; within 10 % of it, from the batch's brackets, the checks
- * near box-like bodies took 2 to 4 times less time in the narrow passage
- * (measured; 25 % gained nothing more). The segments' clearances written
- * are such bounds. */
+ * certified motion checks need a lower bound of each pose's clearance
+ * within 10 % of it, not its last digits (docs/planning.md). The segments'
+ * clearances written are such bounds. */
 #define MK_PLAN_CLEARANCE_REL 0.1
 
 typedef struct mkPlanOptions {
