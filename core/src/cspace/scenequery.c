@@ -336,13 +336,22 @@ static int mkSq_Overlap(mkBody3 a, mkBody3 b, const mkCollision3 *c, double tol)
 
 /* The narrow phase of one pair (the one-pair query): the pair's status and
  * value as the header defines them (free: a lower bound of the distance;
- * colliding: an upper bound of the signed distance, <= 0). */
-static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBody3 outer, int smooth, double *value)
+ * colliding: an upper bound of the signed distance, <= 0). outer_lb: NaN,
+ * or the outer models' certified lower bound, already rounded down and not
+ * positive (the batch asked the one-pair query already): then only the
+ * inner models are asked. */
+static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBody3 outer, int smooth, double outer_lb,
+	double *value)
 {
 	mkCollision3 c;
-	mkResult r = mkCollide3_Normal(q->obs[2 * i + 1], outer, &c);
-	if (r != MK_OK) { *value = -INFINITY; return MK_POSE_UNCERTAIN; }
-	double tol = MK_SQ_ROUND * c.scale, lb = c.bound - tol;
+	double tol, lb = outer_lb;
+	if (isnan(lb)) {
+		if (mkCollide3_Normal(q->obs[2 * i + 1], outer, &c) != MK_OK) { *value = -INFINITY; return MK_POSE_UNCERTAIN; }
+		tol = MK_SQ_ROUND * c.scale;
+		lb = c.bound - tol;
+	} else {
+		tol = MK_SQ_ROUND * mkCollide3_PairSize(q->obs[2 * i + 1], outer);
+	}
 	*value = lb;
 	if (lb > 0.0) return MK_POSE_FREE;
 	if ((!smooth || q->scene->obstacles[i].kind != MK_SCENE_SMOOTH) && mkCollide3_Normal(q->obs[2 * i], inner, &c) != MK_OK)
@@ -502,14 +511,11 @@ static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double 
 	return 1;
 }
 
-/* Pair i's one-pair answer (mkSq_Pair; s uncertain), or v and s as given
- * (its overlap already certified: s colliding; a certified lower bound v of
- * its distance: s free), into the pose's answer. Returns 1 when
- * colliding. */
-static int mkSq_Take(const mkSceneQuery *q, const mkSqPart *p, int i, mkPoseStatus s, double v, double *best,
-	mkPoseAnswer *out)
+/* Pair i's answer s with its value v (mkSq_Pair's; or its overlap already
+ * certified: s colliding; a certified lower bound v of its distance: s
+ * free) into the pose's answer. Returns 1 when colliding. */
+static int mkSq_Take(const mkSqPart *p, int i, mkPoseStatus s, double v, double *best, mkPoseAnswer *out)
 {
-	if (s == MK_POSE_UNCERTAIN) s = mkSq_Pair(q, i, p->inner, p->outer, p->smooth, &v);
 	if (s == MK_POSE_UNCERTAIN) out->status = MK_POSE_UNCERTAIN;
 	if (v < *best || s == MK_POSE_COLLIDING) {
 		*best = v;
@@ -524,10 +530,11 @@ static int mkSq_Take(const mkSceneQuery *q, const mkSqPart *p, int i, mkPoseStat
 
 /* The pairs of a part left to the one-pair query: their obstacles,
  * certified lower bounds of their distances and margins, the lowest bound
- * first. */
+ * first, and the outer models' answer where the batch asked the one-pair
+ * query already (mkSq_Pair's outer_lb; else NaN). */
 typedef struct mkSqLeft {
 	int n, i[MK_SQ_LEFT];
-	double lower[MK_SQ_LEFT], margin[MK_SQ_LEFT];
+	double lower[MK_SQ_LEFT], margin[MK_SQ_LEFT], outer[MK_SQ_LEFT];
 } mkSqLeft;
 
 /* The pairs left, lowest bound first, by the one-pair query, each skipped
@@ -537,15 +544,20 @@ static int mkSq_Resolve(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, d
 {
 	int n = l->n;
 	l->n = 0;
-	for (int e = 0; e < n; ++e)
-		if (!(l->lower[e] > *best + l->margin[e]) && mkSq_Take(q, p, l->i[e], MK_POSE_UNCERTAIN, 0.0, best, out)) return 1;
+	for (int e = 0; e < n; ++e) {
+		if (l->lower[e] > *best + l->margin[e]) continue;
+		double v;
+		mkPoseStatus s = mkSq_Pair(q, l->i[e], p->inner, p->outer, p->smooth, l->outer[e], &v);
+		if (mkSq_Take(p, l->i[e], s, v, best, out)) return 1;
+	}
 	return 0;
 }
 
-/* Pair i left to the one-pair query with the certified lower bound lo
- * (answering the pairs left when full). Returns 1 when colliding. */
-static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int i, double lo, double *best,
-	mkPoseAnswer *out)
+/* Pair i left to the one-pair query with the certified lower bound lo and
+ * the outer models' answer outer (mkSqLeft), answering the pairs left when
+ * full. Returns 1 when colliding. */
+static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int i, double lo, double outer,
+	double *best, mkPoseAnswer *out)
 {
 	if (l->n == MK_SQ_LEFT && mkSq_Resolve(q, p, l, best, out)) return 1;
 	mkVec3 d = mkVec3_Sub(p->outer.t, q->obs[2 * i + 1].t);
@@ -554,9 +566,11 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
 		l->i[at] = l->i[at - 1];
 		l->lower[at] = l->lower[at - 1];
 		l->margin[at] = l->margin[at - 1];
+		l->outer[at] = l->outer[at - 1];
 	}
 	l->i[at] = i;
 	l->lower[at] = lo;
+	l->outer[at] = outer;
 	l->margin[at] = 4e-12 * (sqrt(mkVec3_Dot(d, d)) + q->oquick[i].r + q->pquick[p->j].r);
 	return 0;
 }
@@ -567,13 +581,16 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
  * distance found (the pose's clearance is at most either). The quick
  * certificates (mkSqQuick_Pair) first, the batch on the pairs they leave
  * (clearance mode with delta = b, or status mode while b is infinite;
- * with clearance_rel, brackets that narrow); then, in the walk's order,
- * each pair not certainly at least b away (by the boxes) is set aside when
- * certified at least b away, is colliding when an overlap is certified
- * (mkSq_Contact for the batch's), with clearance_rel takes the lower end of
- * its bracket as its value, else it is left to the one-pair query
- * (mkSq_Leave) and its certified upper bound lowers bound. Returns 1 when
- * colliding. */
+ * with clearance_rel, brackets that narrow, also for the pairs the quick
+ * certificates found separated before any clearance was known); then, in
+ * the walk's order, each pair not certainly at least b away (by the boxes)
+ * is set aside when certified at least b away, is colliding when an
+ * overlap is certified (mkSq_Contact for the batch's), takes the lower end
+ * of its bracket (clearance_rel) or of the one-pair query's bracket (where
+ * the batch asked it) as its value when that is positive, else it is left
+ * to the one-pair query (mkSq_Leave: for the inner models only where the
+ * batch asked it already) and its certified upper bound lowers bound.
+ * Returns 1 when colliding. */
 static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, double *bound,
 	mkSqLeft *left, mkPoseAnswer *out)
 {
@@ -582,17 +599,20 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 	int known = isfinite(b);
 	mkContact status[MK_SQ_BATCH];
 	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
+	double rel = q->opt.clearance_rel;
 	mkSq_Placed(p);
 	for (int m = 0; m < n; ++m) {
 		int i = q->order[pos[m]];
+		depth[m] = 0.0;
 		quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
 			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, b, &depth[m]);
-		slot[m] = quick[m] ? -1 : nb;
-		if (!quick[m]) { i1[nb] = 2 * i + 1; i2[nb++] = 0; }
+		/* (separated with no clearance known yet: a bracket serves where it may be rel wide) */
+		int batch = quick[m] == 0 || (quick[m] == 3 && rel > 0.0);
+		slot[m] = batch ? nb : -1;
+		if (batch) { i1[nb] = 2 * i + 1; i2[nb++] = 0; }
 	}
 	mkBatchPairs3 pairs = {nb, q->obs, &p->outer, i1, i2};
 	mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .clear = clear, .path = path};
-	double rel = q->opt.clearance_rel;
 	mkResult r = nb == 0 ? MK_OK : rel > 0.0 ? mkCollide3_BatchBracket(&pairs, rel, &bo, NULL)
 		: mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS, known ? fmax(b, 0.0) : 0.0, &bo, NULL);
 	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
@@ -601,21 +621,24 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 		if (mkSq_Far(p, &q->sbox[pos[m]], fmin(*best, *bound))) continue;
 		++out->pairs;
 		if (quick[m] == 1 || (k >= 0 && ok && known && rel == 0.0 && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
-		if (k >= 0 && ok && rel > 0.0 && path[k] == MK_PATH_SEPARATING) {
-			/* a bracket at most rel wide: its lower end (rounded down) is the pair's value */
-			double v = lower[k] - MK_SQ_ROUND * mkCollide3_PairSize(q->obs[2 * i + 1], p->outer);
+		/* the outer models' certified lower bound where the one-pair query gave it (rounded down) */
+		double outer = NAN;
+		if (k >= 0 && ok && (path[k] == MK_PATH_ONE_PAIR || (rel > 0.0 && path[k] == MK_PATH_SEPARATING))) {
+			/* (a bracket at most rel wide, or the one-pair query's: its lower end is the pair's value) */
+			outer = lower[k] - MK_SQ_ROUND * mkCollide3_PairSize(q->obs[2 * i + 1], p->outer);
 			if (upper[k] < *bound) *bound = upper[k];
-			if (v > 0.0) {
-				mkSq_Take(q, p, i, MK_POSE_FREE, v, best, out);
+			if (outer > 0.0) {
+				mkSq_Take(p, i, MK_POSE_FREE, outer, best, out);
 				continue;
 			}
+			if (path[k] != MK_PATH_ONE_PAIR || !isfinite(outer)) outer = NAN;
 		}
 		double v = -depth[m];
 		if (quick[m] == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
-			return mkSq_Take(q, p, i, MK_POSE_COLLIDING, v, best, out);
+			return mkSq_Take(p, i, MK_POSE_COLLIDING, v, best, out);
 		int got = k >= 0 && ok;
 		if (got && upper[k] < *bound) *bound = upper[k];
-		if (mkSq_Leave(q, p, left, i, got && !isnan(lower[k]) ? lower[k] : -INFINITY, best, out)) return 1;
+		if (mkSq_Leave(q, p, left, i, got && !isnan(lower[k]) ? lower[k] : -INFINITY, outer, best, out)) return 1;
 	}
 	return 0;
 }
