@@ -12,7 +12,12 @@
  * on the paper's pairs (ellipsoids, superquadrics), near-touching pairs
  * (moved along the normal to a signed distance 1e-1 ... 1e-6 of the
  * scale, both sides), box-like pairs (exponents U(0.05, 0.3)) and deep
- * pairs (centres within U(-2, 2)^3). Prints how many pairs each path
+ * pairs (centres within U(-2, 2)^3), and planar pairs as the scene query
+ * makes of 2D bodies (superellipses, box-like ones among them, lifted to
+ * superquadrics with eps1 = 1 whose z = 0 sections they are, rotated about
+ * z, centres in z = 0, most overlapping: Gilbert's hull then lies in the
+ * plane, and every overlap deeper than 1e-3 of the scale must be certified
+ * by an overlap point in STATUS mode). Prints how many pairs each path
  * answered (the fallbacks to the one-pair query), and checks the
  * arguments' errors. */
 #include <mink/colliders.h>
@@ -25,14 +30,30 @@
 #include "draw_paper.h"
 #include "ensure.h"
 
-enum { MK_N = 300, MK_KINDS = 6 };
+enum { MK_N = 300, MK_KINDS = 7, MK_PLANAR = 6 };
 static const char *const mkKindNames[MK_KINDS] = { "ellipsoids", "superquadrics", "near-separated", "near-overlapping",
-	"box-like", "deep" };
+	"box-like", "deep", "planar" };
+
+/* A 2D body (semi-axes U(0.3, 3), exponent 4e-4 as a box's model, or U(0.1,
+ * 1.9)) lifted as the scene query lifts it, centred at (x, y, 0). */
+static mkBody3 mkDrawPlanar(unsigned long long *seed, double x, double y)
+{
+	double a = mk_test_uniform(seed, 0.3, 3.0), b = mk_test_uniform(seed, 0.3, 3.0);
+	double eps = mk_test_uniform(seed, 0.0, 1.0) < 0.5 ? 4e-4 : mk_test_uniform(seed, 0.1, 1.9);
+	double th = mk_test_uniform(seed, -3.2, 3.2);
+	mkShape3 s = { a, b, a > b ? a : b, 1.0, eps };
+	mkMat3 M = { { { cos(th), -sin(th), 0.0 }, { sin(th), cos(th), 0.0 }, { 0.0, 0.0, 1.0 } } };
+	return mkBody3_Make(s, M, mkVec3_Make(x, y, 0.0));
+}
 
 /* Pairs of kind k. */
 static void mkDrawKind(int kind, unsigned long long *seed, mkBody3 *b1, mkBody3 *b2)
 {
-	for (int p = 0; p < MK_N; ++p) {
+	for (int p = 0; p < MK_N && kind == MK_PLANAR; ++p) {
+		b1[p] = mkDrawPlanar(seed, mk_test_uniform(seed, -1, 1), mk_test_uniform(seed, -1, 1));
+		b2[p] = mkDrawPlanar(seed, mk_test_uniform(seed, -4, 4), mk_test_uniform(seed, -4, 4));
+	}
+	for (int p = 0; p < MK_N && kind != MK_PLANAR; ++p) {
 		int ell = kind == 0 || ((kind == 2 || kind == 3 || kind == 5) && p % 2 == 0);
 		mk_test_paper_pair3(seed, ell, kind == 5, &b1[p], &b2[p]);
 		if (kind == 4) {
@@ -134,6 +155,12 @@ static void mkCheckMode(int kind, mkBatchMode mode, const mkBody3 *b1, const mkB
 		/* the referee: certain when its bracket is within 1e-10 of the scale */
 		if (ref[p].residual <= 1e-10 && fabs(ref[p].distance) > 1e-9 * scale)
 			ENSURE((got.status[p] == MK_CONTACT_SEPARATED) == (ref[p].distance > 0.0));
+		/* an overlap point's depth is at most the referee's */
+		if (got.path[p] == MK_PATH_OVERLAP_POINT && ref[p].residual <= 1e-10)
+			ENSURE_LE(ref[p].bound - 1e-12 * scale, got.upper[p]);
+		/* planar overlaps: the hull's common point certifies them */
+		if (kind == MK_PLANAR && mode == MK_BATCH_STATUS && ref[p].residual <= 1e-10 && ref[p].distance < -1e-3 * scale)
+			ENSURE(got.path[p] == MK_PATH_OVERLAP_POINT);
 		/* a separated pair's bracket [lower, upper] holds the referee's */
 		if (got.path[p] == MK_PATH_SEPARATING && ref[p].residual <= 1e-10) {
 			ENSURE_LE(got.lower[p], ref[p].distance + ref[p].gap + 1e-12 * scale);

@@ -19,7 +19,9 @@
  *                      would touch. Then Gilbert's
  *                      iteration on B2 - B1 from the centre line (a point of
  *                      both: a tetrahedron of B2 - B1 holding a ball about
- *                      the origin); a pair neither settles goes to the
+ *                      the origin, or, once the hull comes within the margin
+ *                      of the origin, its combination of the bodies' points
+ *                      tested by their gauges); a pair neither settles goes to the
  *                      one-pair query (mkCollide3_Normal) and takes its
  *                      status: |sd| <= MK_COLLIDE3_TOUCH_TOL * scale is
  *                      touching, as there.

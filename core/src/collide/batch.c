@@ -92,13 +92,14 @@ typedef struct mkGilbert {
 	double need, below, margin;
 	double rel; /* MK_BATCH_BRACKET: the bracket's largest relative width, else 0 */
 	int k, evals, pair;
+	int common; /* the hull's common point was tried as an overlap point */
 } mkGilbert;
 
 static void mkGilbert_Begin(mkGilbert *g, double need, double below)
 {
 	double dl = mkVec3_LengthInline(g->c.d);
 	g->m = dl > 0.0 ? mkVec3_Scale(g->c.d, 1.0 / dl) : mkVec3_Make(0.0, 0.0, 1.0);
-	g->k = g->evals = 0;
+	g->k = g->evals = g->common = 0;
 	g->need = need;
 	g->below = below;
 	g->rel = 0.0;
@@ -136,6 +137,21 @@ static int mkGilbert_Step(mkGilbert *g, const mkSupAt *s1, const mkSupAt *s2)
 		return MK_PATH_OVERLAP_POINT;
 	}
 	mkVec3 z = mkHull_Nearest(g->w, k, lam);
+	double zl = mkVec3_LengthInline(z);
+	if (zl <= g->margin && !g->common) {
+		/* no separation can be certified now (f <= sd <= |z|); sum lam_i a_i and
+		 * sum lam_i b_i, points of the two bodies |z| apart, give their mean as
+		 * an overlap point (for bodies in a plane the hull may never become a
+		 * tetrahedron about the origin) */
+		g->common = 1;
+		mkVec3 x = mkVec3_Make(0.0, 0.0, 0.0);
+		for (int i = 0; i < k; ++i)
+			x = mkVec3_Add(x, mkVec3_Scale(mkVec3_Add(g->a[i], g->b[i]), 0.5 * lam[i]));
+		if (mkBatch_OverlapAt(g->c.b1, g->c.b2, x, g->margin, &r->depth)) {
+			r->x = x;
+			return MK_PATH_OVERLAP_POINT;
+		}
+	}
 	int j = 0;
 	for (int i = 0; i < k; ++i)
 		if (lam[i] > 0.0) {
@@ -144,7 +160,6 @@ static int mkGilbert_Step(mkGilbert *g, const mkSupAt *s1, const mkSupAt *s2)
 			g->w[j++] = g->w[i];
 		}
 	g->k = j;
-	double zl = mkVec3_LengthInline(z);
 	r->upper = fmin(r->upper, zl);
 	if (r->f > g->margin && (zl < g->below || r->upper - r->f <= g->rel * r->upper))
 		return MK_PATH_SEPARATING;

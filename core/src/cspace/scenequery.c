@@ -338,12 +338,14 @@ static int mkSq_Overlap(mkBody3 a, mkBody3 b, const mkCollision3 *c, double tol)
  * value as the header defines them (free: a lower bound of the distance;
  * colliding: an upper bound of the signed distance, <= 0). outer_lb: NaN,
  * or the outer models' certified lower bound, already rounded down and not
- * positive (the batch asked the one-pair query already): then only the
- * inner models are asked. */
+ * positive (the batch asked the one-pair query already; never for two
+ * smooth bodies, whose overlap is read from the outer query's answer):
+ * then only the inner models are asked. */
 static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBody3 outer, int smooth, double outer_lb,
 	double *value)
 {
 	mkCollision3 c;
+	mkCollision3_Clear(&c);
 	double tol, lb = outer_lb;
 	if (isnan(lb)) {
 		if (mkCollide3_Normal(q->obs[2 * i + 1], outer, &c) != MK_OK) { *value = -INFINITY; return MK_POSE_UNCERTAIN; }
@@ -631,7 +633,9 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 				mkSq_Take(p, i, MK_POSE_FREE, outer, best, out);
 				continue;
 			}
-			if (path[k] != MK_PATH_ONE_PAIR || !isfinite(outer)) outer = NAN;
+			/* (two smooth bodies: mkSq_Pair reads the one-pair query's answer, so it asks again) */
+			if (path[k] != MK_PATH_ONE_PAIR || !isfinite(outer) || (p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH))
+				outer = NAN;
 		}
 		double v = -depth[m];
 		if (quick[m] == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
