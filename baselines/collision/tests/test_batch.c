@@ -173,6 +173,57 @@ static void mkCheckMode(int kind, mkBatchMode mode, const mkBody3 *b1, const mkB
 	}
 }
 
+/* The bounds before any search, through the public call: two bodies far
+ * apart along a direction u (random, or an axis or a diagonal of a body's
+ * frame), exponents over the whole range (1e-6, 1, 2 - 1e-6, U(0, 2)), are
+ * separated by the bounds at the centre line, and lower = |d| - H1(u) -
+ * H2(-u): H1 + H2 must hold h1 + h2 (mkBody3_SupportValue, the closed form)
+ * and exceed it by at most 16 % (each level's bound is within 15.3 % of its
+ * pair norm; exact on the axes and the diagonals). */
+static void mkCheckQuickBound(void)
+{
+	enum { N = 256 };
+	static const double eps[4] = { 1e-6, 1.0, 2.0 - 1e-6, -1.0 };
+	static mkBody3 b1[N], b2[N];
+	static mkContact st[N];
+	static double lower[N];
+	unsigned char path[N];
+	unsigned long long seed = 31;
+	for (int p = 0; p < N; ++p) {
+		mkShape3 s[2];
+		for (int j = 0; j < 2; ++j) {
+			s[j] = (mkShape3){ mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), mk_test_uniform(&seed, 1, 6), 1, 1 };
+			double e1 = eps[(p + j) % 4], e2 = eps[(p / 4 + j) % 4];
+			s[j].eps1 = e1 < 0.0 ? mk_test_uniform(&seed, 1e-3, 2.0 - 1e-3) : e1;
+			s[j].eps2 = e2 < 0.0 ? mk_test_uniform(&seed, 1e-3, 2.0 - 1e-3) : e2;
+		}
+		b1[p] = mkBody3_Make(s[0], mk_test_rotation(&seed), mkVec3_Make(0, 0, 0));
+		mkVec3 u = mkVec3_Normalize(mkVec3_Make(mk_test_uniform(&seed, -1, 1), mk_test_uniform(&seed, -1, 1),
+			mk_test_uniform(&seed, -1, 1)));
+		if (p % 3 == 1) /* an axis, or a diagonal, of B1's frame */
+			u = mkMat3_MulVec(b1[p].M, p % 2 ? mkVec3_Make(1, 0, 0) : mkVec3_Normalize(mkVec3_Make(1, 1, 1)));
+		b2[p] = mkBody3_Make(s[1], mk_test_rotation(&seed), mkVec3_Scale(u, 1e3));
+	}
+	mkBatchPairs3 pairs = { N, b1, b2, NULL, NULL };
+	mkBatchOut3 out = { .status = st, .lower = lower, .path = path };
+	mkBatchStats3 stats;
+	ENSURE(mkCollide3_Batch(&pairs, MK_BATCH_STATUS, 0.0, &out, &stats) == MK_OK);
+	ENSURE(stats.quick == N);
+	double worst = 1.0;
+	for (int p = 0; p < N; ++p) {
+		mkVec3 d = mkVec3_Sub(b2[p].t, b1[p].t), u = mkVec3_Normalize(d);
+		/* (the support values about the origin, less the centres' parts) */
+		double h = mkBody3_SupportValue(b1[p], u) - mkVec3_Dot(u, b1[p].t) + mkBody3_SupportValue(b2[p], mkVec3_Scale(u, -1.0))
+			+ mkVec3_Dot(u, b2[p].t);
+		double H = mkVec3_Length(d) - lower[p];
+		ENSURE(st[p] == MK_CONTACT_SEPARATED && path[p] == MK_PATH_SEPARATING);
+		ENSURE_LE(h, H + 1e-12 * mkVec3_Length(d));
+		ENSURE_LE(H, 1.16 * h);
+		worst = fmax(worst, H / h);
+	}
+	printf("  bounds before any search: %d pairs far apart, H / h at most %.4f\n", N, worst);
+}
+
 /* mkCollide3_BatchBracket: the reference's statuses; every separated pair's
  * bracket holds the referee's distance and, where the search gave it, is at
  * most rel of its upper end wide. */
@@ -250,5 +301,6 @@ int main(void)
 		mkCheckBracket(kind, b1, b2, ref);
 	}
 	mkCheckArguments(b1, b2);
+	mkCheckQuickBound();
 	return mk_summary("test_batch");
 }

@@ -12,8 +12,9 @@
  *                      centre line n = (c2 - c1) / |c2 - c1|: f(n) bounded
  *                      below without transcendental functions, through
  *                      upper bounds of h1, h2 (each level of a nested norm
- *                      bounded by its l2 norm where eps >= 1, else its l1
- *                      norm; exact for ellipsoids); two ellipsoids also take
+ *                      bounded by the smaller of two norm bounds exact on
+ *                      the axes and the diagonals, within 15.3 %; exact for
+ *                      ellipsoids); two ellipsoids also take
  *                      two steps towards their best direction and try the
  *                      point where the bodies, scaled about their centres,
  *                      would touch. Then Gilbert's

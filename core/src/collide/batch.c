@@ -300,7 +300,7 @@ static int mkBatch_Begin(mkGilbert *g, const mkBody3 *b1, const mkBody3 *b2, mkB
 	mkBatchQuick r;
 	/* (two ellipsoids in the distance mode only when the Newton lanes sent them on: q NULL) */
 	int quick = !use_quick ? -1
-		: !ellipsoids ? mkBatchQuick_Bound(b1, b2, need, below, margin, distance, &r)
+		: !ellipsoids ? mkBatchQuick_Bound(b1, b2, need, below, margin, distance, out->p1 || out->p2 || out->upper, &r)
 		: !q || !distance ? mkBatchQuick_Ellipsoids(b1, b2, need, below, margin, distance, &r) : -1;
 	if (quick >= 0 && distance && r.status == MK_CONTACT_SEPARATED) {
 		*path = mkBatch_OnePair(b1, b2, mode, delta, out, k); /* (the search would only have found it separated) */

@@ -242,8 +242,12 @@ static int mkBatchQuick_Ellipsoids(const mkBody3 *b1, const mkBody3 *b2, double 
  * pair, so a branch on them is mispredicted). */
 static double mkBatchBound_Pair(double u, double v, double eps)
 {
-	double l1 = u + v;
-	return l1 - (double)(eps >= 1.0) * (l1 - sqrt(u * u + v * v));
+	double l1 = u + v, l2 = sqrt(u * u + v * v), li = u > v ? u : v;
+	int round = eps >= 1.0;
+	double x = round ? 1.0 - 0.5 * eps : 0.5 - 0.5 * eps;   /* 1 - eps / 2, or (1 - eps) / 2 */
+	double k = (1.0 + x * (2.0 * 0.41421356237309515)) * (1.0 + 4.0 * DBL_EPSILON);
+	double a = round ? l2 : l1, b = k * (round ? li : l2);
+	return a < b ? a : b;
 }
 
 /* An upper bound H of body b's support function about its centre at n, no
@@ -283,10 +287,12 @@ static mkVec3 mkBatchBound_End(const mkBody3 *b, mkVec3 n)
  * bounded by its l2 norm where eps >= 1, else by its l1 norm; exact for
  * an ellipsoid); the witnesses are the ends of an axis of each body (points
  * of its surface for every exponent) farthest along +-n. distance: need =
- * margin (the caller only learns that the pair is separated). Returns
+ * margin (the caller only learns that the pair is separated). witness 0:
+ * the caller asked for neither the witnesses nor upper, which are then NaN
+ * where f > need settles the pair without them. Returns
  * MK_PATH_SEPARATING with *r, or -1. */
 static int mkBatchQuick_Bound(const mkBody3 *b1, const mkBody3 *b2, double need, double below, double margin,
-	int distance, mkBatchQuick *r)
+	int distance, int witness, mkBatchQuick *r)
 {
 	mkVec3 d = mkVec3_Sub(b2->t, b1->t);
 	double dl = mkVec3_LengthInline(d);
@@ -296,6 +302,15 @@ static int mkBatchQuick_Bound(const mkBody3 *b1, const mkBody3 *b2, double need,
 	double f = mkVec3_Dot(n, d) - mkBatchBound_Support(b1, n) - mkBatchBound_Support(b2, mkVec3_Neg(n));
 	if (!(f > margin))
 		return -1;
+	if (!witness && f > (distance ? margin : need)) {
+		r->status = MK_CONTACT_SEPARATED;
+		r->lower = f;
+		r->upper = NAN;
+		r->n = n;
+		r->p1 = r->p2 = mkVec3_Make(NAN, NAN, NAN);
+		r->clear = 1;
+		return MK_PATH_SEPARATING;
+	}
 	mkVec3 p1 = mkVec3_Add(b1->t, mkBatchBound_End(b1, n)), p2 = mkVec3_Add(b2->t, mkBatchBound_End(b2, mkVec3_Neg(n)));
 	return mkBatchQuick_Separated(r, f, n, p1, p2, distance ? margin : need, below);
 }
