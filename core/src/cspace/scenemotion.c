@@ -18,7 +18,7 @@
 
 #define MK_SM_PARTS 16      /* parts handled by the cheap layer at most */
 #define MK_SM_NEAR 32       /* obstacles near the motion handled by the cheap layer at most */
-#define MK_SM_PROBES 64     /* witness probes per motion at most */
+#define MK_SM_PROBES 8      /* witness probes per motion at most */
 #define MK_SM_STACK 256     /* bisection intervals pending at most */
 #define MK_SM_INSIDE 1e-9   /* a witness point's margin inside both bodies (implicit < 1 - this), as the pose query's */
 #define MK_SM_ROUND 1e-12   /* relative rounding allowance of the cheap bounds */
