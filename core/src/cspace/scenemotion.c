@@ -3,8 +3,8 @@
  * the pose query.
  *
  * A motion check first probes the motion for contact with cheap witnesses
- * (points inside a part and an obstacle at once, at up to 64 evenly spaced
- * poses in coarse to fine order), then covers [0, 1] by bisection: the
+ * (points inside a part and an obstacle at once, at up to MK_SM_PROBES
+ * evenly spaced poses in coarse to fine order), then covers [0, 1] by bisection: the
  * pose at an interval's midpoint, its certified clearance c and the bound L
  * on how far any robot point moves per unit of t cover an interval around
  * it on both sides; what is left is split again. A cheap lower bound of
@@ -15,6 +15,8 @@
 
 #include <math.h>
 #include <string.h>
+
+#include "cspace/scenecache.h"
 
 #define MK_SM_PARTS 16      /* parts handled by the cheap layer at most */
 #define MK_SM_NEAR 32       /* obstacles near the motion handled by the cheap layer at most */
@@ -45,7 +47,7 @@ static double mkSm_ShapeRadius(mkShape3 s, int dim)
 /* An upper bound of the body's distance from its centre t: the smaller of
  * the half diagonal of its exact box and |M|_2 (by Gershgorin on M^T M, exact
  * for a rotation times a diagonal) times the shape's radius. */
-static double mkSm_BodyRadius(mkBody3 b, int dim)
+double mkSm_BodyRadius(mkBody3 b, int dim)
 {
 	double h2 = 0.0, g = 0.0;
 	for (int i = 0; i < dim; ++i) {
@@ -194,7 +196,7 @@ static void mkSm_SetupCheap(mkSmMotion *m, double r)
 	m->rad_min = INFINITY;
 	for (int j = 0; mkSceneQuery_PartBody(m->q, origin, j, 1, &b); ++j) {
 		if (j == MK_SM_PARTS) { m->parts = 0; return; }
-		m->rad[j] = mkSm_BodyRadius(b, m->dim);
+		m->rad[j] = mkSq_PartRadius(m->q, j);
 		m->rad_min = fmin(m->rad_min, m->rad[j]);
 		m->parts = j + 1;
 	}
@@ -204,8 +206,13 @@ static void mkSm_SetupCheap(mkSmMotion *m, double r)
 		shi[c] = fmax(m->a[c], m->b[c]) + r;
 	}
 	for (int i = 0; mkSceneQuery_ObstacleBody(m->q, i, 1, &b); ++i) {
-		double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0}, s = 0.0;
-		mkSm_Box(&b, m->dim, lo, hi);
+		double lo[3], hi[3], s = 0.0;
+		mkSq_ObstacleBox(m->q, i, lo, hi);
+		for (int c = 0; c < 3; ++c) {   /* grown by the rounding allowance, as mkSm_Box */
+			double g = 0.5 * (hi[c] - lo[c]) * MK_SM_ROUND;
+			lo[c] -= g;
+			hi[c] += g;
+		}
 		for (int c = 0; c < m->dim; ++c) s += fabs(lo[c]) + fabs(hi[c]) + fabs(slo[c]) + fabs(shi[c]);
 		mkSm_AddObstacle(m, i, lo, hi, mkSm_BoxBox(slo, shi, lo, hi, m->dim) - MK_SM_ROUND * s);
 	}

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "base/message.h"
+#include "cspace/scenecache.h"
 #include "cspace/scenepair.h"
 #include "cspace/work.h"
 #include "mink/batch.h"
@@ -43,6 +44,7 @@ struct mkSceneQuery {
 	mkSqBox *obox;     /* outer models' boxes */
 	mkSqBox *sbox;     /* the same at their positions in the hierarchy: sbox[k] = obox[order[k]] */
 	double *reach;     /* part j's outer model lies within reach[j] of its centre */
+	double *prad;      /* part j's outer model's mkSm_BodyRadius (the motion checks') */
 	mkSqQuick *oquick, *pquick;   /* the outer models' data for the quick certificates */
 	int *order;        /* the obstacle at each position of the hierarchy */
 	mkSqNode *node;    /* root at 1 */
@@ -212,10 +214,11 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->order = malloc(nb * sizeof *q->order);
 	q->node = aligned_alloc(64, (2 * nb + 2) * sizeof *q->node);
 	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
+	q->prad = malloc((size_t)q->parts * sizeof *q->prad);
 	q->oquick = malloc(nb * sizeof *q->oquick);
 	q->pquick = malloc((size_t)q->parts * sizeof *q->pquick);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->sbox || !q->order || !q->node || !q->reach || !q->oquick || !q->pquick) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	if (!q->obs || !q->part || !q->obox || !q->sbox || !q->order || !q->node || !q->reach || !q->prad || !q->oquick || !q->pquick) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
 		for (int i = 0; i < q->nob && r == MK_OK; ++i)
@@ -229,6 +232,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		for (int k = 0; k < 2; ++k) q->part[k].t = mkVec3_Make(0.0, 0.0, 0.0);
 	for (int j = 0; j < q->parts && r == MK_OK; ++j) {
 		q->reach[j] = mkSq_Reach(q, j);
+		q->prad[j] = mkSm_BodyRadius(q->part[2 * j + 1], q->dim);
 		q->pquick[j] = mkSqQuick_Make(q->part[2 * j + 1]);
 	}
 	for (int i = 0; i < q->nob && r == MK_OK; ++i) q->oquick[i] = mkSqQuick_Make(q->obs[2 * i + 1]);
@@ -255,12 +259,20 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
-	free(q->obs); free(q->part); free(q->obox); free(q->sbox); free(q->order); free(q->node); free(q->keys); free(q->reach);
+	free(q->obs); free(q->part); free(q->obox); free(q->sbox); free(q->order); free(q->node); free(q->keys); free(q->reach); free(q->prad);
 	free(q->oquick); free(q->pquick);
 	free(q);
 }
 
 int mkSceneQuery_PoseSize(const mkSceneQuery *q) { return q->dim == 2 ? 3 : 7; }
+
+void mkSq_ObstacleBox(const mkSceneQuery *q, int i, double lo[3], double hi[3])
+{
+	memcpy(lo, q->obox[i].lo, sizeof q->obox[i].lo);
+	memcpy(hi, q->obox[i].hi, sizeof q->obox[i].hi);
+}
+
+double mkSq_PartRadius(const mkSceneQuery *q, int j) { return q->prad[j]; }
 
 /* ---- poses ---- */
 
