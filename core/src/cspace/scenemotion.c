@@ -248,10 +248,23 @@ static double mkSm_Cheap(const mkSmMotion *m, const double *p)
 
 /* ---- witnesses of contact ---- */
 
-/* x lies inside the body (map inverse inv) by the pose query's margin. */
+/* x lies inside the body (map inverse inv) by the pose query's margin:
+ * the implicit function F = g^(2 / eps1) below 1 - MK_SM_INSIDE, g the
+ * gauge, the nested norm |(|(y1/a, y2/b)|_p2, y3/c)|_p1 with p = 2 / eps >=
+ * 1. Decided first without pow where it can be: g >= 1 when a coordinate
+ * over its semi-axis is >= 1 (outside); g is at most the nested l2 / l1
+ * norm (l2 where p >= 2), and F <= g when g < 1, so such a bound below
+ * 1 - MK_SM_INSIDE (less a rounding allowance) is inside. */
 static int mkSm_Inside(const mkBody3 *b, mkMat3 inv, mkVec3 x)
 {
-	return mkShape3_Implicit(b->shape, mkMat3_MulVec(inv, mkVec3_Sub(x, b->t))) < 1.0 - MK_SM_INSIDE;
+	mkVec3 y = mkMat3_MulVec(inv, mkVec3_Sub(x, b->t));
+	const mkShape3 *s = &b->shape;
+	double u = fabs(y.x / s->a), v = fabs(y.y / s->b), w = fabs(y.z / s->c);
+	if (u >= 1.0 || v >= 1.0 || w >= 1.0) return 0;
+	double in = s->eps2 <= 1.0 ? sqrt(u * u + v * v) : u + v;
+	double g = s->eps1 <= 1.0 ? sqrt(in * in + w * w) : in + w;
+	if (g * (1.0 + 1e-14) < 1.0 - MK_SM_INSIDE) return 1;
+	return mkShape3_Implicit(b->shape, y) < 1.0 - MK_SM_INSIDE;
 }
 
 /* The witness points of body b: its centre and the points at 0.5 and 0.9
