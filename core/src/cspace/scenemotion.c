@@ -73,7 +73,7 @@ double mkSceneQuery_RobotRadius(const mkSceneQuery *q)
 	mkBody3 b;
 	for (int j = 0; mkSceneQuery_PartBody(q, origin, j, 1, &b); ++j) {   /* the part's outer model in the robot's frame */
 		double c = dim == 2 ? hypot(b.t.x, b.t.y) : mkVec3_Length(b.t);
-		r = fmax(r, (c + mkSm_BodyRadius(b, dim)) * (1.0 + MK_SM_ROUND));
+		r = fmax(r, (c + mkSq_PartRadius(q, j)) * (1.0 + MK_SM_ROUND));   /* (its mkSm_BodyRadius) */
 	}
 	return r;
 }
