@@ -6,15 +6,12 @@
 
 #include "mink/scenequery.h"
 
-/* An upper bound of body b's distance from its centre in its first dim
- * axes (scenemotion.c). */
-double mkSm_BodyRadius(mkBody3 b, int dim);
-
 /* Obstacle i's outer model's exact axis-aligned box (3D form), as the set-up
  * computed it. */
 void mkSq_ObstacleBox(const mkSceneQuery *q, int i, double lo[3], double hi[3]);
 
-/* mkSm_BodyRadius of part j's outer model, as the set-up computed it. */
+/* An upper bound of part j's outer model's distance from its centre in the
+ * scene's dimensions, at any rotation, as the set-up computed it. */
 double mkSq_PartRadius(const mkSceneQuery *q, int j);
 
 #endif

@@ -34,37 +34,6 @@ static int mkSq_PoseOk(const mkSceneQuery *q, const double *p)
 
 static int mkSq_Dim(const mkSceneQuery *q) { return mkSceneQuery_PoseSize(q) == 3 ? 2 : 3; }
 
-/* An upper bound of |u| over the canonical shape (in its first dim axes):
- * the ellipsoid's largest semi-axis where an exponent is >= 1 (the shape
- * lies in the ellipsoid), the box's half diagonal where it is < 1. */
-static double mkSm_ShapeRadius(mkShape3 s, int dim)
-{
-	double xy = s.eps2 >= 1.0 ? fmax(s.a, s.b) * fmax(s.a, s.b) : s.a * s.a + s.b * s.b;
-	if (dim == 2) return sqrt(xy);
-	return sqrt(s.eps1 >= 1.0 ? fmax(xy, s.c * s.c) : xy + s.c * s.c);
-}
-
-/* An upper bound of the body's distance from its centre t: the smaller of
- * the half diagonal of its exact box and |M|_2 (by Gershgorin on M^T M, exact
- * for a rotation times a diagonal) times the shape's radius. */
-double mkSm_BodyRadius(mkBody3 b, int dim)
-{
-	double h2 = 0.0, g = 0.0;
-	for (int i = 0; i < dim; ++i) {
-		mkVec3 e = {i == 0, i == 1, i == 2};
-		double h = mkShape3_SupportValue(b.shape, mkMat3_MulTVec(b.M, e));
-		h2 += h * h;
-		double row = 0.0;
-		for (int j = 0; j < dim; ++j) {
-			double mtm = 0.0;
-			for (int k = 0; k < dim; ++k) mtm += b.M.m[k][i] * b.M.m[k][j];
-			row += fabs(mtm);
-		}
-		g = fmax(g, row);
-	}
-	return fmin(sqrt(h2), sqrt(g) * mkSm_ShapeRadius(b.shape, dim)) * (1.0 + MK_SM_ROUND);
-}
-
 double mkSceneQuery_RobotRadius(const mkSceneQuery *q)
 {
 	static const double origin[7] = {0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0};   /* 2D: x, y, theta = 0 */
@@ -73,7 +42,7 @@ double mkSceneQuery_RobotRadius(const mkSceneQuery *q)
 	mkBody3 b;
 	for (int j = 0; mkSceneQuery_PartBody(q, origin, j, 1, &b); ++j) {   /* the part's outer model in the robot's frame */
 		double c = dim == 2 ? hypot(b.t.x, b.t.y) : mkVec3_Length(b.t);
-		r = fmax(r, (c + mkSq_PartRadius(q, j)) * (1.0 + MK_SM_ROUND));   /* (its mkSm_BodyRadius) */
+		r = fmax(r, (c + mkSq_PartRadius(q, j)) * (1.0 + MK_SM_ROUND));
 	}
 	return r;
 }

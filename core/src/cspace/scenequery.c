@@ -44,7 +44,7 @@ struct mkSceneQuery {
 	mkSqBox *obox;     /* outer models' boxes */
 	mkSqBox *sbox;     /* the same at their positions in the hierarchy: sbox[k] = obox[order[k]] */
 	double *reach;     /* part j's outer model lies within reach[j] of its centre */
-	double *prad;      /* part j's outer model's mkSm_BodyRadius (the motion checks') */
+	double *prad;      /* part j's outer model's mkSq_BodyRadius (the motion checks') */
 	mkSqQuick *oquick, *pquick;   /* the outer models' data for the quick certificates */
 	int *order;        /* the obstacle at each position of the hierarchy */
 	mkSqNode *node;    /* root at 1 */
@@ -169,6 +169,38 @@ static void mkSq_Build(mkSceneQuery *q, int id, int first, int count)
 	mkSq_Build(q, c + 1, first + half, count - half);
 }
 
+/* An upper bound of |u| over the canonical shape (in its first dim axes):
+ * the ellipsoid's largest semi-axis where an exponent is >= 1 (the shape
+ * lies in the ellipsoid), the box's half diagonal where it is < 1. */
+static double mkSq_ShapeRadius(mkShape3 s, int dim)
+{
+	double xy = s.eps2 >= 1.0 ? fmax(s.a, s.b) * fmax(s.a, s.b) : s.a * s.a + s.b * s.b;
+	if (dim == 2) return sqrt(xy);
+	return sqrt(s.eps1 >= 1.0 ? fmax(xy, s.c * s.c) : xy + s.c * s.c);
+}
+
+/* An upper bound of the body's distance from its centre t (the motion
+ * checks' radius of a part, mkSq_PartRadius): the smaller of
+ * the half diagonal of its exact box and |M|_2 (by Gershgorin on M^T M, exact
+ * for a rotation times a diagonal) times the shape's radius. */
+static double mkSq_BodyRadius(mkBody3 b, int dim)
+{
+	double h2 = 0.0, g = 0.0;
+	for (int i = 0; i < dim; ++i) {
+		mkVec3 e = {i == 0, i == 1, i == 2};
+		double h = mkShape3_SupportValue(b.shape, mkMat3_MulTVec(b.M, e));
+		h2 += h * h;
+		double row = 0.0;
+		for (int j = 0; j < dim; ++j) {
+			double mtm = 0.0;
+			for (int k = 0; k < dim; ++k) mtm += b.M.m[k][i] * b.M.m[k][j];
+			row += fabs(mtm);
+		}
+		g = fmax(g, row);
+	}
+	return fmin(sqrt(h2), sqrt(g) * mkSq_ShapeRadius(b.shape, dim)) * (1.0 + 1e-12);
+}
+
 /* An upper bound of the distance of part j's outer model from its centre
  * at any rotation: the half diagonal of its exact box (over the scene's
  * dimensions: a 2D body's distances are planar), with a rounding allowance. */
@@ -232,7 +264,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		for (int k = 0; k < 2; ++k) q->part[k].t = mkVec3_Make(0.0, 0.0, 0.0);
 	for (int j = 0; j < q->parts && r == MK_OK; ++j) {
 		q->reach[j] = mkSq_Reach(q, j);
-		q->prad[j] = mkSm_BodyRadius(q->part[2 * j + 1], q->dim);
+		q->prad[j] = mkSq_BodyRadius(q->part[2 * j + 1], q->dim);
 		q->pquick[j] = mkSqQuick_Make(q->part[2 * j + 1]);
 	}
 	for (int i = 0; i < q->nob && r == MK_OK; ++i) q->oquick[i] = mkSqQuick_Make(q->obs[2 * i + 1]);
