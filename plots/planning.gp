@@ -61,7 +61,7 @@ do for [term = 1:2] {
     set xrange [0.001:budget]
     set yrange [0:1.05]
     set grid
-    set key top left opaque samplen 2 font ",8"
+    set key bottom right noopaque samplen 2 font ",8"
     plot for [g = 1:NG] datafile skip 1 \
       using (hit(g, i) ? column(C_SECONDS) : 10 * budget):(hit(g, i) ? 1.0 / GN[g] : 0) \
       smooth cumulative with steps lw 2 dashtype GC[g] lc GP[g] \
