@@ -237,16 +237,20 @@ static int mkBatchQuick_Ellipsoids(const mkBody3 *b1, const mkBody3 *b2, double 
 }
 
 /* An upper bound of a pair norm |(u, v)|_q (u, v >= 0) of a support
- * function, q = 2 / (2 - eps): |.|_2 where eps >= 1 (q >= 2), else |.|_1
- * (every q >= 1), chosen without a branch (the exponents vary from pair to
- * pair, so a branch on them is mispredicted). */
+ * function, q = 2 / (2 - eps): the smaller of two bounds, both exact on the
+ * axes and on the diagonals. Where eps < 1 (1 <= q < 2): |.|_1, and
+ * 2^(1/q - 1/2) |.|_2 (Hoelder); where eps >= 1 (q >= 2): |.|_2, and
+ * 2^(1/q) |.|_inf. The powers of 2 are 2^x with x = (1 - eps) / 2 or
+ * 1 - eps / 2 in [0, 1/2], bounded by their chord 1 + 2 x (sqrt 2 - 1)
+ * (2^x is convex), rounded up; no transcendental function. Within 15.3 %
+ * of the norm (|.|_1 or |.|_2 alone: 41 %). */
 static double mkBatchBound_Pair(double u, double v, double eps)
 {
 	double l1 = u + v, l2 = sqrt(u * u + v * v), li = u > v ? u : v;
-	int round = eps >= 1.0;
-	double x = round ? 1.0 - 0.5 * eps : 0.5 - 0.5 * eps;   /* 1 - eps / 2, or (1 - eps) / 2 */
+	int q2 = eps >= 1.0;   /* q >= 2 */
+	double x = q2 ? 1.0 - 0.5 * eps : 0.5 - 0.5 * eps;   /* 1/q, or 1/q - 1/2 */
 	double k = (1.0 + x * (2.0 * 0.41421356237309515)) * (1.0 + 4.0 * DBL_EPSILON);
-	double a = round ? l2 : l1, b = k * (round ? li : l2);
+	double a = q2 ? l2 : l1, b = k * (q2 ? li : l2);
 	return a < b ? a : b;
 }
 
@@ -284,8 +288,7 @@ static mkVec3 mkBatchBound_End(const mkBody3 *b, mkVec3 n)
  * f_H = <n, d> - H1(n) - H2(-n) <= f(n) <= sd, H_i upper bounds of the
  * support functions about the centres with no transcendental function
  * (each level of the nested dual norm of (a p1, b p2, c p3), p = M^T n,
- * bounded by its l2 norm where eps >= 1, else by its l1 norm; exact for
- * an ellipsoid); the witnesses are the ends of an axis of each body (points
+ * bounded by mkBatchBound_Pair; exact for an ellipsoid); the witnesses are the ends of an axis of each body (points
  * of its surface for every exponent) farthest along +-n. distance: need =
  * margin (the caller only learns that the pair is separated). witness 0:
  * the caller asked for neither the witnesses nor upper, which are then NaN
