@@ -7,8 +7,8 @@
 #include "mink/scenequery.h"
 
 /* Obstacle i's outer model's exact axis-aligned box (3D form), as the set-up
- * computed it. */
-void mkSq_ObstacleBox(const mkSceneQuery *q, int i, double lo[3], double hi[3]);
+ * computed it; 0 when there is no obstacle i. */
+int mkSq_ObstacleBox(const mkSceneQuery *q, int i, double lo[3], double hi[3]);
 
 /* An upper bound of part j's outer model's distance from its centre in the
  * scene's dimensions, at any rotation, as the set-up computed it. */

@@ -174,9 +174,9 @@ static void mkSm_SetupCheap(mkSmMotion *m, double r)
 		slo[c] = fmin(m->a[c], m->b[c]) - r;
 		shi[c] = fmax(m->a[c], m->b[c]) + r;
 	}
-	for (int i = 0; mkSceneQuery_ObstacleBody(m->q, i, 1, &b); ++i) {
-		double lo[3], hi[3], s = 0.0;
-		mkSq_ObstacleBox(m->q, i, lo, hi);
+	double lo[3], hi[3];
+	for (int i = 0; mkSq_ObstacleBox(m->q, i, lo, hi); ++i) {
+		double s = 0.0;
 		for (int c = 0; c < 3; ++c) {   /* grown by the rounding allowance, as mkSm_Box */
 			double g = 0.5 * (hi[c] - lo[c]) * MK_SM_ROUND;
 			lo[c] -= g;

@@ -298,10 +298,12 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 
 int mkSceneQuery_PoseSize(const mkSceneQuery *q) { return q->dim == 2 ? 3 : 7; }
 
-void mkSq_ObstacleBox(const mkSceneQuery *q, int i, double lo[3], double hi[3])
+int mkSq_ObstacleBox(const mkSceneQuery *q, int i, double lo[3], double hi[3])
 {
+	if (i < 0 || i >= q->nob) return 0;
 	memcpy(lo, q->obox[i].lo, sizeof q->obox[i].lo);
 	memcpy(hi, q->obox[i].hi, sizeof q->obox[i].hi);
+	return 1;
 }
 
 double mkSq_PartRadius(const mkSceneQuery *q, int j) { return q->prad[j]; }
