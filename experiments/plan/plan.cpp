@@ -8,11 +8,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <ompl/base/MotionValidator.h>
@@ -119,7 +121,7 @@ int mkPlanCopyPath(int dim, og::PathGeometric &path, mkPlanPath *out)
 }
 
 ob::PlannerStatus mkPlanRun(og::SimpleSetup &ss, int dim, const mkScenePlanQuery &pq, const mkPlanOptions *o,
-	double *seconds)
+	double *seconds, const std::function<void()> &zero_counts)
 {
 	auto space = ss.getStateSpace();
 	ob::ScopedState<> start(space), goal(space);
@@ -128,6 +130,15 @@ ob::PlannerStatus mkPlanRun(og::SimpleSetup &ss, int dim, const mkScenePlanQuery
 	ss.setStartAndGoalStates(start, goal);
 	ss.setPlanner(mkPlanners().at(o->planner)(ss.getSpaceInformation()));
 	ss.setup();
+	if (o->warm) {
+		// The same for every checker and planner: the checks' code and data paged in, and a thread's stack and
+		// malloc arena, which glibc keeps for the next thread (PRM's search thread).
+		auto si = ss.getSpaceInformation();
+		si->isValid(start.get());
+		si->checkMotion(start.get(), goal.get());
+		std::thread([] { std::free(std::malloc(64)); }).join();
+		zero_counts();
+	}
 	// The budget checked by reading the clock at each check: OMPL's solve(seconds) checks budgets of
 	// a second or more from a thread it starts for each solve, and that thread's start and join
 	// added up to 2 ms to a solve of a few motions, with either checker.
@@ -239,6 +250,7 @@ mkPlanOptions mkPlanOptions_Default(void)
 	o.seed = 1;
 	o.clearance = 0.0;
 	o.simplify = 1;
+	o.warm = 0;
 	return o;
 }
 
@@ -282,7 +294,7 @@ int mkPlan_Solve(const mkScene *scene, const mkSceneQuery *q, int k, const mkPla
 	mkPlanCounts counts;
 	ss.setStateValidityChecker(std::make_shared<mkPlanValidity>(si, q, dim, o->clearance, &counts));
 	si->setMotionValidator(std::make_shared<mkPlanMotion>(si, q, dim, o->clearance, &counts));
-	ob::PlannerStatus st = mkPlanRun(ss, dim, pq, o, &out->seconds);
+	ob::PlannerStatus st = mkPlanRun(ss, dim, pq, o, &out->seconds, [&counts] { counts = mkPlanCounts(); });
 	out->states_checked = counts.states;
 	out->motions_checked = counts.motions;
 	if (st != ob::PlannerStatus::EXACT_SOLUTION) return mkPlanNoPath(k, pq, o, "", st, msg, msglen);

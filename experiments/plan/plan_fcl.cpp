@@ -205,7 +205,7 @@ int mkPlanFcl_Solve(const mkScene *scene, int k, const mkPlanOptions *o, int res
 	long motions = 0;
 	ss.setStateValidityChecker(std::make_shared<mkFclValidity>(si, &world));
 	si->setMotionValidator(std::make_shared<mkFclMotion>(si, &motions));
-	ob::PlannerStatus st = mkPlanRun(ss, dim, pq, o, &out->seconds);
+	ob::PlannerStatus st = mkPlanRun(ss, dim, pq, o, &out->seconds, [&] { world.states = 0; motions = 0; });
 	out->states_checked = world.states;
 	out->motions_checked = motions;
 	if (st != ob::PlannerStatus::EXACT_SOLUTION) return mkPlanNoPath(k, pq, o, " with FCL", st, msg, msglen);

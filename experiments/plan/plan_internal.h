@@ -34,9 +34,10 @@ ompl::base::StateSpacePtr mkPlanSpace(const mkScene *scene);
 int mkPlanCopyPath(int dim, ompl::geometric::PathGeometric &path, mkPlanPath *out);
 
 // Plan query pq with o's planner and time on the set-up ss (space, checkers
-// set); *seconds: the wall time of the solve.
+// set); *seconds: the wall time of the solve. With o->warm, the warm-up
+// first (mkPlanOptions), then zero_counts.
 ompl::base::PlannerStatus mkPlanRun(ompl::geometric::SimpleSetup &ss, int dim, const mkScenePlanQuery &pq,
-	const mkPlanOptions *o, double *seconds);
+	const mkPlanOptions *o, double *seconds, const std::function<void()> &zero_counts);
 // "query k (lines ...): no path found by PLANNER<with> in T s (status)"; returns 1.
 int mkPlanNoPath(int k, const mkScenePlanQuery &pq, const mkPlanOptions *o, const char *with,
 	ompl::base::PlannerStatus st, char *msg, size_t len);

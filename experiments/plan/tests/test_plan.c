@@ -13,6 +13,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <mink/cspace.h>
 #include <mink/colliders.h>
@@ -177,6 +179,40 @@ static void check_motions(const char *text, int n, int *count, int *bad)
 	mkScene_Free(&s);
 }
 
+/* RRTConnect on query 0 of text with seed 7 in a fresh process (OMPL takes
+ * a seed once per process), warm-up on or off: its counts and waypoints
+ * into out[0 .. 3); 0 when the child failed. */
+static int solve_fresh(const char *text, int warm, long out[3])
+{
+	int fd[2];
+	if (pipe(fd) != 0) return 0;
+	fflush(NULL);
+	pid_t pid = fork();
+	if (pid == 0) {
+		close(fd[0]);
+		mkScene s;
+		mkSceneQuery *q = make_query(text, &s);
+		char msg[1024];
+		mkPlanOptions o = mkPlanOptions_Default();
+		o.seed = 7;
+		o.warm = warm;
+		mkPlanPath p;
+		long r[3] = {-1, -1, -1};
+		if (mkPlan_Solve(&s, q, 0, &o, &p, msg, sizeof msg) == 0) {
+			r[0] = p.states_checked;
+			r[1] = p.motions_checked;
+			r[2] = p.count;
+		}
+		_exit(write(fd[1], r, sizeof r) == (ssize_t)sizeof r ? 0 : 1);
+	}
+	close(fd[1]);
+	ssize_t got = pid > 0 ? read(fd[0], out, 3 * sizeof *out) : -1;
+	close(fd[0]);
+	int status = 1;
+	if (pid > 0) waitpid(pid, &status, 0);
+	return got == (ssize_t)(3 * sizeof *out) && WIFEXITED(status) && WEXITSTATUS(status) == 0 && out[0] >= 0;
+}
+
 /* Plan every query of the scene with the planner; check each path. */
 static void check_scene(const char *text, const char *planner, int *paths, int *bad)
 {
@@ -257,6 +293,16 @@ int main(int argc, char **argv)
 	check_motions(scene3, 100, &motions, &bad);
 	ENSURE(bad == 0);
 	printf("%d random motions: %d verdicts of the motion test fail the referee's check\n", motions, bad);
+	/* the warm-up (mkPlanOptions.warm) is off the counts and off the planner's random numbers: RRTConnect
+	 * under one seed makes the same checks and returns the same waypoints with it as without it */
+	for (int d = 0; d < 2; ++d) {
+		long cold[3], warm[3];
+		int ok = solve_fresh(d == 0 ? scene2 : scene3, 0, cold) && solve_fresh(d == 0 ? scene2 : scene3, 1, warm);
+		ENSURE(ok);
+		ENSURE(ok && cold[0] == warm[0] && cold[1] == warm[1] && cold[2] == warm[2]);
+		printf("%dD, seed 7: %ld state and %ld motion checks, %ld waypoints without the warm-up; %ld, %ld, %ld with it\n",
+			d + 2, cold[0], cold[1], cold[2], warm[0], warm[1], warm[2]);
+	}
 	/* bad input: a start in collision names its line */
 	mkScene s;
 	char msg[1024];
