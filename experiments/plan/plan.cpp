@@ -13,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -131,12 +132,14 @@ ob::PlannerStatus mkPlanRun(og::SimpleSetup &ss, int dim, const mkScenePlanQuery
 	ss.setPlanner(mkPlanners().at(o->planner)(ss.getSpaceInformation()));
 	ss.setup();
 	if (o->warm) {
-		// The same for every checker and planner: the checks' code and data paged in, and a thread's stack and
-		// malloc arena, which glibc keeps for the next thread (PRM's search thread).
+		// The same for every checker and planner: the checks' code and data paged in, a thread's stack and
+		// malloc arena, which glibc keeps for the next thread (PRM's search thread), and the unwinder's tables
+		// (PRM's search ends by throwing).
 		auto si = ss.getSpaceInformation();
 		si->isValid(start.get());
 		si->checkMotion(start.get(), goal.get());
 		std::thread([] { std::free(std::malloc(64)); }).join();
+		try { throw std::runtime_error("warm"); } catch (const std::exception &) {}
 		zero_counts();
 	}
 	// The budget checked by reading the clock at each check: OMPL's solve(seconds) checks budgets of

@@ -27,8 +27,9 @@ typedef struct mkPlanOptions {
 	double clearance;     /* every state and motion keeps at least this certified clearance, >= 0 */
 	int simplify;         /* 1: OMPL's simplifier under the same validator */
 	int warm;             /* 1: before the clock starts, one untimed check of the start and of the motion start ->
-	                       * goal, and one thread started and joined, so that the first solve in a fresh process
-	                       * does not pay its page faults on the clock (the counts leave them out) */
+	                       * goal, one thread started and joined and one exception thrown and caught, so that the
+	                       * first solve in a fresh process does not pay its page faults on the clock (the counts
+	                       * leave them out; OMPL's PRM ends its search for a path by an exception) */
 } mkPlanOptions;
 
 /* RRTConnect, 1 s, seed 1, clearance 0, simplify, no warm-up. */
