@@ -61,7 +61,8 @@ do for [term = 1:2] {
     set xrange [0.001:budget]
     set yrange [0:1.05]
     set grid
-    set key bottom right noopaque samplen 2 font ",8"
+    set key below horizontal maxrows 2 samplen 2 font ",8"
+    set bmargin 6
     plot for [g = 1:NG] datafile skip 1 \
       using (hit(g, i) ? column(C_SECONDS) : 10 * budget):(hit(g, i) ? 1.0 / GN[g] : 0) \
       smooth cumulative with steps lw 2 dashtype GC[g] lc GP[g] \
