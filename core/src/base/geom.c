@@ -47,31 +47,9 @@ int mkMat2_IsFinite(mkMat2 a)
 	return 1;
 }
 
-int mkMat3_IsFinite(mkMat3 a)
-{
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j)
-			if (!isfinite(a.m[i][j]))
-				return 0;
-	return 1;
-}
+int mkMat3_IsFinite(mkMat3 a) { return mkMat3_IsFiniteInline(a); }
 
-mkMat3 mkMat3_FromQuat(double w, double x, double y, double z)
-{
-	double n2 = w * w + x * x + y * y + z * z;
-	if (!(n2 > 0.0) || !isfinite(n2)) {
-		mkMat3 bad = {{{NAN, NAN, NAN}, {NAN, NAN, NAN}, {NAN, NAN, NAN}}};
-		return bad;
-	}
-	double s = 1.0 / sqrt(n2);
-	w *= s; x *= s; y *= s; z *= s;
-	mkMat3 r = {{
-		{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-		{2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-		{2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)},
-	}};
-	return r;
-}
+mkMat3 mkMat3_FromQuat(double w, double x, double y, double z) { return mkMat3_FromQuatInline(w, x, y, z); }
 
 mkMat2 mkMat2_Mul(mkMat2 a, mkMat2 b)
 {
@@ -82,14 +60,7 @@ mkMat2 mkMat2_Mul(mkMat2 a, mkMat2 b)
 	return r;
 }
 
-mkMat3 mkMat3_Mul(mkMat3 a, mkMat3 b)
-{
-	mkMat3 r;
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j)
-			r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
-	return r;
-}
+mkMat3 mkMat3_Mul(mkMat3 a, mkMat3 b) { return mkMat3_MulInline(a, b); }
 
 mkMat2 mkMat2_Transpose(mkMat2 a)
 {
@@ -173,15 +144,7 @@ mkVec2 mkMat2_MulVec(mkMat2 a, mkVec2 v)
 	return r;
 }
 
-mkVec3 mkMat3_MulVec(mkMat3 a, mkVec3 v)
-{
-	mkVec3 r = {
-		a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
-		a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
-		a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z,
-	};
-	return r;
-}
+mkVec3 mkMat3_MulVec(mkMat3 a, mkVec3 v) { return mkMat3_MulVecInline(a, v); }
 
 mkVec2 mkMat2_MulTVec(mkMat2 a, mkVec2 v)
 {
@@ -189,12 +152,4 @@ mkVec2 mkMat2_MulTVec(mkMat2 a, mkVec2 v)
 	return r;
 }
 
-mkVec3 mkMat3_MulTVec(mkMat3 a, mkVec3 v)
-{
-	mkVec3 r = {
-		a.m[0][0] * v.x + a.m[1][0] * v.y + a.m[2][0] * v.z,
-		a.m[0][1] * v.x + a.m[1][1] * v.y + a.m[2][1] * v.z,
-		a.m[0][2] * v.x + a.m[1][2] * v.y + a.m[2][2] * v.z,
-	};
-	return r;
-}
+mkVec3 mkMat3_MulTVec(mkMat3 a, mkVec3 v) { return mkMat3_MulTVecInline(a, v); }

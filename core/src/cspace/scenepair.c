@@ -7,6 +7,8 @@
 #include <float.h>
 #include <math.h>
 
+#include "base/geom_inline.h"
+
 #define MK_SQ_QUICK 4e-12   /* margin of the certificates, times the pair's size (as MK_BATCH_MARGIN) */
 
 mkSqQuick mkSqQuick_Make(mkBody3 b)
@@ -54,14 +56,14 @@ int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, cons
 	double L = sqrt(mkVec3_Dot(d, d)), m = MK_SQ_QUICK * (L + ko->r + kp->r);
 	if (L > 0.0) {
 		mkVec3 u = mkVec3_Scale(d, 1.0 / L);
-		double f = L - mkSq_ShapeNorm(o->shape, mkMat3_MulTVec(o->M, u), 1)
-			- mkSq_ShapeNorm(p->shape, mkMat3_MulTVec(p->M, u), 1);
+		double f = L - mkSq_ShapeNorm(o->shape, mkMat3_MulTVecInline(o->M, u), 1)
+			- mkSq_ShapeNorm(p->shape, mkMat3_MulTVecInline(p->M, u), 1);
 		if (f > best + m) return 1;
 		if (f > m) return isfinite(best) ? 0 : 3;
 	}
 	if (!smooth) return 0;
-	mkVec3 yp = mkMat3_MulVec(kp->Mi, mkMat3_MulTVec(R, mkVec3_Neg(d)));   /* the obstacle's centre, in the part's frame */
-	mkVec3 yo = mkMat3_MulVec(ko->Mi, d);                                    /* the part's centre, in the obstacle's */
+	mkVec3 yp = mkMat3_MulVecInline(kp->Mi, mkMat3_MulTVecInline(R, mkVec3_Neg(d)));   /* the obstacle's centre, in the part's frame */
+	mkVec3 yo = mkMat3_MulVecInline(ko->Mi, d);                                    /* the part's centre, in the obstacle's */
 	double gp = mkSq_ShapeNorm(p->shape, yp, 0) * (1.0 + kp->slack) + kp->slack;
 	double go = mkSq_ShapeNorm(o->shape, yo, 0) * (1.0 + ko->slack) + ko->slack;
 	double lo = fmax(0.0, 1.0 - 1.0 / gp), hi = fmin(1.0, 1.0 / go);

@@ -8,9 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/geom_inline.h"
 #include "base/message.h"
 #include "cspace/scenecache.h"
 #include "cspace/scenepair.h"
+#include "cspace/scenewide.h"
 #include "cspace/work.h"
 #include "mink/batch.h"
 #include "mink/collision.h"
@@ -23,7 +25,7 @@
 #define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
 #define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
 
-typedef struct mkSqBox { double lo[3], hi[3]; } mkSqBox;
+typedef mkSwBox mkSqBox;
 
 /* A node of the hierarchy (32 bytes: two to a cache line, the children of
  * a node side by side at an even index), its box rounded outwards to
@@ -49,6 +51,7 @@ struct mkSceneQuery {
 	int *order;        /* the obstacle at each position of the hierarchy */
 	mkSqNode *node;    /* root at 1 */
 	int nnode;
+	mkSwTree wide;     /* the eight-way hierarchy of the box queries (finite max_clearance) */
 	struct mkSqKey *keys;   /* building only */
 };
 
@@ -123,19 +126,6 @@ static int mkSq_CompareKey(const void *pa, const void *pb)
 	return a->idx - b->idx;
 }
 
-/* x rounded down and up to a float. */
-static float mkSq_Down(double x)
-{
-	float f = (float)x;
-	return (double)f > x ? nextafterf(f, -INFINITY) : f;
-}
-
-static float mkSq_Up(double x)
-{
-	float f = (float)x;
-	return (double)f < x ? nextafterf(f, INFINITY) : f;
-}
-
 /* Node id over order[first .. first + count): its box, then a median split
  * on the longest axis of the box into two new nodes side by side. */
 static void mkSq_Build(mkSceneQuery *q, int id, int first, int count)
@@ -148,7 +138,7 @@ static void mkSq_Build(mkSceneQuery *q, int id, int first, int count)
 			b.hi[i] = fmax(b.hi[i], q->obox[q->order[k]].hi[i]);
 		}
 	mkSqNode *n = &q->node[id];
-	for (int i = 0; i < 3; ++i) { n->lo[i] = mkSq_Down(b.lo[i]); n->hi[i] = mkSq_Up(b.hi[i]); }
+	for (int i = 0; i < 3; ++i) { n->lo[i] = mkSw_Down(b.lo[i]); n->hi[i] = mkSw_Up(b.hi[i]); }
 	n->child = first;
 	n->count = count;
 	if (count <= MK_SQ_LEAF) return;
@@ -279,6 +269,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		for (int k = 0; k < q->nob; ++k) q->sbox[k] = q->obox[q->order[k]];
 		free(q->keys);
 		q->keys = NULL;
+		if (mkSwTree_Build(&q->wide, q->obox, q->nob) != MK_OK) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	}
 	if (r != MK_OK) {
 		mkSceneQuery_Destroy(q);
@@ -293,6 +284,7 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 	if (!q) return;
 	free(q->obs); free(q->part); free(q->obox); free(q->sbox); free(q->order); free(q->node); free(q->keys); free(q->reach); free(q->prad);
 	free(q->oquick); free(q->pquick);
+	mkSwTree_Free(&q->wide);
 	free(q);
 }
 
@@ -323,9 +315,9 @@ static int mkSq_Pose(const mkSceneQuery *q, const double *p, mkMat3 *R, mkVec3 *
 		*c = mkVec3_Make(p[0], p[1], 0.0);
 		return 1;
 	}
-	*R = mkMat3_FromQuat(p[3], p[4], p[5], p[6]);
+	*R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
 	*c = mkVec3_Make(p[0], p[1], p[2]);
-	return mkMat3_IsFinite(*R);
+	return mkMat3_IsFiniteInline(*R);
 }
 
 /* What mkSq_Pose accepts, without the rotation: finite values of
@@ -341,8 +333,8 @@ static int mkSq_PoseOk(const mkSceneQuery *q, const double *p)
 
 static mkBody3 mkSq_Place(mkBody3 b, mkMat3 R, mkVec3 c)
 {
-	b.M = mkMat3_Mul(R, b.M);
-	b.t = mkVec3_Add(c, mkMat3_MulVec(R, b.t));
+	b.M = mkMat3_MulInline(R, b.M);
+	b.t = mkVec3_Add(c, mkMat3_MulVecInline(R, b.t));
 	return b;
 }
 
@@ -469,7 +461,7 @@ static inline double mkSq_Limit2(const mkSqPart *p, double best)
 
 /* 1 when the part is certainly at least best away from everything in box
  * x (by its sphere or its exact box, whichever it is tested by). */
-static int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
+static inline int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
 {
 	return mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best);
 }
@@ -483,9 +475,9 @@ typedef struct mkSqWalk {
 } mkSqWalk;
 
 /* Switch the part to its exact box: its half-widths, the support values
- * at +-e_i (the rows of M, by the dual norms) rounded up, and the stacked
- * nodes' distances again. */
-static void mkSq_BoxMode(const mkSceneQuery *q, mkSqPart *p, mkSqWalk *w)
+ * at +-e_i (the rows of M, by the dual norms) rounded up (mkSq_ExactBox),
+ * and the stacked nodes' distances again (mkSq_BoxMode). */
+static void mkSq_ExactBox(mkSqPart *p)
 {
 	mkSq_Placed(p);
 	for (int i = 0; i < 3; ++i) {
@@ -494,10 +486,15 @@ static void mkSq_BoxMode(const mkSceneQuery *q, mkSqPart *p, mkSqWalk *w)
 	}
 	p->reach = 0.0;
 	p->has_box = 1;
+}
+
+static void mkSq_BoxMode(const mkSceneQuery *q, mkSqPart *p, mkSqWalk *w)
+{
+	mkSq_ExactBox(p);
 	for (int k = 0; k < w->top; ++k) w->d2[k] = mkSq_NodeDistance2(p, &q->node[w->node[k]]);
 }
 
-/* The walk's next candidates (at most max): the positions of obstacles not
+/* The walk's next candidates (at most max): the obstacles not
  * certainly at least best away (mkSq_Far by the exact box), in the walk's
  * order (the nearer child first; it does not depend on best: best only
  * prunes). The part is switched to its exact box when its sphere does not
@@ -516,7 +513,7 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 				lim2 = mkSq_Limit2(p, best);
 				if (mkSq_Far(p, &q->sbox[k], best)) continue;
 			}
-			pos[n++] = k;
+			pos[n++] = q->order[k];
 			continue;
 		}
 		if (w->top == 0) break;
@@ -623,7 +620,7 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
 	return 0;
 }
 
-/* The narrow phase of the candidates at positions pos[0 .. n) in the
+/* The narrow phase of the candidate obstacles ids[0 .. n) in the
  * walk's order, against the bound b = min(best, bound): best the smallest
  * one-pair value, bound the smallest certified upper bound of a pair's
  * distance found (the pose's clearance is at most either). The quick
@@ -639,7 +636,7 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
  * to the one-pair query (mkSq_Leave: for the inner models only where the
  * batch asked it already) and its certified upper bound lowers bound.
  * Returns 1 when colliding. */
-static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n, double *best, double *bound,
+static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *ids, int n, double *best, double *bound,
 	mkSqLeft *left, mkPoseAnswer *out)
 {
 	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], quick[MK_SQ_BATCH], slot[MK_SQ_BATCH], nb = 0;
@@ -650,7 +647,7 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 	double rel = q->opt.clearance_rel;
 	mkSq_Placed(p);
 	for (int m = 0; m < n; ++m) {
-		int i = q->order[pos[m]];
+		int i = ids[m];
 		depth[m] = 0.0;
 		quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
 			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, b, &depth[m]);
@@ -665,8 +662,8 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 		: mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS, known ? fmax(b, 0.0) : 0.0, &bo, NULL);
 	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
 	for (int m = 0; m < n; ++m) {
-		int i = q->order[pos[m]], k = slot[m];
-		if (mkSq_Far(p, &q->sbox[pos[m]], fmin(*best, *bound))) continue;
+		int i = ids[m], k = slot[m];
+		if (mkSq_Far(p, &q->obox[i], fmin(*best, *bound))) continue;
 		++out->pairs;
 		if (quick[m] == 1 || (k >= 0 && ok && known && rel == 0.0 && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
 		/* the outer models' certified lower bound where the one-pair query gave it (rounded down) */
@@ -693,6 +690,24 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *pos, int n
 	return 0;
 }
 
+/* Part j at the pose, tested by its sphere at first (mkSqPart). */
+static void mkSq_PartInit(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, mkSqPart *p)
+{
+	p->smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
+	p->rest = &q->part[2 * j];
+	p->R = R;
+	p->at = c;
+	mkVec3 pc = mkVec3_Add(c, mkMat3_MulVecInline(R, p->rest[1].t));   /* as mkSq_Place: the outer model's centre */
+	p->c[0] = pc.x;
+	p->c[1] = pc.y;
+	p->c[2] = pc.z;
+	p->placed = 0;
+	p->reach = q->reach[j];
+	p->h[0] = p->h[1] = p->h[2] = 0.0;
+	p->has_box = p->opened = 0;
+	p->j = j;
+}
+
 /* One part against the scene: the walk's candidates, MK_SQ_BATCH at a time
  * (one, answered at once, while no clearance is known, so that the first
  * pair sets it), each group through mkSq_Narrow, then the pairs left by
@@ -701,19 +716,7 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, doubl
 	mkPoseAnswer *out)
 {
 	mkSqPart p;
-	p.smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
-	p.rest = &q->part[2 * j];
-	p.R = R;
-	p.at = c;
-	mkVec3 pc = mkVec3_Add(c, mkMat3_MulVec(R, p.rest[1].t));   /* as mkSq_Place: the outer model's centre */
-	p.c[0] = pc.x;
-	p.c[1] = pc.y;
-	p.c[2] = pc.z;
-	p.placed = 0;
-	p.reach = q->reach[j];
-	p.h[0] = p.h[1] = p.h[2] = 0.0;
-	p.has_box = p.opened = 0;
-	p.j = j;
+	mkSq_PartInit(q, j, R, c, &p);
 	mkSqWalk w;
 	w.k = w.end = 0;
 	w.top = 1;
@@ -731,6 +734,52 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, doubl
 	}
 }
 
+/* The part's box (its sphere's or its exact box) grown by b on every side,
+ * rounded outwards to floats. */
+static void mkSq_QueryBox(const mkSqPart *p, double b, float lo[3], float hi[3])
+{
+	for (int i = 0; i < 3; ++i) {
+		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12);
+		lo[i] = mkSw_Down(p->c[i] - half);
+		hi[i] = mkSw_Up(p->c[i] + half);
+	}
+}
+
+/* The same with a finite max_clearance, by a box query of the eight-way
+ * hierarchy instead of the walk nearest first: the obstacles whose boxes
+ * meet the part's box grown by the bound b = min(best, bound) on every
+ * side (its sphere's box, then its exact box once the sphere does not rule
+ * out an obstacle), each tested by mkSq_Far and the rest as there. */
+static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, double *bound,
+	mkPoseAnswer *out)
+{
+	mkSqPart p;
+	mkSq_PartInit(q, j, R, c, &p);
+	mkSwWalk w;
+	float lo[3], hi[3];
+	mkSq_QueryBox(&p, fmin(*best, *bound), lo, hi);
+	mkSwWalk_Begin(&q->wide, &w, lo, hi);
+	mkSqLeft left;
+	left.n = 0;
+	int pos[MK_SQ_BATCH], cand[MK_SQ_BATCH];
+	for (;;) {
+		double b = fmin(*best, *bound);
+		mkSq_QueryBox(&p, b, lo, hi);
+		int got = mkSwWalk_Next(&q->wide, &w, lo, hi, pos, MK_SQ_BATCH), n = 0;
+		if (got == 0) return mkSq_Resolve(q, &p, &left, best, out);
+		for (int m = 0; m < got; ++m) {
+			const mkSqBox *x = &q->wide.box[pos[m]];
+			if (mkSq_Far(&p, x, b)) continue;
+			if (!p.has_box) {
+				mkSq_ExactBox(&p);
+				if (mkSq_Far(&p, x, b)) continue;
+			}
+			cand[n++] = q->wide.order[pos[m]];
+		}
+		if (n > 0 && mkSq_Narrow(q, &p, cand, n, best, bound, &left, out)) return 1;
+	}
+}
+
 mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnswer *out)
 {
 	mkMat3 R;
@@ -742,8 +791,9 @@ mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnsw
 	if (!mkSq_Pose(q, pose, &R, &c)) { out->status = MK_POSE_UNCERTAIN; out->clearance = NAN; return MK_ERR_ARGUMENT; }
 	if (q->nob == 0) return MK_OK;
 	double best = q->opt.max_clearance, bound = INFINITY;
+	int box = isfinite(best);
 	for (int j = 0; j < q->parts; ++j)
-		if (mkSq_PartPose(q, j, R, c, &best, &bound, out)) return MK_OK;
+		if ((box ? mkSq_PartPoseBox : mkSq_PartPose)(q, j, R, c, &best, &bound, out)) return MK_OK;
 	out->clearance = best;
 	return MK_OK;
 }

@@ -1,0 +1,73 @@
+/* scenewide.h - a bounding volume hierarchy of eight children per node for
+ * box queries: which obstacles' boxes meet a given box (internal to
+ * libmink_cspace; the scene query's walk when max_clearance is finite).
+ *
+ * The children's boxes are stored axis by axis, rounded outwards to
+ * floats, so that a node's eight tests are comparisons only (no
+ * arithmetic, no rounding: a box that meets the query box always passes)
+ * and run side by side. Built top down: each node splits its obstacles at
+ * the median of their box centres along the longest axis of their bounds,
+ * three times over, into eight groups; a group of at most MK_SW_LEAF
+ * obstacles is a leaf. */
+#ifndef MINK_CSPACE_SCENEWIDE_H
+#define MINK_CSPACE_SCENEWIDE_H
+
+#include <math.h>
+
+#include "mink/base.h"
+
+#define MK_SW_WIDTH 8   /* children per node */
+#define MK_SW_LEAF 1    /* obstacles per leaf at most */
+#define MK_SW_STACK 96  /* walk stack: 7 per level + 1; the median splits make at most 12 levels for any int count */
+
+/* An axis-aligned box. */
+typedef struct mkSwBox { double lo[3], hi[3]; } mkSwBox;
+
+/* A node: child k's box [lo[.][k], hi[.][k]]; an inner child has count 0
+ * and first its node; a leaf has the obstacles order[first .. first +
+ * count); an unused child an empty box (lo > hi). */
+typedef struct mkSwNode {
+	float lo[3][MK_SW_WIDTH], hi[3][MK_SW_WIDTH];
+	int first[MK_SW_WIDTH], count[MK_SW_WIDTH];
+	unsigned leaves;   /* bit k: child k is a leaf */
+} mkSwNode;
+
+typedef struct mkSwTree {
+	mkSwNode *node;   /* root at 0 */
+	int *order;       /* the obstacle at each position */
+	mkSwBox *box;     /* its box, at its position (the boxes of a leaf side by side) */
+	int nnode, n;
+} mkSwTree;
+
+/* The tree of the n boxes (n >= 0; NULL arrays when n = 0). Returns
+ * MK_ERR_MEMORY when out of memory (t then empty). */
+mkResult mkSwTree_Build(mkSwTree *t, const mkSwBox *box, int n);
+void mkSwTree_Free(mkSwTree *t);
+
+/* A walk: nodes to visit, the leaves of node `node` still to read (bits
+ * of pend), and the leaf being read (positions k .. end). */
+typedef struct mkSwWalk {
+	int stack[MK_SW_STACK], top, node, k, end;
+	unsigned pend;
+} mkSwWalk;
+
+/* A walk of the boxes that meet [lo, hi], its root visited: w->top > 0
+ * when it goes on below the root's children. */
+void mkSwWalk_Begin(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3]);
+
+/* The walk's next positions (at most max, into pos: obstacles order[pos],
+ * boxes box[pos]): those of the leaves whose boxes meet [lo, hi]; the box
+ * may shrink from call to call (nodes stacked under a larger one are
+ * tested again when visited). Returns their number, 0 when the walk is
+ * over. */
+int mkSwWalk_Next(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3], int *pos, int max);
+
+/* Finite x rounded down and up to a float: x moved outwards by more than
+ * the rounding to nearest can move it back (half a float's unit in the
+ * last place, 2^-24 of |x|, or 2^-150 below the normal floats); infinite
+ * beyond the floats' range. Both keep order: a <= b gives
+ * mkSw_Down(a) <= mkSw_Up(b), so two boxes that meet meet rounded. */
+static inline float mkSw_Down(double x) { return (float)(x - (fabs(x) * 0x1p-22 + 0x1p-140)); }
+static inline float mkSw_Up(double x) { return (float)(x + (fabs(x) * 0x1p-22 + 0x1p-140)); }
+
+#endif
