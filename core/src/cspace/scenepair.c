@@ -49,7 +49,7 @@ double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual)
 	return mkSq_Norm2(mkSq_Norm2(x1 / s.a, x2 / s.b, 2.0 / s.eps2), x3 / s.c, 2.0 / s.eps1);
 }
 
-int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, mkMat3 R, int smooth,
+int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, const mkMat3 *R, int smooth,
 	double best, double *depth)
 {
 	mkVec3 d = mkVec3_Sub(p->t, o->t);
@@ -62,7 +62,7 @@ int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, cons
 		if (f > m) return isfinite(best) ? 0 : 3;
 	}
 	if (!smooth) return 0;
-	mkVec3 yp = mkMat3_MulVecInline(kp->Mi, mkMat3_MulTVecInline(R, mkVec3_Neg(d)));   /* the obstacle's centre, in the part's frame */
+	mkVec3 yp = mkMat3_MulVecInline(kp->Mi, mkMat3_MulTVecInline(*R, mkVec3_Neg(d)));   /* the obstacle's centre, in the part's frame */
 	mkVec3 yo = mkMat3_MulVecInline(ko->Mi, d);                                    /* the part's centre, in the obstacle's */
 	double gp = mkSq_ShapeNorm(p->shape, yp, 0) * (1.0 + kp->slack) + kp->slack;
 	double go = mkSq_ShapeNorm(o->shape, yo, 0) * (1.0 + ko->slack) + ko->slack;

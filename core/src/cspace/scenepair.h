@@ -38,7 +38,7 @@ mkSqQuick mkSqQuick_Make(mkBody3 b);
  * |(|(a y1, b y2)|_q2, c y3)|_q1 with q = 2 / (2 - eps) (dual 1). */
 double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual);
 
-int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, mkMat3 R, int smooth,
+int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, const mkMat3 *R, int smooth,
 	double best, double *depth);
 
 #endif

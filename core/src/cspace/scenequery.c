@@ -18,23 +18,12 @@
 #include "mink/collision.h"
 
 #define MK_SQ_ROUND 1e-12   /* rounding allowance of a pair's bound, times its size */
-#define MK_SQ_LEAF 2        /* obstacles per leaf at most */
-#define MK_SQ_STACK 128     /* traversal stack (at most the depth + 1, ~ log2 n) */
 #define MK_SQ_CHUNK 32      /* poses per pool task */
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 #define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
 #define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
 
 typedef mkSwBox mkSqBox;
-
-/* A node of the hierarchy (32 bytes: two to a cache line, the children of
- * a node side by side at an even index), its box rounded outwards to
- * floats. */
-typedef struct mkSqNode {
-	float lo[3], hi[3];
-	int child;   /* inner node: its children child, child + 1; leaf: its first position */
-	int count;   /* leaf: the obstacles at positions child .. child + count; inner node: 0 */
-} mkSqNode;
 
 struct mkSceneQuery {
 	const mkScene *scene;
@@ -44,15 +33,10 @@ struct mkSceneQuery {
 	mkBody3 *obs;      /* [i * 2 + bound]: inner, outer models */
 	mkBody3 *part;     /* [j * 2 + bound], in the robot's frame */
 	mkSqBox *obox;     /* outer models' boxes */
-	mkSqBox *sbox;     /* the same at their positions in the hierarchy: sbox[k] = obox[order[k]] */
 	double *reach;     /* part j's outer model lies within reach[j] of its centre */
 	double *prad;      /* part j's outer model's mkSq_BodyRadius (the motion checks') */
 	mkSqQuick *oquick, *pquick;   /* the outer models' data for the quick certificates */
-	int *order;        /* the obstacle at each position of the hierarchy */
-	mkSqNode *node;    /* root at 1 */
-	int nnode;
-	mkSwTree wide;     /* the eight-way hierarchy of the box queries (finite max_clearance) */
-	struct mkSqKey *keys;   /* building only */
+	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 };
 
 const char *mkPoseStatus_Name(mkPoseStatus s)
@@ -113,50 +97,6 @@ static mkSqBox mkSq_BodyBox(mkBody3 b)
 		x.hi[i] = c + h;
 	}
 	return x;
-}
-
-/* ---- the hierarchy ---- */
-
-typedef struct mkSqKey { double key; int idx; } mkSqKey;
-
-static int mkSq_CompareKey(const void *pa, const void *pb)
-{
-	const mkSqKey *a = pa, *b = pb;
-	if (a->key != b->key) return a->key < b->key ? -1 : 1;
-	return a->idx - b->idx;
-}
-
-/* Node id over order[first .. first + count): its box, then a median split
- * on the longest axis of the box into two new nodes side by side. */
-static void mkSq_Build(mkSceneQuery *q, int id, int first, int count)
-{
-	mkSqBox b;
-	for (int i = 0; i < 3; ++i) { b.lo[i] = INFINITY; b.hi[i] = -INFINITY; }
-	for (int k = first; k < first + count; ++k)
-		for (int i = 0; i < 3; ++i) {
-			b.lo[i] = fmin(b.lo[i], q->obox[q->order[k]].lo[i]);
-			b.hi[i] = fmax(b.hi[i], q->obox[q->order[k]].hi[i]);
-		}
-	mkSqNode *n = &q->node[id];
-	for (int i = 0; i < 3; ++i) { n->lo[i] = mkSw_Down(b.lo[i]); n->hi[i] = mkSw_Up(b.hi[i]); }
-	n->child = first;
-	n->count = count;
-	if (count <= MK_SQ_LEAF) return;
-	int axis = 0;
-	for (int i = 1; i < 3; ++i)
-		if (b.hi[i] - b.lo[i] > b.hi[axis] - b.lo[axis]) axis = i;
-	for (int k = 0; k < count; ++k) {
-		int i = q->order[first + k];
-		q->keys[k] = (mkSqKey){q->obox[i].lo[axis] + q->obox[i].hi[axis], i};
-	}
-	qsort(q->keys, (size_t)count, sizeof *q->keys, mkSq_CompareKey);
-	for (int k = 0; k < count; ++k) q->order[first + k] = q->keys[k].idx;
-	int c = q->nnode, half = count / 2;
-	q->nnode += 2;
-	n->child = c;
-	n->count = 0;
-	mkSq_Build(q, c, first, half);
-	mkSq_Build(q, c + 1, first + half, count - half);
 }
 
 /* An upper bound of |u| over the canonical shape (in its first dim axes):
@@ -232,15 +172,13 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->obs = malloc(2 * nb * sizeof *q->obs);
 	q->part = malloc(2 * (size_t)q->parts * sizeof *q->part);
 	q->obox = malloc(nb * sizeof *q->obox);
-	q->sbox = malloc(nb * sizeof *q->sbox);
-	q->order = malloc(nb * sizeof *q->order);
-	q->node = aligned_alloc(64, (2 * nb + 2) * sizeof *q->node);
 	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
 	q->prad = malloc((size_t)q->parts * sizeof *q->prad);
 	q->oquick = malloc(nb * sizeof *q->oquick);
 	q->pquick = malloc((size_t)q->parts * sizeof *q->pquick);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->sbox || !q->order || !q->node || !q->reach || !q->prad || !q->oquick || !q->pquick) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->oquick || !q->pquick)
+		r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
 		for (int i = 0; i < q->nob && r == MK_OK; ++i)
@@ -258,17 +196,8 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		q->pquick[j] = mkSqQuick_Make(q->part[2 * j + 1]);
 	}
 	for (int i = 0; i < q->nob && r == MK_OK; ++i) q->oquick[i] = mkSqQuick_Make(q->obs[2 * i + 1]);
-	if (r == MK_OK && q->nob > 0 && !(q->keys = malloc(nb * sizeof *q->keys))) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
-	if (r == MK_OK && q->nob > 0) {
-		for (int i = 0; i < q->nob; ++i) {
-			q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
-			q->order[i] = i;
-		}
-		q->nnode = 2;
-		mkSq_Build(q, 1, 0, q->nob);
-		for (int k = 0; k < q->nob; ++k) q->sbox[k] = q->obox[q->order[k]];
-		free(q->keys);
-		q->keys = NULL;
+	if (r == MK_OK) {
+		for (int i = 0; i < q->nob; ++i) q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
 		if (mkSwTree_Build(&q->wide, q->obox, q->nob) != MK_OK) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	}
 	if (r != MK_OK) {
@@ -282,7 +211,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
-	free(q->obs); free(q->part); free(q->obox); free(q->sbox); free(q->order); free(q->node); free(q->keys); free(q->reach); free(q->prad);
+	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad);
 	free(q->oquick); free(q->pquick);
 	mkSwTree_Free(&q->wide);
 	free(q);
@@ -331,10 +260,10 @@ static int mkSq_PoseOk(const mkSceneQuery *q, const double *p)
 	return q->dim == 2 || p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6] > 0.0;
 }
 
-static mkBody3 mkSq_Place(mkBody3 b, mkMat3 R, mkVec3 c)
+static mkBody3 mkSq_Place(mkBody3 b, const mkMat3 *R, mkVec3 c)
 {
-	b.M = mkMat3_MulInline(R, b.M);
-	b.t = mkVec3_Add(c, mkMat3_MulVecInline(R, b.t));
+	b.M = mkMat3_MulInline(*R, b.M);
+	b.t = mkVec3_Add(c, mkMat3_MulVecInline(*R, b.t));
 	return b;
 }
 
@@ -343,7 +272,7 @@ int mkSceneQuery_PartBody(const mkSceneQuery *q, const double *pose, int j, int 
 	mkMat3 R;
 	mkVec3 c;
 	if (!q || !out || j < 0 || j >= q->parts || (bound != 0 && bound != 1) || !mkSq_Pose(q, pose, &R, &c)) return 0;
-	*out = mkSq_Place(q->part[2 * j + bound], R, c);
+	*out = mkSq_Place(q->part[2 * j + bound], &R, c);
 	return 1;
 }
 
@@ -409,7 +338,7 @@ static mkPoseStatus mkSq_Pair(const mkSceneQuery *q, int i, mkBody3 inner, mkBod
  * are placed when first needed (mkSq_Placed). */
 typedef struct mkSqPart {
 	const mkBody3 *rest;   /* its inner and outer models in the robot's frame */
-	mkMat3 R;              /* the pose */
+	const mkMat3 *R;       /* the pose */
 	mkVec3 at;
 	double c[3], reach, h[3];
 	mkBody3 outer, inner;  /* once placed */
@@ -444,11 +373,12 @@ static inline double mkSq_CentreDistance2(const mkSqPart *p, const mkSqBox *x)
 		+ mkSq_Gap2(p->c[2], x->lo[2] - p->h[2], x->hi[2] + p->h[2]);
 }
 
-static inline double mkSq_NodeDistance2(const mkSqPart *p, const mkSqNode *x)
+/* The same for child k of node nd (its float box). */
+static inline double mkSq_ChildDistance2(const mkSqPart *p, const mkSwNode *nd, int k)
 {
-	return mkSq_Gap2(p->c[0], x->lo[0] - p->h[0], x->hi[0] + p->h[0])
-		+ mkSq_Gap2(p->c[1], x->lo[1] - p->h[1], x->hi[1] + p->h[1])
-		+ mkSq_Gap2(p->c[2], x->lo[2] - p->h[2], x->hi[2] + p->h[2]);
+	return mkSq_Gap2(p->c[0], nd->lo[0][k] - p->h[0], nd->hi[0][k] + p->h[0])
+		+ mkSq_Gap2(p->c[1], nd->lo[1][k] - p->h[1], nd->hi[1][k] + p->h[1])
+		+ mkSq_Gap2(p->c[2], nd->lo[2][k] - p->h[2], nd->hi[2][k] + p->h[2]);
 }
 
 /* Boxes whose squared distance (mkSq_CentreDistance2) is at least this are
@@ -466,17 +396,29 @@ static inline int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
 	return mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best);
 }
 
-/* A part's walk of the hierarchy, nearest child first: the stack of nodes
- * with their squared distances from the part (mkSq_NodeDistance2), and the
- * leaf being read (positions k .. end). */
+/* The part's box (its sphere's or its exact box) grown by b on every side,
+ * rounded outwards to floats. */
+static void mkSq_QueryBox(const mkSqPart *p, double b, float lo[3], float hi[3])
+{
+	for (int i = 0; i < 3; ++i) {
+		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12);
+		lo[i] = mkSw_Down(p->c[i] - half);
+		hi[i] = mkSw_Up(p->c[i] + half);
+	}
+}
+
+/* A part's walk of the hierarchy, nearest child first: the stack of the
+ * children to visit, each as node * MK_SW_WIDTH + its slot in node, with
+ * its squared distance from the part (mkSq_ChildDistance2), the root as -1
+ * (distance 0), and the leaf being read (positions k .. end). */
 typedef struct mkSqWalk {
-	int node[MK_SQ_STACK], top, k, end;
-	double d2[MK_SQ_STACK];
+	int entry[MK_SW_STACK], top, k, end;
+	double d2[MK_SW_STACK];
 } mkSqWalk;
 
 /* Switch the part to its exact box: its half-widths, the support values
  * at +-e_i (the rows of M, by the dual norms) rounded up (mkSq_ExactBox),
- * and the stacked nodes' distances again (mkSq_BoxMode). */
+ * and the stacked children's distances again (mkSq_BoxMode). */
 static void mkSq_ExactBox(mkSqPart *p)
 {
 	mkSq_Placed(p);
@@ -491,7 +433,32 @@ static void mkSq_ExactBox(mkSqPart *p)
 static void mkSq_BoxMode(const mkSceneQuery *q, mkSqPart *p, mkSqWalk *w)
 {
 	mkSq_ExactBox(p);
-	for (int k = 0; k < w->top; ++k) w->d2[k] = mkSq_NodeDistance2(p, &q->node[w->node[k]]);
+	for (int k = 0; k < w->top; ++k)
+		if (w->entry[k] >= 0)
+			w->d2[k] = mkSq_ChildDistance2(p, &q->wide.node[w->entry[k] / MK_SW_WIDTH], w->entry[k] % MK_SW_WIDTH);
+}
+
+/* Node e's children nearer than lim2 stacked, the nearest on top (first
+ * those whose boxes meet the part's grown by best on every side, by
+ * mkSwNode_Meet). */
+static void mkSq_Open(const mkSceneQuery *q, mkSqWalk *w, const mkSqPart *p, int e, double best, double lim2)
+{
+	const mkSwNode *nd = &q->wide.node[e];
+	double d[MK_SW_WIDTH];
+	int at[MK_SW_WIDTH], n = 0;
+	float lo[3], hi[3];
+	mkSq_QueryBox(p, best, lo, hi);
+	for (unsigned bits = mkSwNode_Meet(nd, lo, hi); bits; bits &= bits - 1) {
+		int k = mkSw_Low(bits);
+		if (nd->first[k] < 0) continue;
+		double dk = mkSq_ChildDistance2(p, nd, k);
+		if (!(dk < lim2)) continue;
+		int m = n++;
+		for (; m > 0 && d[m - 1] < dk; --m) { d[m] = d[m - 1]; at[m] = at[m - 1]; }   /* farthest first */
+		d[m] = dk;
+		at[m] = e * MK_SW_WIDTH + k;
+	}
+	for (int m = 0; m < n; ++m) { w->entry[w->top] = at[m]; w->d2[w->top++] = d[m]; }
 }
 
 /* The walk's next candidates (at most max): the obstacles not
@@ -507,33 +474,35 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 	while (n < max) {
 		if (w->k < w->end) {
 			int k = w->k++;
-			if (mkSq_Far(p, &q->sbox[k], best)) continue;
+			if (mkSq_Far(p, &q->wide.box[k], best)) continue;
 			if (!p->has_box) {
 				mkSq_BoxMode(q, p, w);
 				lim2 = mkSq_Limit2(p, best);
-				if (mkSq_Far(p, &q->sbox[k], best)) continue;
+				if (mkSq_Far(p, &q->wide.box[k], best)) continue;
 			}
-			pos[n++] = q->order[k];
+			pos[n++] = q->wide.order[k];
 			continue;
 		}
 		if (w->top == 0) break;
 		--w->top;
 		if (w->d2[w->top] >= lim2) continue;
-		const mkSqNode *nd = &q->node[w->node[w->top]];
-		if (nd->count > 0) {
-			w->k = nd->child;
-			w->end = nd->child + nd->count;
+		int e = w->entry[w->top];
+		if (e < 0) { /* the root */
+			mkSq_Open(q, w, p, 0, best, lim2);
+			continue;
+		}
+		const mkSwNode *nd = &q->wide.node[e / MK_SW_WIDTH];
+		int slot = e % MK_SW_WIDTH;
+		if (nd->count[slot] > 0) {
+			w->k = nd->first[slot];
+			w->end = w->k + nd->count[slot];
 			continue;
 		}
 		if (!p->has_box && ++p->opened > MK_SQ_SPHERE_NODES) {
 			mkSq_BoxMode(q, p, w);
 			lim2 = mkSq_Limit2(p, best);
 		}
-		double dl = mkSq_NodeDistance2(p, &q->node[nd->child]), dr = mkSq_NodeDistance2(p, &q->node[nd->child + 1]);
-		int near = dl <= dr ? nd->child : nd->child + 1;
-		double dn = dl <= dr ? dl : dr, df = dl <= dr ? dr : dl;
-		if (df < lim2) { w->node[w->top] = 2 * nd->child + 1 - near; w->d2[w->top++] = df; }
-		if (dn < lim2) { w->node[w->top] = near; w->d2[w->top++] = dn; }
+		mkSq_Open(q, w, p, nd->first[slot], best, lim2);
 	}
 	return n;
 }
@@ -691,13 +660,13 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *ids, int n
 }
 
 /* Part j at the pose, tested by its sphere at first (mkSqPart). */
-static void mkSq_PartInit(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, mkSqPart *p)
+static void mkSq_PartInit(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, mkSqPart *p)
 {
 	p->smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
 	p->rest = &q->part[2 * j];
 	p->R = R;
 	p->at = c;
-	mkVec3 pc = mkVec3_Add(c, mkMat3_MulVecInline(R, p->rest[1].t));   /* as mkSq_Place: the outer model's centre */
+	mkVec3 pc = mkVec3_Add(c, mkMat3_MulVecInline(*R, p->rest[1].t));   /* as mkSq_Place: the outer model's centre */
 	p->c[0] = pc.x;
 	p->c[1] = pc.y;
 	p->c[2] = pc.z;
@@ -712,7 +681,7 @@ static void mkSq_PartInit(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, mkSq
  * (one, answered at once, while no clearance is known, so that the first
  * pair sets it), each group through mkSq_Narrow, then the pairs left by
  * the one-pair query (mkSq_Resolve). Returns 1 when colliding. */
-static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, double *bound,
+static int mkSq_PartPose(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, double *best, double *bound,
 	mkPoseAnswer *out)
 {
 	mkSqPart p;
@@ -720,8 +689,8 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, doubl
 	mkSqWalk w;
 	w.k = w.end = 0;
 	w.top = 1;
-	w.node[0] = 1;
-	w.d2[0] = mkSq_NodeDistance2(&p, &q->node[1]);
+	w.entry[0] = -1;
+	w.d2[0] = 0.0;
 	mkSqLeft left;
 	left.n = 0;
 	int pos[MK_SQ_BATCH];
@@ -734,37 +703,32 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, doubl
 	}
 }
 
-/* The part's box (its sphere's or its exact box) grown by b on every side,
- * rounded outwards to floats. */
-static void mkSq_QueryBox(const mkSqPart *p, double b, float lo[3], float hi[3])
-{
-	for (int i = 0; i < 3; ++i) {
-		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12);
-		lo[i] = mkSw_Down(p->c[i] - half);
-		hi[i] = mkSw_Up(p->c[i] + half);
-	}
-}
-
 /* The same with a finite max_clearance, by a box query of the eight-way
  * hierarchy instead of the walk nearest first: the obstacles whose boxes
  * meet the part's box grown by the bound b = min(best, bound) on every
  * side (its sphere's box, then its exact box once the sphere does not rule
  * out an obstacle), each tested by mkSq_Far and the rest as there. */
-static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, mkMat3 R, mkVec3 c, double *best, double *bound,
+static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, double *best, double *bound,
 	mkPoseAnswer *out)
 {
 	mkSqPart p;
 	mkSq_PartInit(q, j, R, c, &p);
 	mkSwWalk w;
 	float lo[3], hi[3];
-	mkSq_QueryBox(&p, fmin(*best, *bound), lo, hi);
+	double bq = *best < *bound ? *best : *bound;   /* the bound of the query box, with has_box */
+	int boxed = 0;
+	mkSq_QueryBox(&p, bq, lo, hi);
 	mkSwWalk_Begin(&q->wide, &w, lo, hi);
 	mkSqLeft left;
 	left.n = 0;
 	int pos[MK_SQ_BATCH], cand[MK_SQ_BATCH];
 	for (;;) {
-		double b = fmin(*best, *bound);
-		mkSq_QueryBox(&p, b, lo, hi);
+		double b = *best < *bound ? *best : *bound;
+		if (b != bq || p.has_box != boxed) {
+			bq = b;
+			boxed = p.has_box;
+			mkSq_QueryBox(&p, b, lo, hi);
+		}
 		int got = mkSwWalk_Next(&q->wide, &w, lo, hi, pos, MK_SQ_BATCH), n = 0;
 		if (got == 0) return mkSq_Resolve(q, &p, &left, best, out);
 		for (int m = 0; m < got; ++m) {
@@ -793,7 +757,7 @@ mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnsw
 	double best = q->opt.max_clearance, bound = INFINITY;
 	int box = isfinite(best);
 	for (int j = 0; j < q->parts; ++j)
-		if ((box ? mkSq_PartPoseBox : mkSq_PartPose)(q, j, R, c, &best, &bound, out)) return MK_OK;
+		if ((box ? mkSq_PartPoseBox : mkSq_PartPose)(q, j, &R, c, &best, &bound, out)) return MK_OK;
 	out->clearance = best;
 	return MK_OK;
 }

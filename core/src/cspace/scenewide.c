@@ -2,7 +2,6 @@
 #include "cspace/scenewide.h"
 
 #include <stdlib.h>
-#include <string.h>
 
 typedef struct mkSwKey { double key; int idx; } mkSwKey;
 
@@ -157,64 +156,12 @@ void mkSwTree_Free(mkSwTree *t)
 }
 
 
-/* The lowest set bit of m != 0. */
-static inline int mkSw_Low(unsigned m)
-{
-#if defined(__GNUC__)
-	return __builtin_ctz(m);
-#else
-	int k = 0;
-	while (!(m >> k & 1u)) ++k;
-	return k;
-#endif
-}
-
-/* The children of node nd whose boxes meet [lo, hi], as bits: four
- * children per vector where the compiler has vectors. */
-#if defined(__GNUC__)
-typedef float mkSwV4 __attribute__((vector_size(16)));
-typedef int mkSwM4 __attribute__((vector_size(16)));
-
-static inline mkSwV4 mkSw_Load(const float *x)
-{
-	mkSwV4 v;
-	memcpy(&v, x, sizeof v);
-	return v;
-}
-
-static unsigned mkSw_Meet(const mkSwNode *nd, const float lo[3], const float hi[3])
-{
-	unsigned m = 0;
-	const mkSwM4 bit = {1, 2, 4, 8};
-	for (int h = 0; h < MK_SW_WIDTH; h += 4) {
-		mkSwM4 in = bit;
-		for (int i = 0; i < 3; ++i) {
-			mkSwV4 l = {lo[i], lo[i], lo[i], lo[i]}, u = {hi[i], hi[i], hi[i], hi[i]};
-			in &= (mkSw_Load(&nd->lo[i][h]) <= u) & (mkSw_Load(&nd->hi[i][h]) >= l);
-		}
-		m |= (unsigned)(in[0] | in[1] | in[2] | in[3]) << h;
-	}
-	return m;
-}
-#else
-static unsigned mkSw_Meet(const mkSwNode *nd, const float lo[3], const float hi[3])
-{
-	unsigned m = 0;
-	for (int k = 0; k < MK_SW_WIDTH; ++k) {
-		int in = (nd->lo[0][k] <= hi[0]) & (nd->hi[0][k] >= lo[0]) & (nd->lo[1][k] <= hi[1]) & (nd->hi[1][k] >= lo[1])
-			& (nd->lo[2][k] <= hi[2]) & (nd->hi[2][k] >= lo[2]);
-		m |= (unsigned)in << k;
-	}
-	return m;
-}
-#endif
-
 /* Node e visited: its inner children that meet [lo, hi] stacked, its
  * leaves that do pending. */
 static void mkSw_Visit(const mkSwTree *t, mkSwWalk *w, int e, const float lo[3], const float hi[3])
 {
 	const mkSwNode *nd = &t->node[e];
-	unsigned m = mkSw_Meet(nd, lo, hi), inner = m & ~nd->leaves;
+	unsigned m = mkSwNode_Meet(nd, lo, hi), inner = m & ~nd->leaves;
 	/* (at most MK_SW_WIDTH - 1 entries per level stay on the stack) */
 	for (; inner; inner &= inner - 1) w->stack[w->top++] = nd->first[mkSw_Low(inner)];
 	w->node = e;

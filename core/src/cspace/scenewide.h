@@ -13,6 +13,9 @@
 #define MINK_CSPACE_SCENEWIDE_H
 
 #include <math.h>
+#if defined(__SSE__)
+#include <emmintrin.h>
+#endif
 
 #include "mink/base.h"
 
@@ -31,6 +34,36 @@ typedef struct mkSwNode {
 	int first[MK_SW_WIDTH], count[MK_SW_WIDTH];
 	unsigned leaves;   /* bit k: child k is a leaf */
 } mkSwNode;
+
+/* The children of node nd whose boxes meet [lo, hi], as bits (bit k:
+ * child k; unused children meet a box with infinite sides): four children
+ * per SSE compare on x86, one at a time elsewhere. */
+#if defined(__SSE__)
+static inline unsigned mkSwNode_Meet(const mkSwNode *nd, const float lo[3], const float hi[3])
+{
+	unsigned m = 0;
+	for (int h = 0; h < MK_SW_WIDTH; h += 4) {
+		__m128 in = _mm_castsi128_ps(_mm_set1_epi32(-1));
+		for (int i = 0; i < 3; ++i) {
+			in = _mm_and_ps(in, _mm_cmple_ps(_mm_loadu_ps(&nd->lo[i][h]), _mm_set1_ps(hi[i])));
+			in = _mm_and_ps(in, _mm_cmpge_ps(_mm_loadu_ps(&nd->hi[i][h]), _mm_set1_ps(lo[i])));
+		}
+		m |= (unsigned)_mm_movemask_ps(in) << h;
+	}
+	return m;
+}
+#else
+static inline unsigned mkSwNode_Meet(const mkSwNode *nd, const float lo[3], const float hi[3])
+{
+	unsigned m = 0;
+	for (int k = 0; k < MK_SW_WIDTH; ++k) {
+		int in = (nd->lo[0][k] <= hi[0]) & (nd->hi[0][k] >= lo[0]) & (nd->lo[1][k] <= hi[1]) & (nd->hi[1][k] >= lo[1])
+			& (nd->lo[2][k] <= hi[2]) & (nd->hi[2][k] >= lo[2]);
+		m |= (unsigned)in << k;
+	}
+	return m;
+}
+#endif
 
 typedef struct mkSwTree {
 	mkSwNode *node;   /* root at 0 */
@@ -61,6 +94,18 @@ void mkSwWalk_Begin(const mkSwTree *t, mkSwWalk *w, const float lo[3], const flo
  * tested again when visited). Returns their number, 0 when the walk is
  * over. */
 int mkSwWalk_Next(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3], int *pos, int max);
+
+/* The lowest set bit of m != 0. */
+static inline int mkSw_Low(unsigned m)
+{
+#if defined(__GNUC__)
+	return __builtin_ctz(m);
+#else
+	int k = 0;
+	while (!(m >> k & 1u)) ++k;
+	return k;
+#endif
+}
 
 /* Finite x rounded down and up to a float: x moved outwards by more than
  * the rounding to nearest can move it back (half a float's unit in the
