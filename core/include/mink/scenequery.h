@@ -7,12 +7,16 @@
  * (normalised here). Part j of the robot (mink/scene.h) is then the body
  * c + R t_j + R M_j B_j.
  *
- * Broad phase: a bounding volume hierarchy of the obstacles' exact
- * axis-aligned boxes (from the closed-form support function at +-e_i),
- * built once by median splits; each part walks it nearest child first,
- * with the sphere about its centre that holds it at every rotation
- * (precomputed) and, past the top of the tree, its exact box at the pose,
- * pruning every node no nearer than the best clearance found. Narrow
+ * Broad phase: a bounding volume hierarchy of eight children per node over
+ * the obstacles' exact axis-aligned boxes (from the closed-form support
+ * function at +-e_i), built once by median splits, its boxes rounded
+ * outwards to floats and tested four at a time. Each part tests it with
+ * the sphere about its centre that holds it at every rotation
+ * (precomputed) and, once the sphere does not settle it, its exact box at
+ * the pose: walked nearest child first, pruning every child no nearer than
+ * the best clearance found; with a finite max_clearance, by box queries
+ * instead (every obstacle whose box comes within the cap of the part's,
+ * in no order: the cap prunes as well as a best clearance would). Narrow
  * phase: the candidates, 8 at a time in the walk's order: quick
  * certificates first (a support-function bound along the centre line; a
  * common point of two smooth bodies on the centre segment, by their

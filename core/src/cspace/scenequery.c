@@ -1,6 +1,7 @@
 /* scenequery.c - a robot at many poses against a scene (mink/scenequery.h):
- * exact boxes of the bodies, a bounding volume hierarchy of the obstacles
- * walked nearest first, and the narrow phase on the models of each pair. */
+ * exact boxes of the bodies, the eight-way hierarchy of the obstacles
+ * (cspace/scenewide.h) walked nearest first or by box queries, and the
+ * narrow phase on the models of each pair. */
 #include "mink/scenequery.h"
 
 #include <math.h>
@@ -401,9 +402,10 @@ static inline int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
 static void mkSq_QueryBox(const mkSqPart *p, double b, float lo[3], float hi[3])
 {
 	for (int i = 0; i < 3; ++i) {
-		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12);
-		lo[i] = mkSw_Down(p->c[i] - half);
-		hi[i] = mkSw_Up(p->c[i] + half);
+		/* (one outward margin for both ends, as mkSw_Down / mkSw_Up's: at least theirs) */
+		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12), m = (fabs(p->c[i]) + half) * 0x1p-22 + 0x1p-140;
+		lo[i] = (float)(p->c[i] - half - m);
+		hi[i] = (float)(p->c[i] + half + m);
 	}
 }
 
@@ -719,6 +721,7 @@ static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec
 	int boxed = 0;
 	mkSq_QueryBox(&p, bq, lo, hi);
 	mkSwWalk_Begin(&q->wide, &w, lo, hi);
+	if (w.top == 0 && w.pend == 0) return 0;   /* (no box meets the part's sphere's) */
 	mkSqLeft left;
 	left.n = 0;
 	int pos[MK_SQ_BATCH], cand[MK_SQ_BATCH];
