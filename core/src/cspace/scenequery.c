@@ -402,10 +402,9 @@ static inline int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
 static void mkSq_QueryBox(const mkSqPart *p, double b, float lo[3], float hi[3])
 {
 	for (int i = 0; i < 3; ++i) {
-		/* (one outward margin for both ends, as mkSw_Down / mkSw_Up's: at least theirs) */
-		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12), m = (fabs(p->c[i]) + half) * 0x1p-22 + 0x1p-140;
-		lo[i] = (float)(p->c[i] - half - m);
-		hi[i] = (float)(p->c[i] + half + m);
+		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12);
+		lo[i] = mkSw_Down(p->c[i] - half);
+		hi[i] = mkSw_Up(p->c[i] + half);
 	}
 }
 
@@ -441,15 +440,14 @@ static void mkSq_BoxMode(const mkSceneQuery *q, mkSqPart *p, mkSqWalk *w)
 }
 
 /* Node e's children nearer than lim2 stacked, the nearest on top (first
- * those whose boxes meet the part's grown by best on every side, by
- * mkSwNode_Meet). */
-static void mkSq_Open(const mkSceneQuery *q, mkSqWalk *w, const mkSqPart *p, int e, double best, double lim2)
+ * those whose boxes meet [lo, hi], the part's box grown by the best
+ * clearance on every side, by mkSwNode_Meet). */
+static void mkSq_Open(const mkSceneQuery *q, mkSqWalk *w, const mkSqPart *p, int e, const float lo[3],
+	const float hi[3], double lim2)
 {
 	const mkSwNode *nd = &q->wide.node[e];
 	double d[MK_SW_WIDTH];
 	int at[MK_SW_WIDTH], n = 0;
-	float lo[3], hi[3];
-	mkSq_QueryBox(p, best, lo, hi);
 	for (unsigned bits = mkSwNode_Meet(nd, lo, hi); bits; bits &= bits - 1) {
 		int k = mkSw_Low(bits);
 		if (nd->first[k] < 0) continue;
@@ -473,6 +471,8 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 {
 	int n = 0;
 	double lim2 = mkSq_Limit2(p, best);
+	float lo[3], hi[3];
+	mkSq_QueryBox(p, best, lo, hi);
 	while (n < max) {
 		if (w->k < w->end) {
 			int k = w->k++;
@@ -480,6 +480,7 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 			if (!p->has_box) {
 				mkSq_BoxMode(q, p, w);
 				lim2 = mkSq_Limit2(p, best);
+				mkSq_QueryBox(p, best, lo, hi);
 				if (mkSq_Far(p, &q->wide.box[k], best)) continue;
 			}
 			pos[n++] = q->wide.order[k];
@@ -490,7 +491,7 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 		if (w->d2[w->top] >= lim2) continue;
 		int e = w->entry[w->top];
 		if (e < 0) { /* the root */
-			mkSq_Open(q, w, p, 0, best, lim2);
+			mkSq_Open(q, w, p, 0, lo, hi, lim2);
 			continue;
 		}
 		const mkSwNode *nd = &q->wide.node[e / MK_SW_WIDTH];
@@ -503,8 +504,9 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 		if (!p->has_box && ++p->opened > MK_SQ_SPHERE_NODES) {
 			mkSq_BoxMode(q, p, w);
 			lim2 = mkSq_Limit2(p, best);
+			mkSq_QueryBox(p, best, lo, hi);
 		}
-		mkSq_Open(q, w, p, nd->first[slot], best, lim2);
+		mkSq_Open(q, w, p, nd->first[slot], lo, hi, lim2);
 	}
 	return n;
 }
@@ -721,7 +723,6 @@ static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec
 	int boxed = 0;
 	mkSq_QueryBox(&p, bq, lo, hi);
 	mkSwWalk_Begin(&q->wide, &w, lo, hi);
-	if (w.top == 0 && w.pend == 0) return 0;   /* (no box meets the part's sphere's) */
 	mkSqLeft left;
 	left.n = 0;
 	int pos[MK_SQ_BATCH], cand[MK_SQ_BATCH];
