@@ -11,6 +11,7 @@
 #include <collision.h>
 #include <extremes.h>
 #include <fitting.h>
+#include <planning_summary.h>
 #include <timing.h>
 #include <tradeoff.h>
 #include <scene.h>
@@ -20,18 +21,20 @@
 
 typedef void (*mkSummaryFn)(mkDoc *d, const char *dir, mkTally *tally);
 
-/* The experiments' sections, in the paper's order. */
+/* The experiments' sections, in the paper's order; planning (beyond the
+ * paper) last. */
 static const mkSummaryFn mkSections[] = {
 	mkValidation_Summary, mkFitting_Summary, mkTiming_Summary, mkTradeoff_Summary, mkCObstacle_Summary,
-	mkScene_Summary, mkCollision_Summary, mkExtremes_Summary,
+	mkScene_Summary, mkCollision_Summary, mkExtremes_Summary, mkPlanning_Summary,
 };
 
 static void mkHelp(FILE *fp)
 {
 	fputs("usage: tables [--results DIR] [--md PATH] [--tex PATH]\n"
-		"Every published number of the paper beside its reproduction, from DIR/validation.csv,\n"
-		"fitting.csv, timing.csv, cobstacle.csv and collision.csv (and their .meta sidecars);\n"
-		"missing results are listed as NOT REPRODUCED YET. Writes Markdown and LaTeX.\n\n", fp);
+		"Every published number of the paper beside its reproduction, and the sections of the\n"
+		"experiments beyond the paper, from the result files in DIR (validation, fitting, timing,\n"
+		"tradeoff, cobstacle, scene, collision, extremes, planning: NAME.csv or NAME.csv.gz with\n"
+		"its .meta sidecar); missing results are listed as NOT REPRODUCED YET. Writes Markdown and LaTeX.\n\n", fp);
 }
 
 /* Copy the body's two temporary streams after the heads. */
