@@ -22,4 +22,9 @@ double mkPlanning_Median(const mkTable *t, const long *rows, long n, int seconds
  * (log-spaced; the last is top). */
 double mkPlanning_Budget(int k, double top);
 
+/* One-sided Fisher exact test: the chance, if both groups had the same
+ * success rate, that the second group (s1 of n1 runs) has s1 or more of the
+ * s0 + s1 successes (hypergeometric upper tail). */
+double mkPlanning_Fisher(long s0, long n0, long s1, long n1);
+
 #endif

@@ -77,6 +77,20 @@ static long mkPl_Paths(const mkTable *t, const mkPlCols *c, const long *rows, lo
 	return s;
 }
 
+static double mkPl_LogChoose(long n, long k)
+{
+	return lgamma((double)n + 1.0) - lgamma((double)k + 1.0) - lgamma((double)(n - k) + 1.0);
+}
+
+double mkPlanning_Fisher(long s0, long n0, long s1, long n1)
+{
+	long N = n0 + n1, K = s0 + s1;
+	double p = 0.0, all = mkPl_LogChoose(N, n1);
+	for (long x = s1; x <= n1 && x <= K; ++x)
+		if (K - x <= n0) p += exp(mkPl_LogChoose(K, x) + mkPl_LogChoose(N - K, n1 - x) - all);
+	return p > 1.0 ? 1.0 : p;
+}
+
 static void mkPl_Seconds(char *buf, size_t len, double v)
 {
 	if (isnan(v)) snprintf(buf, len, "–");
@@ -180,26 +194,30 @@ void mkPlanning_Summary(mkDoc *d, const char *dir, mkTally *tally)
 					snprintf(v[2 + e], 64, "–");
 			int below = 0;
 			long gap = 0;
-			double at = NAN;
+			double at = NAN, pmin = 1.0;
 			for (int e = 0; top > MK_PLANNING_BUDGET_MIN && e < MK_PLANNING_BUDGETS; ++e) {
 				double b = mkPlanning_Budget(e, top);
 				long s0 = mkPl_Within(t, &c, g[k].rows[0], g[k].n[0], b), s1 = mkPl_Within(t, &c, g[k].rows[1], g[k].n[1], b);
 				if (s0 * g[k].n[1] < s1 * g[k].n[0]) { /* mink's fraction below FCL's */
 					++below;
 					if (s1 - s0 > gap) { gap = s1 - s0; at = b; }
+					pmin = fmin(pmin, mkPlanning_Fisher(s0, g[k].n[0], s1, g[k].n[1]));
 				}
 			}
 			below_groups += below > 0;
 			snprintf(v[7], 64, "%d of %d", below, MK_PLANNING_BUDGETS);
-			if (below) snprintf(v[8], 64, "%ld runs at %.2g s", gap, at);
+			if (below) snprintf(v[8], 64, "%ld runs at %.2g s (p %.2f)", gap, at, pmin);
 			else snprintf(v[8], 64, "–");
 			const char *cells[9] = { v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8] };
 			mkDoc_Row(d, cells);
 		}
 		mkDoc_TableEnd(d);
 		mkDoc_Para(d, "Budgets: %d log-spaced from %g s to each group's budget; below = mink's fraction of runs with "
-			"a path within the budget under FCL's. Groups with some budget below: %d of %d.", MK_PLANNING_BUDGETS,
-			MK_PLANNING_BUDGET_MIN, below_groups, n);
+			"a path within the budget under FCL's. Groups with some budget below: %d of %d. p: the smallest, over "
+			"the budgets below, of a one-sided Fisher exact test's p-value (the chance of FCL's count or more if "
+			"both checkers had the same success rate at that budget): small p is evidence of a lower rate, large "
+			"p a difference the runs' number cannot tell from chance.", MK_PLANNING_BUDGETS, MK_PLANNING_BUDGET_MIN,
+			below_groups, n);
 	}
 	for (int k = 0; k < n; ++k) { free(g[k].rows[0]); free(g[k].rows[1]); }
 	mkSection_End(&s);

@@ -10,6 +10,7 @@
  *    budgets b_k = 10^(-3 + 3k/37) with b_k >= 0.03 are k >= 37 *
  *    log10(30) / 3 = 18.2, k = 19 .. 37: 19 budgets, each 1 run below.
  *    fcl's paths: one hitting the true shapes (0), one uncertain (-1).
+ *    The one-sided Fisher test of 3 of 4 against 4 of 4: 0.50 (below).
  *  - maze2d / RRTConnect, budget 0.01 s, one run each: mink 0.004, fcl
  *    none: median ratio undefined; never below.
  * Without a result the section says it is not reproduced yet. */
@@ -44,6 +45,13 @@ int main(int argc, char **argv)
 	ENSURE(fabs(mkPlanning_Budget(0, 1.0) - 1e-3) < 1e-18);
 	ENSURE(mkPlanning_Budget(MK_PLANNING_BUDGETS - 1, 1.0) == 1.0);
 	ENSURE(mkPlanning_Budget(18, 1.0) < 0.03 && mkPlanning_Budget(19, 1.0) > 0.03);
+	/* Fisher's one-sided test by hand: 3 of 4 against 4 of 4 (7 successes
+	 * in 8, the one failure in the first group with chance 4 / 8); 0 of 3
+	 * against 3 of 3: 1 / C(6, 3) = 1 / 20; equal counts 2 of 4 and 2 of 4:
+	 * P(X >= 2) for X ~ H(8, 4, 4) = (36 + 16 + 1) / 70. */
+	ENSURE(fabs(mkPlanning_Fisher(3, 4, 4, 4) - 0.5) < 1e-12);
+	ENSURE(fabs(mkPlanning_Fisher(0, 3, 3, 3) - 0.05) < 1e-12);
+	ENSURE(fabs(mkPlanning_Fisher(2, 4, 2, 4) - 53.0 / 70.0) < 1e-12);
 
 	mkWrite(dir, "planning.csv",
 		"trial,seed,scene,query,planner,checker,budget_s,mesh_res,status,success,seconds,path_true_free\n"
@@ -61,7 +69,7 @@ int main(int argc, char **argv)
 	char *md = mkSummary_Text(mkPlanning_Summary, dir, &tally);
 	mkSummary_Expect(md, "| room2d | PRM | 4 | 3 / 4 | 0.0035 | 0.015 | 0.23 | 3 of 3 | 1 of 4 (1) |");
 	mkSummary_Expect(md, "| maze2d | RRTConnect | 1 | 1 / 0 | 0.004 | no path | – | 1 of 1 | 0 of 0 (0) |");
-	mkSummary_Expect(md, "| room2d | PRM | 1 / 1 | 3 / 1 | 3 / 3 | 3 / 4 | 3 / 4 | 19 of 38 | 1 runs at 0.035 s |");
+	mkSummary_Expect(md, "| room2d | PRM | 1 / 1 | 3 / 1 | 3 / 3 | 3 / 4 | 3 / 4 | 19 of 38 | 1 runs at 0.035 s (p 0.50) |");
 	mkSummary_Expect(md, "| maze2d | RRTConnect | 0 / 0 | 1 / 0 | – | – | – | 0 of 38 | – |");
 	mkSummary_Expect(md, "Groups with some budget below: 1 of 2.");
 	ENSURE(tally.published == 0 && tally.reproduced == 0 && tally.missing == 0);
