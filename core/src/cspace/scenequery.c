@@ -36,6 +36,7 @@ struct mkSceneQuery {
 	mkSqBox *obox;     /* outer models' boxes */
 	double *reach;     /* part j's outer model lies within reach[j] of its centre */
 	double *prad;      /* part j's outer model's mkSq_BodyRadius (the motion checks') */
+	double (*osphere)[4];  /* obstacle i's outer model's centre and mkSq_BodyRadius */
 	mkSqQuick *oquick, *pquick;   /* the outer models' data for the quick certificates */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 };
@@ -175,10 +176,11 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->obox = malloc(nb * sizeof *q->obox);
 	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
 	q->prad = malloc((size_t)q->parts * sizeof *q->prad);
+	q->osphere = malloc(nb * sizeof *q->osphere);
 	q->oquick = malloc(nb * sizeof *q->oquick);
 	q->pquick = malloc((size_t)q->parts * sizeof *q->pquick);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->oquick || !q->pquick)
+	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->osphere || !q->oquick || !q->pquick)
 		r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
@@ -196,7 +198,14 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		q->prad[j] = mkSq_BodyRadius(q->part[2 * j + 1], q->dim);
 		q->pquick[j] = mkSqQuick_Make(q->part[2 * j + 1]);
 	}
-	for (int i = 0; i < q->nob && r == MK_OK; ++i) q->oquick[i] = mkSqQuick_Make(q->obs[2 * i + 1]);
+	for (int i = 0; i < q->nob && r == MK_OK; ++i) {
+		const mkBody3 *o = &q->obs[2 * i + 1];
+		q->oquick[i] = mkSqQuick_Make(*o);
+		q->osphere[i][0] = o->t.x;
+		q->osphere[i][1] = o->t.y;
+		q->osphere[i][2] = o->t.z;
+		q->osphere[i][3] = mkSq_BodyRadius(*o, q->dim);
+	}
 	if (r == MK_OK) {
 		for (int i = 0; i < q->nob; ++i) q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
 		if (mkSwTree_Build(&q->wide, q->obox, q->nob) != MK_OK) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
@@ -212,7 +221,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
-	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad);
+	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad); free(q->osphere);
 	free(q->oquick); free(q->pquick);
 	mkSwTree_Free(&q->wide);
 	free(q);
@@ -395,6 +404,17 @@ static inline double mkSq_Limit2(const mkSqPart *p, double best)
 static inline int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
 {
 	return mkSq_CentreDistance2(p, x) >= mkSq_Limit2(p, best);
+}
+
+/* 1 when part p and obstacle i are certainly at least b apart by their
+ * spheres: centres farther apart than the sum of their radii (bounds of
+ * their outer models' distances from their centres) and b, with a
+ * rounding allowance. */
+static inline int mkSq_SpheresApart(const mkSceneQuery *q, const mkSqPart *p, int i, double b)
+{
+	const double *o = q->osphere[i];
+	double dx = p->c[0] - o[0], dy = p->c[1] - o[1], dz = p->c[2] - o[2], r = (q->prad[p->j] + o[3] + b) * (1.0 + 1e-12);
+	return dx * dx + dy * dy + dz * dz > r * r;
 }
 
 /* The part's box (its sphere's or its exact box) grown by b on every side,
@@ -710,8 +730,10 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c
 /* The same with a finite max_clearance, by a box query of the eight-way
  * hierarchy instead of the walk nearest first: the obstacles whose boxes
  * meet the part's box grown by the bound b = min(best, bound) on every
- * side (its sphere's box, then its exact box once the sphere does not rule
- * out an obstacle), each tested by mkSq_Far and the rest as there. */
+ * side (its sphere's box; its exact box when b changes after the exact box
+ * was computed), each tested by mkSq_Far and mkSq_SpheresApart, by the
+ * exact box once the sphere does not rule out an obstacle, and the rest as
+ * there. */
 static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, double *best, double *bound,
 	mkPoseAnswer *out)
 {
@@ -719,8 +741,7 @@ static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec
 	mkSq_PartInit(q, j, R, c, &p);
 	mkSwWalk w;
 	float lo[3], hi[3];
-	double bq = *best < *bound ? *best : *bound;   /* the bound of the query box, with has_box */
-	int boxed = 0;
+	double bq = *best < *bound ? *best : *bound;   /* the bound of the query box */
 	mkSq_QueryBox(&p, bq, lo, hi);
 	mkSwWalk_Begin(&q->wide, &w, lo, hi);
 	mkSqLeft left;
@@ -728,41 +749,53 @@ static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec
 	int pos[MK_SQ_BATCH], cand[MK_SQ_BATCH];
 	for (;;) {
 		double b = *best < *bound ? *best : *bound;
-		if (b != bq || p.has_box != boxed) {
+		if (b != bq) {
 			bq = b;
-			boxed = p.has_box;
 			mkSq_QueryBox(&p, b, lo, hi);
 		}
 		int got = mkSwWalk_Next(&q->wide, &w, lo, hi, pos, MK_SQ_BATCH), n = 0;
 		if (got == 0) return mkSq_Resolve(q, &p, &left, best, out);
 		for (int m = 0; m < got; ++m) {
 			const mkSqBox *x = &q->wide.box[pos[m]];
-			if (mkSq_Far(&p, x, b)) continue;
+			int i = q->wide.order[pos[m]];
+			if (mkSq_Far(&p, x, b) || mkSq_SpheresApart(q, &p, i, b)) continue;
 			if (!p.has_box) {
 				mkSq_ExactBox(&p);
 				if (mkSq_Far(&p, x, b)) continue;
 			}
-			cand[n++] = q->wide.order[pos[m]];
+			cand[n++] = i;
 		}
 		if (n > 0 && mkSq_Narrow(q, &p, cand, n, best, bound, &left, out)) return 1;
 	}
+}
+
+/* The pose's answer from its rotation and position. */
+static void mkSq_Answer(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPoseAnswer *out)
+{
+	out->status = MK_POSE_FREE;
+	out->obstacle = out->part = -1;
+	out->clearance = q->opt.max_clearance;
+	out->pairs = 0;
+	if (q->nob == 0) return;
+	double best = q->opt.max_clearance, bound = INFINITY;
+	int box = isfinite(best);
+	for (int j = 0; j < q->parts; ++j)
+		if ((box ? mkSq_PartPoseBox : mkSq_PartPose)(q, j, R, c, &best, &bound, out)) return;
+	out->clearance = best;
 }
 
 mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnswer *out)
 {
 	mkMat3 R;
 	mkVec3 c;
-	out->status = MK_POSE_FREE;
-	out->obstacle = out->part = -1;
-	out->clearance = q->opt.max_clearance;
-	out->pairs = 0;
-	if (!mkSq_Pose(q, pose, &R, &c)) { out->status = MK_POSE_UNCERTAIN; out->clearance = NAN; return MK_ERR_ARGUMENT; }
-	if (q->nob == 0) return MK_OK;
-	double best = q->opt.max_clearance, bound = INFINITY;
-	int box = isfinite(best);
-	for (int j = 0; j < q->parts; ++j)
-		if ((box ? mkSq_PartPoseBox : mkSq_PartPose)(q, j, &R, c, &best, &bound, out)) return MK_OK;
-	out->clearance = best;
+	if (!mkSq_Pose(q, pose, &R, &c)) {
+		out->status = MK_POSE_UNCERTAIN;
+		out->obstacle = out->part = -1;
+		out->clearance = NAN;
+		out->pairs = 0;
+		return MK_ERR_ARGUMENT;
+	}
+	mkSq_Answer(q, &R, c, out);
 	return MK_OK;
 }
 
@@ -781,7 +814,20 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 	const mkSqJob *J = ctx;
 	int ps = mkSceneQuery_PoseSize(J->q);
 	long e = (task + 1) * MK_SQ_CHUNK < J->n ? (task + 1) * MK_SQ_CHUNK : J->n;
-	for (long k = task * MK_SQ_CHUNK; k < e; ++k) mkSceneQuery_Pose(J->q, J->poses + k * ps, &J->out[k]);
+	for (long k = task * MK_SQ_CHUNK; k < e; ++k) {
+		/* (mkSceneQuery_Run checked every pose with mkSq_PoseOk: finite values of magnitude at most 1e150
+		 * and a nonzero quaternion, whose rotation is then finite, as mkSq_Pose would find it) */
+		const double *p = J->poses + k * ps;
+		mkMat3 R;
+		mkVec3 c;
+		if (ps == 7) {
+			R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
+			c = mkVec3_Make(p[0], p[1], p[2]);
+		} else {
+			mkSq_Pose(J->q, p, &R, &c);
+		}
+		mkSq_Answer(J->q, &R, c, &J->out[k]);
+	}
 	return MK_OK;
 }
 
