@@ -16,7 +16,9 @@
  * the pose: walked nearest child first, pruning every child no nearer than
  * the best clearance found; with a finite max_clearance, by box queries
  * instead (every obstacle whose box comes within the cap of the part's,
- * in no order: the cap prunes as well as a best clearance would). Narrow
+ * in no order: the cap prunes as well as a best clearance would; an
+ * obstacle whose centre is farther from the part's than their two radii
+ * and the cap is set aside at once). Narrow
  * phase: the candidates, 8 at a time in the walk's order: quick
  * certificates first (a support-function bound along the centre line; a
  * common point of two smooth bodies on the centre segment, by their
