@@ -19,7 +19,8 @@
 #include "mink/collision.h"
 
 #define MK_SQ_ROUND 1e-12   /* rounding allowance of a pair's bound, times its size */
-#define MK_SQ_CHUNK 32      /* poses per pool task */
+#define MK_SQ_CHUNK 256     /* poses per pool task */
+#define MK_SQ_WAITING 16    /* poses of a task whose groups wait for one batch call (finite max_clearance) */
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 #define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
 #define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
@@ -613,52 +614,93 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
 	return 0;
 }
 
-/* The narrow phase of the candidate obstacles ids[0 .. n) in the
- * walk's order, against the bound b = min(best, bound): best the smallest
- * one-pair value, bound the smallest certified upper bound of a pair's
- * distance found (the pose's clearance is at most either). The quick
- * certificates (mkSqQuick_Pair) first, the batch on the pairs they leave
- * (clearance mode with delta = b, or status mode while b is infinite;
- * with clearance_rel, brackets that narrow, also for the pairs the quick
- * certificates found separated before any clearance was known); then, in
- * the walk's order, each pair not certainly at least b away (by the boxes)
- * is set aside when certified at least b away, is colliding when an
- * overlap is certified (mkSq_Contact for the batch's), takes the lower end
- * of its bracket (clearance_rel) or of the one-pair query's bracket (where
- * the batch asked it) as its value when that is positive, else it is left
- * to the one-pair query (mkSq_Leave: for the inner models only where the
- * batch asked it already) and its certified upper bound lowers bound.
- * Returns 1 when colliding. */
-static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *ids, int n, double *best, double *bound,
-	mkSqLeft *left, mkPoseAnswer *out)
-{
-	int i1[MK_SQ_BATCH], i2[MK_SQ_BATCH], quick[MK_SQ_BATCH], slot[MK_SQ_BATCH], nb = 0;
-	double b = fmin(*best, *bound), upper[MK_SQ_BATCH], lower[MK_SQ_BATCH], depth[MK_SQ_BATCH];
-	int known = isfinite(b);
+/* A group of candidate pairs of one part in the narrow phase: the
+ * obstacles, the quick certificates' answers and depths, the pairs left
+ * for the batch (slot: a candidate's place among them, -1 none) with the
+ * call's mode, and the batch's answers once it has run. */
+typedef struct mkSqGroup {
+	int n, ids[MK_SQ_BATCH], quick[MK_SQ_BATCH], slot[MK_SQ_BATCH];
+	double depth[MK_SQ_BATCH];
+	int nb, i1[MK_SQ_BATCH];  /* the batch's pairs: obstacle models (outer), against the part's outer model */
+	int known;                /* b was finite: clearance mode with delta (else status mode) */
+	double delta;
+	int ok;                   /* the batch ran (MK_OK or MK_ERR_CONVERGENCE) */
 	mkContact status[MK_SQ_BATCH];
+	double lower[MK_SQ_BATCH], upper[MK_SQ_BATCH];
 	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
-	double rel = q->opt.clearance_rel;
+} mkSqGroup;
+
+/* The narrow phase of the candidate obstacles ids[0 .. n) in the walk's
+ * order, against the bound b = min(best, bound): best the smallest one-pair
+ * value, bound the smallest certified upper bound of a pair's distance
+ * found (the pose's clearance is at most either). First the quick
+ * certificates (mkSqQuick_Pair) and the pairs they leave for the batch
+ * (mkSq_NarrowPrep; clearance mode with delta = b, or status mode while b
+ * is infinite; with clearance_rel, brackets that narrow, also for the pairs
+ * the quick certificates found separated before any clearance was known);
+ * the batch then runs on them (mkSq_NarrowBatch, or one call for the groups
+ * of many poses: mkSq_Flush). */
+static void mkSq_NarrowPrep(const mkSceneQuery *q, mkSqPart *p, const int *ids, int n, double best, double bound,
+	mkSqGroup *g)
+{
+	double b = fmin(best, bound), rel = q->opt.clearance_rel;
 	mkSq_Placed(p);
+	g->n = n;
+	g->nb = 0;
+	g->known = isfinite(b);
+	g->delta = g->known ? fmax(b, 0.0) : 0.0;
 	for (int m = 0; m < n; ++m) {
 		int i = ids[m];
-		depth[m] = 0.0;
-		quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
-			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, b, &depth[m]);
+		g->ids[m] = i;
+		g->depth[m] = 0.0;
+		g->quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
+			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, b, &g->depth[m]);
 		/* (separated with no clearance known yet: a bracket serves where it may be rel wide) */
-		int batch = quick[m] == 0 || (quick[m] == 3 && rel > 0.0);
-		slot[m] = batch ? nb : -1;
-		if (batch) { i1[nb] = 2 * i + 1; i2[nb++] = 0; }
+		int batch = g->quick[m] == 0 || (g->quick[m] == 3 && rel > 0.0);
+		g->slot[m] = batch ? g->nb : -1;
+		if (batch) g->i1[g->nb++] = 2 * i + 1;
 	}
-	mkBatchPairs3 pairs = {nb, q->obs, &p->outer, i1, i2};
-	mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .clear = clear, .path = path};
-	mkResult r = nb == 0 ? MK_OK : rel > 0.0 ? mkCollide3_BatchBracket(&pairs, rel, &bo, NULL)
-		: mkCollide3_Batch(&pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS, known ? fmax(b, 0.0) : 0.0, &bo, NULL);
-	int ok = r == MK_OK || r == MK_ERR_CONVERGENCE;
-	for (int m = 0; m < n; ++m) {
-		int i = ids[m], k = slot[m];
+}
+
+/* The batch call of pairs (the obstacles' outer models against parts)
+ * in the group's mode; returns whether it ran. */
+static int mkSq_BatchCall(const mkSceneQuery *q, const mkBatchPairs3 *pairs, int known, double delta, mkBatchOut3 *bo)
+{
+	double rel = q->opt.clearance_rel;
+	mkResult r = rel > 0.0 ? mkCollide3_BatchBracket(pairs, rel, bo, NULL)
+		: mkCollide3_Batch(pairs, known ? MK_BATCH_CLEARANCE : MK_BATCH_STATUS, delta, bo, NULL);
+	return r == MK_OK || r == MK_ERR_CONVERGENCE;
+}
+
+/* The group's batch on its own. */
+static void mkSq_NarrowBatch(const mkSceneQuery *q, const mkSqPart *p, mkSqGroup *g)
+{
+	int i2[MK_SQ_BATCH] = {0};
+	mkBatchPairs3 pairs = {g->nb, q->obs, &p->outer, g->i1, i2};
+	mkBatchOut3 bo = {.status = g->status, .lower = g->lower, .upper = g->upper, .clear = g->clear, .path = g->path};
+	g->ok = g->nb == 0 || mkSq_BatchCall(q, &pairs, g->known, g->delta, &bo);
+}
+
+/* The group's answers, in the walk's order: each pair not certainly at
+ * least b away (by the boxes) is set aside when certified at least b away,
+ * is colliding when an overlap is certified (mkSq_Contact for the batch's),
+ * takes the lower end of its bracket (clearance_rel) or of the one-pair
+ * query's bracket (where the batch asked it) as its value when that is
+ * positive, else it is left to the one-pair query (mkSq_Leave: for the
+ * inner models only where the batch asked it already) and its certified
+ * upper bound lowers bound. Returns 1 when colliding. */
+static int mkSq_NarrowFinish(const mkSceneQuery *q, mkSqPart *p, const mkSqGroup *g, double *best, double *bound,
+	mkSqLeft *left, mkPoseAnswer *out)
+{
+	double rel = q->opt.clearance_rel;
+	int ok = g->ok, known = g->known;
+	const double *lower = g->lower, *upper = g->upper;
+	const unsigned char *clear = g->clear, *path = g->path;
+	for (int m = 0; m < g->n; ++m) {
+		int i = g->ids[m], k = g->slot[m], quick = g->quick[m];
 		if (mkSq_Far(p, &q->obox[i], fmin(*best, *bound))) continue;
 		++out->pairs;
-		if (quick[m] == 1 || (k >= 0 && ok && known && rel == 0.0 && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
+		if (quick == 1 || (k >= 0 && ok && known && rel == 0.0 && path[k] == MK_PATH_SEPARATING && clear[k])) continue;
 		/* the outer models' certified lower bound where the one-pair query gave it (rounded down) */
 		double outer = NAN;
 		if (k >= 0 && ok && (path[k] == MK_PATH_ONE_PAIR || (rel > 0.0 && path[k] == MK_PATH_SEPARATING))) {
@@ -673,14 +715,24 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *ids, int n
 			if (path[k] != MK_PATH_ONE_PAIR || !isfinite(outer) || (p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH))
 				outer = NAN;
 		}
-		double v = -depth[m];
-		if (quick[m] == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
+		double v = -g->depth[m];
+		if (quick == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
 			return mkSq_Take(p, i, MK_POSE_COLLIDING, v, best, out);
 		int got = k >= 0 && ok;
 		if (got && upper[k] < *bound) *bound = upper[k];
 		if (mkSq_Leave(q, p, left, i, got && !isnan(lower[k]) ? lower[k] : -INFINITY, outer, best, out)) return 1;
 	}
 	return 0;
+}
+
+/* The three steps at once. Returns 1 when colliding. */
+static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *ids, int n, double *best, double *bound,
+	mkSqLeft *left, mkPoseAnswer *out)
+{
+	mkSqGroup g;
+	mkSq_NarrowPrep(q, p, ids, n, *best, *bound, &g);
+	mkSq_NarrowBatch(q, p, &g);
+	return mkSq_NarrowFinish(q, p, &g, best, bound, left, out);
 }
 
 /* Part j at the pose, tested by its sphere at first (mkSqPart). */
@@ -727,60 +779,125 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c
 	}
 }
 
-/* The same with a finite max_clearance, by a box query of the eight-way
- * hierarchy instead of the walk nearest first: the obstacles whose boxes
- * meet the part's box grown by the bound b = min(best, bound) on every
- * side (its sphere's box; its exact box when b changes after the exact box
- * was computed), each tested by mkSq_Far and mkSq_SpheresApart, by the
- * exact box once the sphere does not rule out an obstacle, and the rest as
- * there. */
-static int mkSq_PartPoseBox(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, double *best, double *bound,
-	mkPoseAnswer *out)
-{
+/* A pose with a finite max_clearance, walked part by part by box queries
+ * of the eight-way hierarchy instead of the walk nearest first: the
+ * obstacles whose boxes meet the part's box grown by the bound b =
+ * min(best, bound) on every side (its sphere's box; its exact box when b
+ * changes after the exact box was computed), each tested by mkSq_Far and
+ * mkSq_SpheresApart, by the exact box once the sphere does not rule out an
+ * obstacle, and the rest as in mkSq_PartPose. The pose stops where its
+ * group of candidates needs the batch (mkSq_Advance), so that the groups of
+ * many poses go to the batch in one call (mkSq_Flush); its state is
+ * self-contained but for p.R, which points at R. */
+typedef enum mkSqStep { MK_SQ_NEXT_PART, MK_SQ_WALK, MK_SQ_WAIT } mkSqStep;
+
+typedef struct mkSqPose {
+	mkMat3 R;
+	mkVec3 c;
+	double best, bound, bq;   /* bq: the bound of the query box */
+	mkPoseAnswer *out;
+	int j;                    /* the part walked (MK_SQ_WALK, MK_SQ_WAIT) or next */
+	mkSqStep step;
 	mkSqPart p;
-	mkSq_PartInit(q, j, R, c, &p);
 	mkSwWalk w;
 	float lo[3], hi[3];
-	double bq = *best < *bound ? *best : *bound;   /* the bound of the query box */
-	mkSq_QueryBox(&p, bq, lo, hi);
-	mkSwWalk_Begin(&q->wide, &w, lo, hi);
 	mkSqLeft left;
-	left.n = 0;
+	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
+} mkSqPose;
+
+/* The pose's state before its first part; 0 when there is nothing to walk
+ * (no obstacles: *out is then the answer). */
+static int mkSq_PoseBegin(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPoseAnswer *out, mkSqPose *s)
+{
+	out->status = MK_POSE_FREE;
+	out->obstacle = out->part = -1;
+	out->clearance = q->opt.max_clearance;
+	out->pairs = 0;
+	if (q->nob == 0) return 0;
+	s->R = *R;
+	s->c = c;
+	s->best = q->opt.max_clearance;
+	s->bound = INFINITY;
+	s->out = out;
+	s->j = 0;
+	s->step = MK_SQ_NEXT_PART;
+	return 1;
+}
+
+/* Run the pose on (after the awaited batch, in MK_SQ_WAIT) until it is
+ * answered (returns 1; *s->out is the answer) or a group of candidates
+ * waits for the batch (returns 0, step MK_SQ_WAIT). */
+static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
+{
+	mkSqPart *p = &s->p;
 	int pos[MK_SQ_BATCH], cand[MK_SQ_BATCH];
 	for (;;) {
-		double b = *best < *bound ? *best : *bound;
-		if (b != bq) {
-			bq = b;
-			mkSq_QueryBox(&p, b, lo, hi);
+		if (s->step == MK_SQ_WAIT) {
+			s->step = MK_SQ_WALK;
+			if (mkSq_NarrowFinish(q, p, &s->g, &s->best, &s->bound, &s->left, s->out)) return 1;
 		}
-		int got = mkSwWalk_Next(&q->wide, &w, lo, hi, pos, MK_SQ_BATCH), n = 0;
-		if (got == 0) return mkSq_Resolve(q, &p, &left, best, out);
+		if (s->step == MK_SQ_NEXT_PART) {
+			if (s->j == q->parts) {
+				s->out->clearance = s->best;
+				return 1;
+			}
+			mkSq_PartInit(q, s->j, &s->R, s->c, p);
+			s->bq = fmin(s->best, s->bound);
+			mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+			mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
+			s->left.n = 0;
+			s->step = MK_SQ_WALK;
+		}
+		double b = s->best < s->bound ? s->best : s->bound;
+		if (b != s->bq) {
+			s->bq = b;
+			mkSq_QueryBox(p, b, s->lo, s->hi);
+		}
+		int got = mkSwWalk_Next(&q->wide, &s->w, s->lo, s->hi, pos, MK_SQ_BATCH), n = 0;
+		if (got == 0) {
+			if (mkSq_Resolve(q, p, &s->left, &s->best, s->out)) return 1;
+			++s->j;
+			s->step = MK_SQ_NEXT_PART;
+			continue;
+		}
 		for (int m = 0; m < got; ++m) {
 			const mkSqBox *x = &q->wide.box[pos[m]];
 			int i = q->wide.order[pos[m]];
-			if (mkSq_Far(&p, x, b) || mkSq_SpheresApart(q, &p, i, b)) continue;
-			if (!p.has_box) {
-				mkSq_ExactBox(&p);
-				if (mkSq_Far(&p, x, b)) continue;
+			if (mkSq_Far(p, x, b) || mkSq_SpheresApart(q, p, i, b)) continue;
+			if (!p->has_box) {
+				mkSq_ExactBox(p);
+				if (mkSq_Far(p, x, b)) continue;
 			}
 			cand[n++] = i;
 		}
-		if (n > 0 && mkSq_Narrow(q, &p, cand, n, best, bound, &left, out)) return 1;
+		if (n == 0) continue;
+		mkSq_NarrowPrep(q, p, cand, n, s->best, s->bound, &s->g);
+		if (s->g.nb > 0) {
+			s->step = MK_SQ_WAIT;
+			return 0;
+		}
+		s->g.ok = 1;
+		if (mkSq_NarrowFinish(q, p, &s->g, &s->best, &s->bound, &s->left, s->out)) return 1;
 	}
 }
 
 /* The pose's answer from its rotation and position. */
 static void mkSq_Answer(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPoseAnswer *out)
 {
+	if (isfinite(q->opt.max_clearance)) {
+		mkSqPose s;
+		if (!mkSq_PoseBegin(q, R, c, out, &s)) return;
+		while (!mkSq_Advance(q, &s)) mkSq_NarrowBatch(q, &s.p, &s.g);
+		return;
+	}
 	out->status = MK_POSE_FREE;
 	out->obstacle = out->part = -1;
 	out->clearance = q->opt.max_clearance;
 	out->pairs = 0;
 	if (q->nob == 0) return;
 	double best = q->opt.max_clearance, bound = INFINITY;
-	int box = isfinite(best);
 	for (int j = 0; j < q->parts; ++j)
-		if ((box ? mkSq_PartPoseBox : mkSq_PartPose)(q, j, R, c, &best, &bound, out)) return;
+		if (mkSq_PartPose(q, j, R, c, &best, &bound, out)) return;
 	out->clearance = best;
 }
 
@@ -808,11 +925,66 @@ typedef struct mkSqJob {
 	mkPoseAnswer *out;
 } mkSqJob;
 
+/* The batch of the waiting poses pend[0 .. n): one call per mode and
+ * delta over all their groups (the pairs are independent: each pair's
+ * answer is the one it gets alone), the answers back into each group,
+ * each pose advanced again. Returns how many still wait (moved to the
+ * front). */
+static int mkSq_Flush(const mkSceneQuery *q, mkSqPose *pend, int n)
+{
+	mkBody3 parts[MK_SQ_WAITING];
+	int i1[MK_SQ_WAITING * MK_SQ_BATCH], i2[MK_SQ_WAITING * MK_SQ_BATCH], done[MK_SQ_WAITING] = {0};
+	mkContact status[MK_SQ_WAITING * MK_SQ_BATCH];
+	double lower[MK_SQ_WAITING * MK_SQ_BATCH], upper[MK_SQ_WAITING * MK_SQ_BATCH];
+	unsigned char clear[MK_SQ_WAITING * MK_SQ_BATCH], path[MK_SQ_WAITING * MK_SQ_BATCH];
+	for (int first = 0; first < n; ++first) {
+		if (done[first]) continue;
+		/* the waiting groups of first's mode and delta */
+		const mkSqGroup *f = &pend[first].g;
+		int np = 0, members[MK_SQ_WAITING], m = 0;
+		for (int k = first; k < n; ++k) {
+			const mkSqGroup *g = &pend[k].g;
+			if (done[k] || g->known != f->known || g->delta != f->delta) continue;
+			done[k] = 1;
+			members[m] = k;
+			parts[m] = pend[k].p.outer;
+			for (int e = 0; e < g->nb; ++e) { i1[np] = g->i1[e]; i2[np++] = m; }
+			++m;
+		}
+		mkBatchPairs3 pairs = {np, q->obs, parts, i1, i2};
+		mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .clear = clear, .path = path};
+		int ok = mkSq_BatchCall(q, &pairs, f->known, f->delta, &bo);
+		for (int e = 0, at = 0; e < m; ++e) {
+			mkSqGroup *g = &pend[members[e]].g;
+			g->ok = ok;
+			size_t nb = (size_t)g->nb;
+			memcpy(g->status, status + at, nb * sizeof *status);
+			memcpy(g->lower, lower + at, nb * sizeof *lower);
+			memcpy(g->upper, upper + at, nb * sizeof *upper);
+			memcpy(g->clear, clear + at, nb * sizeof *clear);
+			memcpy(g->path, path + at, nb * sizeof *path);
+			at += g->nb;
+		}
+	}
+	int left = 0;
+	for (int k = 0; k < n; ++k) {
+		if (mkSq_Advance(q, &pend[k])) continue;
+		if (left != k) {
+			pend[left] = pend[k];
+			pend[left].p.R = &pend[left].R;
+		}
+		++left;
+	}
+	return left;
+}
+
 static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 {
 	(void)w;
 	const mkSqJob *J = ctx;
-	int ps = mkSceneQuery_PoseSize(J->q);
+	const mkSceneQuery *q = J->q;
+	int ps = mkSceneQuery_PoseSize(q), box = isfinite(q->opt.max_clearance), waiting = 0;
+	mkSqPose *pend = box ? malloc(MK_SQ_WAITING * sizeof *pend) : NULL;
 	long e = (task + 1) * MK_SQ_CHUNK < J->n ? (task + 1) * MK_SQ_CHUNK : J->n;
 	for (long k = task * MK_SQ_CHUNK; k < e; ++k) {
 		/* (mkSceneQuery_Run checked every pose with mkSq_PoseOk: finite values of magnitude at most 1e150
@@ -824,10 +996,18 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 			R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
 			c = mkVec3_Make(p[0], p[1], p[2]);
 		} else {
-			mkSq_Pose(J->q, p, &R, &c);
+			mkSq_Pose(q, p, &R, &c);
 		}
-		mkSq_Answer(J->q, &R, c, &J->out[k]);
+		if (!pend) { /* the walk nearest first, or no memory for waiting poses: one pose at a time */
+			mkSq_Answer(q, &R, c, &J->out[k]);
+			continue;
+		}
+		mkSqPose *s = &pend[waiting];
+		if (!mkSq_PoseBegin(q, &R, c, &J->out[k], s) || mkSq_Advance(q, s)) continue;
+		for (++waiting; waiting == MK_SQ_WAITING;) waiting = mkSq_Flush(q, pend, waiting);
 	}
+	while (waiting > 0) waiting = mkSq_Flush(q, pend, waiting);
+	free(pend);
 	return MK_OK;
 }
 
