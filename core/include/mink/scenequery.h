@@ -23,7 +23,10 @@
  * certificates first (a support-function bound along the centre line; a
  * common point of two smooth bodies on the centre segment, by their
  * gauges), then mkCollide3_Batch on the rest (clearance mode, delta = the
- * clearance found so far; status mode while none is known): a pair
+ * clearance found so far; status mode while none is known; with a finite
+ * max_clearance, one call for the pairs of up to 16 poses of a task, each
+ * pose resumed from its pairs' answers, which are those each pair gets
+ * alone): a pair
  * certified at least that far is set aside, a pair whose overlap is
  * certified is colliding (for boxes and cylinders: the batch's status on
  * the inner models certifies it), and every other pair gets
