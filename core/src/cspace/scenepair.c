@@ -49,23 +49,55 @@ double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual)
 	return mkSq_Norm2(mkSq_Norm2(x1 / s.a, x2 / s.b, 2.0 / s.eps2), x3 / s.c, 2.0 / s.eps1);
 }
 
+static int mkSq_Ellipsoid(mkShape3 s) { return s.eps1 == 1.0 && s.eps2 == 1.0; }
+
+void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)
+{
+	double x1 = fabs(y.x), x2 = fabs(y.y), x3 = fabs(y.z);
+	if (dual) { x1 *= s.a; x2 *= s.b; x3 *= s.c; }
+	else { x1 /= s.a; x2 /= s.b; x3 /= s.c; }
+	double l2 = sqrt(x1 * x1 + x2 * x2 + x3 * x3), inf = fmax(x1, fmax(x2, x3)), l1 = x1 + x2 + x3;
+	int round = s.eps1 >= 1.0 && s.eps2 >= 1.0, boxy = s.eps1 <= 1.0 && s.eps2 <= 1.0;
+	/* support value: at least the octahedron's (inf) or the ellipsoid's, at most the box's (l1) or the
+	 * ellipsoid's; gauge: at least the box's (inf) or the ellipsoid's, at most the octahedron's (l1) */
+	*lo = (dual ? boxy : round) ? l2 : inf;
+	*hi = (dual ? round : boxy) ? l2 : l1;
+}
+
 int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, const mkMat3 *R, int smooth,
 	double best, double *depth)
 {
 	mkVec3 d = mkVec3_Sub(p->t, o->t);
-	double L = sqrt(mkVec3_Dot(d, d)), m = MK_SQ_QUICK * (L + ko->r + kp->r);
+	double L = sqrt(mkVec3_Dot(d, d)), size = L + ko->r + kp->r, m = MK_SQ_QUICK * size;
+	/* (the bounds without powers decide only what the norms would decide, by a margin beyond both's rounding) */
+	double e = 1e-13 * size;
 	if (L > 0.0) {
-		mkVec3 u = mkVec3_Scale(d, 1.0 / L);
-		double f = L - mkSq_ShapeNorm(o->shape, mkMat3_MulTVecInline(o->M, u), 1)
-			- mkSq_ShapeNorm(p->shape, mkMat3_MulTVecInline(p->M, u), 1);
-		if (f > best + m) return 1;
-		if (f > m) return isfinite(best) ? 0 : 3;
+		mkVec3 u = mkVec3_Scale(d, 1.0 / L), yo = mkMat3_MulTVecInline(o->M, u), yp = mkMat3_MulTVecInline(p->M, u);
+		double olo, ohi, plo, phi;
+		mkSq_NormBounds(o->shape, yo, 1, &olo, &ohi);
+		mkSq_NormBounds(p->shape, yp, 1, &plo, &phi);
+		double flo = L - ohi - phi, fhi = L - olo - plo;
+		if (flo > best + m + e) return 1;
+		if (flo > m + e && fhi <= best + m - e) return isfinite(best) ? 0 : 3;
+		if (fhi > m - e) {
+			/* (an ellipsoid's bounds are its norm, the same operations as mkSq_ShapeNorm's) */
+			double ho = mkSq_Ellipsoid(o->shape) ? ohi : mkSq_ShapeNorm(o->shape, yo, 1);
+			double f = L - ho - (mkSq_Ellipsoid(p->shape) ? phi : mkSq_ShapeNorm(p->shape, yp, 1));
+			if (f > best + m) return 1;
+			if (f > m) return isfinite(best) ? 0 : 3;
+		}
 	}
 	if (!smooth) return 0;
 	mkVec3 yp = mkMat3_MulVecInline(kp->Mi, mkMat3_MulTVecInline(*R, mkVec3_Neg(d)));   /* the obstacle's centre, in the part's frame */
 	mkVec3 yo = mkMat3_MulVecInline(ko->Mi, d);                                    /* the part's centre, in the obstacle's */
-	double gp = mkSq_ShapeNorm(p->shape, yp, 0) * (1.0 + kp->slack) + kp->slack;
-	double go = mkSq_ShapeNorm(o->shape, yo, 0) * (1.0 + ko->slack) + ko->slack;
+	/* the gauges' lower bounds first: no interval when even they leave none */
+	double plo, phi, olo, ohi;
+	mkSq_NormBounds(p->shape, yp, 0, &plo, &phi);
+	mkSq_NormBounds(o->shape, yo, 0, &olo, &ohi);
+	double gpl = plo * (1.0 + kp->slack) + kp->slack, gol = olo * (1.0 + ko->slack) + ko->slack;
+	if (fmax(0.0, 1.0 - 1.0 / gpl) >= fmin(1.0, 1.0 / gol) + 1e-12) return 0;
+	double gp = mkSq_Ellipsoid(p->shape) ? gpl : mkSq_ShapeNorm(p->shape, yp, 0) * (1.0 + kp->slack) + kp->slack;
+	double go = mkSq_Ellipsoid(o->shape) ? gol : mkSq_ShapeNorm(o->shape, yo, 0) * (1.0 + ko->slack) + ko->slack;
 	double lo = fmax(0.0, 1.0 - 1.0 / gp), hi = fmin(1.0, 1.0 / go);
 	if (!(lo < hi)) return 0;
 	double dlo = fmax(0.0, 1.0 - lo * go) * ko->rho + fmax(0.0, 1.0 - (1.0 - lo) * gp) * kp->rho;

@@ -38,6 +38,16 @@ mkSqQuick mkSqQuick_Make(mkBody3 b);
  * |(|(a y1, b y2)|_q2, c y3)|_q1 with q = 2 / (2 - eps) (dual 1). */
 double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual);
 
+/* Bounds lo <= mkSq_ShapeNorm(s, y, dual) <= hi without powers, by the
+ * shapes that hold or lie in the canonical shape: the box of its semi-axes
+ * holds it and the octahedron of their ends lies in it (exponents in
+ * (0, 2)); the ellipsoid of its semi-axes holds it when both exponents are
+ * at least 1 and lies in it when both are at most 1. An ellipsoid's bounds
+ * are its norm, by mkSq_ShapeNorm's operations. mkSqQuick_Pair decides by
+ * them first where they settle it by a margin of 1e-13 of the pair's size
+ * (its answers are those of the norms). */
+void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi);
+
 int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, const mkMat3 *R, int smooth,
 	double best, double *depth);
 
