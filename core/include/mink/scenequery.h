@@ -22,7 +22,7 @@
  * phase: the candidates, 8 at a time in the walk's order: quick
  * certificates first (a support-function bound along the centre line; a
  * common point of two smooth bodies on the centre segment, by their
- * gauges), then mkCollide3_Batch on the rest (clearance mode, delta = the
+ * gauges; a superquadric's norms bounded first without powers), then mkCollide3_Batch on the rest (clearance mode, delta = the
  * clearance found so far; status mode while none is known; with a finite
  * max_clearance, one call for the pairs of up to 16 poses of a task, each
  * pose resumed from its pairs' answers, which are those each pair gets
