@@ -805,14 +805,20 @@ typedef struct mkSqPose {
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
 } mkSqPose;
 
-/* The pose's state before its first part; 0 when there is nothing to walk
- * (no obstacles: *out is then the answer). */
-static int mkSq_PoseBegin(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPoseAnswer *out, mkSqPose *s)
+/* The answer before any pair: free, no obstacle nearer than max_clearance. */
+static void mkSq_AnswerInit(const mkSceneQuery *q, mkPoseAnswer *out)
 {
 	out->status = MK_POSE_FREE;
 	out->obstacle = out->part = -1;
 	out->clearance = q->opt.max_clearance;
 	out->pairs = 0;
+}
+
+/* The pose's state before its first part; 0 when there is nothing to walk
+ * (no obstacles: *out is then the answer). */
+static int mkSq_PoseBegin(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPoseAnswer *out, mkSqPose *s)
+{
+	mkSq_AnswerInit(q, out);
 	if (q->nob == 0) return 0;
 	s->R = *R;
 	s->c = c;
@@ -890,10 +896,7 @@ static void mkSq_Answer(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPose
 		while (!mkSq_Advance(q, &s)) mkSq_NarrowBatch(q, &s.p, &s.g);
 		return;
 	}
-	out->status = MK_POSE_FREE;
-	out->obstacle = out->part = -1;
-	out->clearance = q->opt.max_clearance;
-	out->pairs = 0;
+	mkSq_AnswerInit(q, out);
 	if (q->nob == 0) return;
 	double best = q->opt.max_clearance, bound = INFINITY;
 	for (int j = 0; j < q->parts; ++j)
@@ -906,10 +909,9 @@ mkResult mkSceneQuery_Pose(const mkSceneQuery *q, const double *pose, mkPoseAnsw
 	mkMat3 R;
 	mkVec3 c;
 	if (!mkSq_Pose(q, pose, &R, &c)) {
+		mkSq_AnswerInit(q, out);
 		out->status = MK_POSE_UNCERTAIN;
-		out->obstacle = out->part = -1;
 		out->clearance = NAN;
-		out->pairs = 0;
 		return MK_ERR_ARGUMENT;
 	}
 	mkSq_Answer(q, &R, c, out);
