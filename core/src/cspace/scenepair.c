@@ -36,10 +36,12 @@ static double mkSq_Norm2(double u, double v, double p)
 	return p == 2.0 ? m * sqrt(1.0 + (k / m) * (k / m)) : m * pow(1.0 + pow(k / m, p), 1.0 / p);
 }
 
+static int mkSq_Ellipsoid(mkShape3 s) { return s.eps1 == 1.0 && s.eps2 == 1.0; }
+
 double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual)
 {
 	double x1 = fabs(y.x), x2 = fabs(y.y), x3 = fabs(y.z);
-	if (s.eps1 == 1.0 && s.eps2 == 1.0) { /* an ellipsoid: the 2-norm (inf when it overflows: never certifies) */
+	if (mkSq_Ellipsoid(s)) { /* an ellipsoid: the 2-norm (inf when it overflows: never certifies) */
 		if (dual) { x1 *= s.a; x2 *= s.b; x3 *= s.c; }
 		else { x1 /= s.a; x2 /= s.b; x3 /= s.c; }
 		return sqrt(x1 * x1 + x2 * x2 + x3 * x3);
@@ -48,8 +50,6 @@ double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual)
 		return mkSq_Norm2(mkSq_Norm2(s.a * x1, s.b * x2, 2.0 / (2.0 - s.eps2)), s.c * x3, 2.0 / (2.0 - s.eps1));
 	return mkSq_Norm2(mkSq_Norm2(x1 / s.a, x2 / s.b, 2.0 / s.eps2), x3 / s.c, 2.0 / s.eps1);
 }
-
-static int mkSq_Ellipsoid(mkShape3 s) { return s.eps1 == 1.0 && s.eps2 == 1.0; }
 
 void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)
 {

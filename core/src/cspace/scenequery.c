@@ -242,33 +242,37 @@ double mkSq_PartRadius(const mkSceneQuery *q, int j) { return q->prad[j]; }
 
 /* ---- poses ---- */
 
-/* The pose's rotation and position; 0 when not finite or a zero quaternion. */
-static int mkSq_Pose(const mkSceneQuery *q, const double *p, mkMat3 *R, mkVec3 *c)
-{
-	int n = mkSceneQuery_PoseSize(q);
-	for (int k = 0; k < n; ++k)
-		if (!isfinite(p[k]) || fabs(p[k]) > 1e150) return 0;
-	if (q->dim == 2) {
-		double cs = cos(p[2]), sn = sin(p[2]);
-		mkMat3 r = {{{cs, -sn, 0.0}, {sn, cs, 0.0}, {0.0, 0.0, 1.0}}};
-		*R = r;
-		*c = mkVec3_Make(p[0], p[1], 0.0);
-		return 1;
-	}
-	*R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
-	*c = mkVec3_Make(p[0], p[1], p[2]);
-	return mkMat3_IsFiniteInline(*R);
-}
-
-/* What mkSq_Pose accepts, without the rotation: finite values of
- * magnitude at most 1e150 and, in 3D, a quaternion whose squared norm is
- * positive. */
+/* What a pose must be: finite values of magnitude at most 1e150 and, in
+ * 3D, a quaternion whose squared norm is positive (its rotation is then
+ * finite: the squared norm lies between the least subnormal and 4e300). */
 static int mkSq_PoseOk(const mkSceneQuery *q, const double *p)
 {
 	int n = mkSceneQuery_PoseSize(q);
 	for (int k = 0; k < n; ++k)
 		if (!isfinite(p[k]) || fabs(p[k]) > 1e150) return 0;
 	return q->dim == 2 || p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6] > 0.0;
+}
+
+/* The rotation and position of a pose mkSq_PoseOk accepts. */
+static void mkSq_Rotation(const mkSceneQuery *q, const double *p, mkMat3 *R, mkVec3 *c)
+{
+	if (q->dim == 2) {
+		double cs = cos(p[2]), sn = sin(p[2]);
+		mkMat3 r = {{{cs, -sn, 0.0}, {sn, cs, 0.0}, {0.0, 0.0, 1.0}}};
+		*R = r;
+		*c = mkVec3_Make(p[0], p[1], 0.0);
+		return;
+	}
+	*R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
+	*c = mkVec3_Make(p[0], p[1], p[2]);
+}
+
+/* The pose's rotation and position; 0 when mkSq_PoseOk refuses it. */
+static int mkSq_Pose(const mkSceneQuery *q, const double *p, mkMat3 *R, mkVec3 *c)
+{
+	if (!mkSq_PoseOk(q, p)) return 0;
+	mkSq_Rotation(q, p, R, c);
+	return mkMat3_IsFiniteInline(*R);
 }
 
 static mkBody3 mkSq_Place(mkBody3 b, const mkMat3 *R, mkVec3 c)
@@ -989,17 +993,9 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 	mkSqPose *pend = box ? malloc(MK_SQ_WAITING * sizeof *pend) : NULL;
 	long e = (task + 1) * MK_SQ_CHUNK < J->n ? (task + 1) * MK_SQ_CHUNK : J->n;
 	for (long k = task * MK_SQ_CHUNK; k < e; ++k) {
-		/* (mkSceneQuery_Run checked every pose with mkSq_PoseOk: finite values of magnitude at most 1e150
-		 * and a nonzero quaternion, whose rotation is then finite, as mkSq_Pose would find it) */
-		const double *p = J->poses + k * ps;
 		mkMat3 R;
 		mkVec3 c;
-		if (ps == 7) {
-			R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
-			c = mkVec3_Make(p[0], p[1], p[2]);
-		} else {
-			mkSq_Pose(q, p, &R, &c);
-		}
+		mkSq_Rotation(q, J->poses + k * ps, &R, &c);   /* (mkSceneQuery_Run checked every pose with mkSq_PoseOk) */
 		if (!pend) { /* the walk nearest first, or no memory for waiting poses: one pose at a time */
 			mkSq_Answer(q, &R, c, &J->out[k]);
 			continue;
