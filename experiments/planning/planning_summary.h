@@ -13,11 +13,6 @@
 /* The section, from <dir>/planning.csv and its sidecar. */
 void mkPlanning_Summary(mkDoc *d, const char *dir, mkTally *tally);
 
-/* The median time to a path of rows[0 .. n) of t (a run without a path,
- * success != 1, counts as infinite; even n: the mean of the middle two,
- * infinite when either is); NaN when n = 0. */
-double mkPlanning_Median(const mkTable *t, const long *rows, long n, int seconds_col, int success_col);
-
 /* Budget k of the MK_PLANNING_BUDGETS from MK_PLANNING_BUDGET_MIN to top
  * (log-spaced; the last is top). */
 double mkPlanning_Budget(int k, double top);

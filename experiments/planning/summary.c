@@ -37,13 +37,14 @@ static double mkPl_Time(const mkTable *t, const mkPlCols *c, long r)
 	return mkTable_Num(t, r, c->success) == 1 && s >= 0.0 ? s : INFINITY;
 }
 
-double mkPlanning_Median(const mkTable *t, const long *rows, long n, int seconds_col, int success_col)
+/* The median time to a path of rows[0 .. n) (a run without a path counts
+ * as infinite; even n: the mean of the middle two, infinite when either
+ * is); NaN when n = 0. */
+static double mkPl_Median(const mkTable *t, const mkPlCols *c, const long *rows, long n)
 {
-	if (n == 0) return NAN;
-	mkPlCols c = { 0, 0, 0, 0, success_col, seconds_col, 0 };
-	double *v = malloc((size_t)n * sizeof *v);
+	double *v = n > 0 ? malloc((size_t)n * sizeof *v) : NULL;
 	if (!v) return NAN;
-	for (long k = 0; k < n; ++k) v[k] = mkPl_Time(t, &c, rows[k]);
+	for (long k = 0; k < n; ++k) v[k] = mkPl_Time(t, c, rows[k]);
 	qsort(v, (size_t)n, sizeof *v, mkPl_Compare);
 	double m = n % 2 ? v[n / 2] : (isinf(v[n / 2]) ? INFINITY : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 	free(v);
@@ -154,8 +155,7 @@ void mkPlanning_Summary(mkDoc *d, const char *dir, mkTally *tally)
 		mkDoc_TableBegin(d, "Planning: success, median time, certification", 9, head);
 		for (int k = 0; k < n; ++k) {
 			char v[9][64];
-			double m0 = mkPlanning_Median(t, g[k].rows[0], g[k].n[0], c.seconds, c.success);
-			double m1 = mkPlanning_Median(t, g[k].rows[1], g[k].n[1], c.seconds, c.success);
+			double m0 = mkPl_Median(t, &c, g[k].rows[0], g[k].n[0]), m1 = mkPl_Median(t, &c, g[k].rows[1], g[k].n[1]);
 			long ok0 = mkPl_Within(t, &c, g[k].rows[0], g[k].n[0], INFINITY);
 			long ok1 = mkPl_Within(t, &c, g[k].rows[1], g[k].n[1], INFINITY);
 			snprintf(v[0], 64, "%.63s", g[k].scene);
