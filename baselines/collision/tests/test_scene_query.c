@@ -289,6 +289,86 @@ static void test_3d_onepair(void)
 	mkScene_Free(&s);
 }
 
+/* ---- 3D: boxes, the referee on their models ---- */
+
+/* Among rotated boxes, the query's answers hold for the boxes' models
+ * (what its certificates rest on: a free pair is certified on the outer
+ * model or a box that holds it, a colliding one on the inner models),
+ * checked by the referee: a free pose's clearance at most every pair's
+ * distance to the outer model (upper end of the referee's bracket), no free
+ * pose where an inner model overlaps a part; a colliding pose's pair's inner
+ * model overlapping with a signed distance at most the reported one (minus
+ * a certified depth), no colliding pose where every outer model is apart.
+ * Capped at 1e-9 (the yes/no question) and uncapped. */
+static void test_3d_boxes(void)
+{
+	enum { NOB = 30, NP = 400 };
+	static char text[NOB * 160 + 512];
+	size_t n = (size_t)snprintf(text, sizeof text, "dim 3\npart ellipsoid a=1 b=0.5 c=0.3\n"
+		"part superquadric a=0.5 b=0.3 c=0.3 eps1=0.6 eps2=1.3 quat=0.9,0.2,0.3,0 at=1.2,0.3,0.2\nobject clutter\n");
+	for (int i = 0; i < NOB; ++i)
+		n += (size_t)snprintf(text + n, sizeof text - n, "obstacle box size=%.5f,%.5f,%.5f quat=%.4f,%.4f,%.4f,%.4f "
+			"at=%.5f,%.5f,%.5f\n", uni(0.2, 3), uni(0.2, 3), uni(0.2, 3), uni(-1, 1), uni(-1, 1), uni(-1, 1), uni(-1, 1),
+			uni(-6, 6), uni(-6, 6), uni(-6, 6));
+	snprintf(text + n, sizeof text - n, "quaternions 1,0,0,0\n");
+	mkScene s;
+	char msg[512];
+	ENSURE(mkScene_Parse(text, &s, msg, sizeof msg) == MK_OK);
+	static double poses[NP * 7];
+	for (int k = 0; k < NP; ++k) {
+		for (int d = 0; d < 3; ++d) poses[7 * k + d] = uni(-6, 6);
+		for (int d = 3; d < 7; ++d) poses[7 * k + d] = uni(-1, 1);
+	}
+	const mkCollider *ref = mkColliders_Find("referee");
+	ENSURE(ref != NULL);
+	mkColliderScratch scratch;
+	double caps[2] = {1e-9, INFINITY};
+	int counts[3] = {0, 0, 0}, bad_free = 0, bad_coll = 0, bad_depth = 0;
+	for (int c = 0; c < 2; ++c) {
+		mkSceneQueryOptions o = mkSceneQueryOptions_Default();
+		o.max_clearance = caps[c];
+		mkSceneQuery *q = NULL;
+		ENSURE(mkSceneQuery_Create(&s, &o, &q, msg, sizeof msg) == MK_OK);
+		static mkPoseAnswer ans[NP];
+		run_threads(&s, o, poses, NP, ans);
+		for (int k = 0; k < NP; ++k) {
+			const mkPoseAnswer *a = &ans[k];
+			int inner_overlap = 0, outer_apart = 1;
+			double outer_hi = INFINITY;
+			for (int j = 0; j < s.part_count; ++j)
+				for (int i = 0; i < s.obstacle_count; ++i) {
+					mkBody3 part = placed_part(&s, poses + 7 * k, j), m[2];
+					ENSURE(mkSceneQuery_ObstacleBody(q, i, 0, &m[0]) && mkSceneQuery_ObstacleBody(q, i, 1, &m[1]));
+					mkCollision3 ci, co;
+					ENSURE(mkCollider_Run(ref, m[0], part, &scratch, &ci) == MK_OK);
+					ENSURE(mkCollider_Run(ref, m[1], part, &scratch, &co) == MK_OK);
+					double ti = 1e-9 * ci.scale, to = 1e-9 * co.scale;
+					double hi_i = isnan(ci.gap) ? ci.distance : ci.distance + ci.gap;
+					double hi_o = isnan(co.gap) ? co.distance : co.distance + co.gap;
+					if (ci.residual == 0.0 && hi_i < -ti) inner_overlap = 1;
+					if (!(co.distance > to)) outer_apart = 0;
+					outer_hi = fmin(outer_hi, hi_o + to);
+					if (a->status == MK_POSE_COLLIDING && i == a->obstacle && j == a->part
+						&& !(ci.residual == 0.0 && hi_i < -ti && ci.distance <= a->clearance + ti))
+						++bad_depth;
+				}
+			++counts[a->status];
+			if (a->status == MK_POSE_FREE && (inner_overlap || !(a->clearance <= outer_hi))) ++bad_free;
+			if (a->status == MK_POSE_COLLIDING && outer_apart) ++bad_coll;
+		}
+		mkSceneQuery_Destroy(q);
+	}
+	printf("3D boxes, %d obstacles, %d poses, capped at 1e-9 and uncapped: %d free, %d colliding, %d uncertain; "
+		"mismatches free %d colliding %d depth %d\n", NOB, NP, counts[0], counts[1], counts[2], bad_free, bad_coll,
+		bad_depth);
+	ENSURE(bad_free == 0);
+	ENSURE(bad_coll == 0);
+	ENSURE(bad_depth == 0);
+	ENSURE(counts[MK_POSE_FREE] > 100 && counts[MK_POSE_COLLIDING] > 100);
+	ENSURE(counts[MK_POSE_UNCERTAIN] <= 4);
+	mkScene_Free(&s);
+}
+
 /* ---- 2D: boxes among smooth bodies, textbook support functions ---- */
 
 static double ref_h2(const mkSceneBody *b, mkMat2 M, mkVec2 u)
@@ -379,5 +459,6 @@ int main(void)
 	test_3d();
 	test_2d();
 	test_3d_onepair();
+	test_3d_boxes();
 	return mk_summary("test_scene_query");
 }

@@ -64,44 +64,135 @@ void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)
 	*hi = (dual ? round : boxy) ? l2 : l1;
 }
 
-int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, const mkMat3 *R, int smooth,
-	double best, double *depth)
+/* Lower bounds of the distance along u (unit) between bodies b and x
+ * whose centres are d apart (from b's to x's): u.d - h_b(u) - h_x(u), by
+ * the support values' upper bounds (mkSq_NormBounds, no powers). */
+static double mkSq_AlongHi(const mkBody3 *b, const mkBody3 *x, mkVec3 u, mkVec3 d)
 {
-	mkVec3 d = mkVec3_Sub(p->t, o->t);
-	double L = sqrt(mkVec3_Dot(d, d)), size = L + ko->r + kp->r, m = MK_SQ_QUICK * size;
+	double blo, bhi, xlo, xhi;
+	mkSq_NormBounds(b->shape, mkMat3_MulTVecInline(b->M, u), 1, &blo, &bhi);
+	mkSq_NormBounds(x->shape, mkMat3_MulTVecInline(x->M, u), 1, &xlo, &xhi);
+	return mkVec3_Dot(u, d) - bhi - xhi;
+}
+
+/* The lower bound of the distance between a body b whose exponents are at
+ * most 1 and body x along the direction from the box of b's semi-axes
+ * (which holds b) to x's centre, y in b's canonical frame (its nearest point
+ * in that frame); -inf when y lies in the box. */
+static double mkSq_BoxDirection(const mkBody3 *b, const mkBody3 *x, mkVec3 y, mkVec3 d)
+{
+	mkShape3 s = b->shape;
+	mkVec3 g = {y.x - fmax(-s.a, fmin(s.a, y.x)), y.y - fmax(-s.b, fmin(s.b, y.y)), y.z - fmax(-s.c, fmin(s.c, y.z))};
+	mkVec3 w = mkMat3_MulVecInline(b->M, g);
+	double n = sqrt(mkVec3_Dot(w, w));
+	if (!(n > 0.0) || !isfinite(n)) return -INFINITY;
+	return mkSq_AlongHi(b, x, mkVec3_Scale(w, 1.0 / n), d);
+}
+
+static int mkSq_Boxy(mkShape3 s) { return s.eps1 <= 1.0 && s.eps2 <= 1.0 && !mkSq_Ellipsoid(s); }
+
+/* The gauge of a body's model at the point x - its centre, y in its
+ * canonical frame, rounded up by the slack. */
+static double mkSq_Gauge(mkShape3 s, const mkSqQuick *k, mkVec3 y)
+{
+	return mkSq_ShapeNorm(s, y, 0) * (1.0 + k->slack) + k->slack;
+}
+
+double mkSqQuick_PointDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 x)
+{
+	if (!isfinite(x.x + x.y + x.z)) return 0.0;
+	double go = mkSq_Gauge(o->inner->shape, o->kinner, mkMat3_MulVecInline(o->kinner->Mi, mkVec3_Sub(x, o->inner->t)));
+	if (!(go < 1.0)) return 0.0;
+	mkVec3 yp = mkMat3_MulVecInline(p->kinner->Mi, mkMat3_MulTVecInline(*R, mkVec3_Sub(x, p->inner->t)));
+	double gp = mkSq_Gauge(p->inner->shape, p->kinner, yp);
+	return gp < 1.0 ? (1.0 - go) * o->kinner->rho + (1.0 - gp) * p->kinner->rho : 0.0;
+}
+
+/* 1 when mkSq_BoxDirection of a box-like body of the pair exceeds lim. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int mkSq_BoxApart(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 d, double lim)
+{
+	const mkBody3 *ob = o->outer, *pb = p->outer;
+	mkVec3 back = mkVec3_Neg(d);
+	if (mkSq_Boxy(ob->shape) && mkSq_BoxDirection(ob, pb, mkMat3_MulVecInline(o->kouter->Mi, d), d) > lim) return 1;
+	return mkSq_Boxy(pb->shape)
+		&& mkSq_BoxDirection(pb, ob, mkMat3_MulVecInline(p->kouter->Mi, mkMat3_MulTVecInline(*R, back)), back) > lim;
+}
+
+/* The depth certified by the best point of the centre segment of the
+ * inner models (0 when none is inside both). */
+static double mkSq_SegmentDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R)
+{
+	const mkSqQuick *ko = o->kinner, *kp = p->kinner;
+	mkShape3 os = o->inner->shape, ps = p->inner->shape;
+	mkVec3 d = mkVec3_Sub(p->inner->t, o->inner->t);
+	mkVec3 yp = mkMat3_MulVecInline(kp->Mi, mkMat3_MulTVecInline(*R, mkVec3_Neg(d)));   /* the obstacle's centre, in the part's frame */
+	mkVec3 yo = mkMat3_MulVecInline(ko->Mi, d);                                    /* the part's centre, in the obstacle's */
+	/* the gauges' lower bounds first: no interval when even they leave none */
+	double plo, phi, olo, ohi;
+	mkSq_NormBounds(ps, yp, 0, &plo, &phi);
+	mkSq_NormBounds(os, yo, 0, &olo, &ohi);
+	double gpl = plo * (1.0 + kp->slack) + kp->slack, gol = olo * (1.0 + ko->slack) + ko->slack;
+	if (fmax(0.0, 1.0 - 1.0 / gpl) >= fmin(1.0, 1.0 / gol) + 1e-12) return 0.0;
+	double gp = mkSq_Ellipsoid(ps) ? gpl : mkSq_Gauge(ps, kp, yp);
+	double go = mkSq_Ellipsoid(os) ? gol : mkSq_Gauge(os, ko, yo);
+	double lo = fmax(0.0, 1.0 - 1.0 / gp), hi = fmin(1.0, 1.0 / go);
+	if (!(lo < hi)) return 0.0;
+	double dlo = fmax(0.0, 1.0 - lo * go) * ko->rho + fmax(0.0, 1.0 - (1.0 - lo) * gp) * kp->rho;
+	double dhi = fmax(0.0, 1.0 - hi * go) * ko->rho + fmax(0.0, 1.0 - (1.0 - hi) * gp) * kp->rho;
+	return fmax(dlo, dhi);
+}
+
+/* The depth certified by a point past a box-like obstacle's face: q, the
+ * point of the box of the inner model's semi-axes nearest the part's centre
+ * c in the obstacle's frame, and x on the ray from c through q halfway
+ * between q and the part's boundary (the part's gauge is linear along it),
+ * when q lies inside the part (0 otherwise, or when c lies in the box). */
+static double mkSq_FaceDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R)
+{
+	const mkBody3 *ob = o->inner, *pb = p->inner;
+	mkShape3 s = ob->shape;
+	mkVec3 y = mkMat3_MulVecInline(o->kinner->Mi, mkVec3_Sub(pb->t, ob->t));
+	mkVec3 c = {fmax(-s.a, fmin(s.a, y.x)), fmax(-s.b, fmin(s.b, y.y)), fmax(-s.c, fmin(s.c, y.z))};
+	if (c.x == y.x && c.y == y.y && c.z == y.z) return 0.0;
+	mkVec3 v = mkVec3_Sub(mkVec3_Add(ob->t, mkMat3_MulVecInline(ob->M, c)), pb->t);   /* q - c */
+	double g = mkSq_Gauge(pb->shape, p->kinner, mkMat3_MulVecInline(p->kinner->Mi, mkMat3_MulTVecInline(*R, v)));
+	if (!(g < 1.0) || !(g > 0.0)) return 0.0;
+	return mkSqQuick_PointDepth(o, p, R, mkVec3_Add(pb->t, mkVec3_Scale(v, 0.5 * (1.0 + 1.0 / g))));
+}
+
+int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, double best, double *depth)
+{
+	const mkBody3 *ob = o->outer, *pb = p->outer;
+	mkVec3 d = mkVec3_Sub(pb->t, ob->t);
+	double L = sqrt(mkVec3_Dot(d, d)), size = L + o->kouter->r + p->kouter->r, m = MK_SQ_QUICK * size;
 	/* (the bounds without powers decide only what the norms would decide, by a margin beyond both's rounding) */
 	double e = 1e-13 * size;
 	if (L > 0.0) {
-		mkVec3 u = mkVec3_Scale(d, 1.0 / L), yo = mkMat3_MulTVecInline(o->M, u), yp = mkMat3_MulTVecInline(p->M, u);
+		mkVec3 u = mkVec3_Scale(d, 1.0 / L), yo = mkMat3_MulTVecInline(ob->M, u), yp = mkMat3_MulTVecInline(pb->M, u);
 		double olo, ohi, plo, phi;
-		mkSq_NormBounds(o->shape, yo, 1, &olo, &ohi);
-		mkSq_NormBounds(p->shape, yp, 1, &plo, &phi);
+		mkSq_NormBounds(ob->shape, yo, 1, &olo, &ohi);
+		mkSq_NormBounds(pb->shape, yp, 1, &plo, &phi);
 		double flo = L - ohi - phi, fhi = L - olo - plo;
 		if (flo > best + m + e) return 1;
 		if (flo > m + e && fhi <= best + m - e) return isfinite(best) ? 0 : 3;
 		if (fhi > m - e) {
 			/* (an ellipsoid's bounds are its norm, the same operations as mkSq_ShapeNorm's) */
-			double ho = mkSq_Ellipsoid(o->shape) ? ohi : mkSq_ShapeNorm(o->shape, yo, 1);
-			double f = L - ho - (mkSq_Ellipsoid(p->shape) ? phi : mkSq_ShapeNorm(p->shape, yp, 1));
+			double ho = mkSq_Ellipsoid(ob->shape) ? ohi : mkSq_ShapeNorm(ob->shape, yo, 1);
+			double f = L - ho - (mkSq_Ellipsoid(pb->shape) ? phi : mkSq_ShapeNorm(pb->shape, yp, 1));
 			if (f > best + m) return 1;
 			if (f > m) return isfinite(best) ? 0 : 3;
 		}
 	}
-	if (!smooth) return 0;
-	mkVec3 yp = mkMat3_MulVecInline(kp->Mi, mkMat3_MulTVecInline(*R, mkVec3_Neg(d)));   /* the obstacle's centre, in the part's frame */
-	mkVec3 yo = mkMat3_MulVecInline(ko->Mi, d);                                    /* the part's centre, in the obstacle's */
-	/* the gauges' lower bounds first: no interval when even they leave none */
-	double plo, phi, olo, ohi;
-	mkSq_NormBounds(p->shape, yp, 0, &plo, &phi);
-	mkSq_NormBounds(o->shape, yo, 0, &olo, &ohi);
-	double gpl = plo * (1.0 + kp->slack) + kp->slack, gol = olo * (1.0 + ko->slack) + ko->slack;
-	if (fmax(0.0, 1.0 - 1.0 / gpl) >= fmin(1.0, 1.0 / gol) + 1e-12) return 0;
-	double gp = mkSq_Ellipsoid(p->shape) ? gpl : mkSq_ShapeNorm(p->shape, yp, 0) * (1.0 + kp->slack) + kp->slack;
-	double go = mkSq_Ellipsoid(o->shape) ? gol : mkSq_ShapeNorm(o->shape, yo, 0) * (1.0 + ko->slack) + ko->slack;
-	double lo = fmax(0.0, 1.0 - 1.0 / gp), hi = fmin(1.0, 1.0 / go);
-	if (!(lo < hi)) return 0;
-	double dlo = fmax(0.0, 1.0 - lo * go) * ko->rho + fmax(0.0, 1.0 - (1.0 - lo) * gp) * kp->rho;
-	double dhi = fmax(0.0, 1.0 - hi * go) * ko->rho + fmax(0.0, 1.0 - (1.0 - hi) * gp) * kp->rho;
-	*depth = fmax(dlo, dhi);
-	return *depth > m ? 2 : 0;
+	/* a box-like body: the direction from the box of its semi-axes to the other's centre */
+	if (isfinite(best) && (mkSq_Boxy(ob->shape) || mkSq_Boxy(pb->shape)) && mkSq_BoxApart(o, p, R, d, best + m + e))
+		return 1;
+	/* the overlap, of the inner models (the bodies themselves when smooth) */
+	double dep = mkSq_SegmentDepth(o, p, R);
+	if (!(dep > m) && mkSq_Boxy(o->inner->shape)) dep = fmax(dep, mkSq_FaceDepth(o, p, R));
+	*depth = dep;
+	return dep > m ? 2 : 0;
 }
+

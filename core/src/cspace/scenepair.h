@@ -1,15 +1,21 @@
 /* scenepair.h - the scene query's quick certificates of a pair of
  * superquadric bodies, before the batch (internal to libmink_cspace).
  *
- * mkSqQuick_Pair(o, ko, p, kp, R, smooth, best, &depth), margin m = 4e-12
- * of the pair's size (|d| + r_O + r_P, as mkCollide3_PairSize):
+ * mkSqQuick_Pair(o, p, R, best, &depth), o and p the pair's models (an
+ * obstacle's and a part's), margin m = 4e-12 of the pair's size (|d| + r_O
+ * + r_P, as mkCollide3_PairSize), of the outer models:
  *  - f(u) = |d| - h_O(u) - h_P(u) at u = d / |d|, d from o's centre to
  *    p's, is a lower bound of the distance. Returns 1 when f(u) > best + m
  *    (best finite: the pair is certainly at least best away), 3 when
  *    f(u) > m and best is infinite (separated; the exact distance is
  *    wanted), 0 when m < f(u) <= best + m (left to the batch);
- *  - smooth != 0 (the bodies are the declared shapes): returns 2 when the
- *    bodies overlap for certain. A point x of the centre segment inside
+ *  - best finite, a body whose exponents are at most 1 (box-like, not an
+ *    ellipsoid): f(u) along u from the box of its semi-axes (which holds
+ *    it) to the other's centre, by the support values' upper bounds
+ *    (mkSq_NormBounds); returns 1 when f(u) > best + m (+ 1e-13 of the
+ *    size);
+ *  - returns 2 when the inner models (the bodies themselves where smooth)
+ *    overlap for certain. A point x of the centre segment inside
  *    both, by their gauges g_O, g_P < 1, puts balls of radii (1 - g) rho
  *    about x inside each, so the depth is at least their sum (> m, in
  *    depth). The gauges are linear along the segment (each is homogeneous
@@ -17,7 +23,8 @@
  *    g_P(c_O) at x_t = c_O + t d, so the best x is an end of the interval
  *    of t where both are below 1 (the gauges rounded up by the slack);
  *  - 0 otherwise.
- * p is R M_P placed: its gauge is read through kp (made from M_P) and R^T. */
+ * The part's models are R M_P placed: their gauges are read through the
+ * quick data made from M_P and R^T. */
 #ifndef MINK_CSPACE_SCENEPAIR_H
 #define MINK_CSPACE_SCENEPAIR_H
 
@@ -48,7 +55,17 @@ double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual);
  * (its answers are those of the norms). */
 void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi);
 
-int mkSqQuick_Pair(const mkBody3 *o, const mkSqQuick *ko, const mkBody3 *p, const mkSqQuick *kp, const mkMat3 *R, int smooth,
-	double best, double *depth);
+/* A body's two models, placed, with their quick data. */
+typedef struct mkSqModels {
+	const mkBody3 *outer, *inner;
+	const mkSqQuick *kouter, *kinner;
+} mkSqModels;
+
+int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, double best, double *depth);
+
+/* A lower bound of the depth of the inner models' overlap by the point x
+ * (world frame): the balls of radii (1 - g) rho about x inside each (as
+ * mkSqQuick_Pair's), 0 when x is not inside both by their gauges. */
+double mkSqQuick_PointDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 x);
 
 #endif

@@ -38,7 +38,7 @@ struct mkSceneQuery {
 	double *reach;     /* part j's outer model lies within reach[j] of its centre */
 	double *prad;      /* part j's outer model's mkSq_BodyRadius (the motion checks') */
 	double (*osphere)[4];  /* obstacle i's outer model's centre and mkSq_BodyRadius */
-	mkSqQuick *oquick, *pquick;   /* the outer models' data for the quick certificates */
+	mkSqQuick *oquick, *pquick;   /* [i * 2 + bound]: the models' data for the quick certificates */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 };
 
@@ -178,8 +178,8 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
 	q->prad = malloc((size_t)q->parts * sizeof *q->prad);
 	q->osphere = malloc(nb * sizeof *q->osphere);
-	q->oquick = malloc(nb * sizeof *q->oquick);
-	q->pquick = malloc((size_t)q->parts * sizeof *q->pquick);
+	q->oquick = malloc(2 * nb * sizeof *q->oquick);
+	q->pquick = malloc(2 * (size_t)q->parts * sizeof *q->pquick);
 	mkResult r = MK_OK;
 	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->osphere || !q->oquick || !q->pquick)
 		r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
@@ -197,11 +197,11 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	for (int j = 0; j < q->parts && r == MK_OK; ++j) {
 		q->reach[j] = mkSq_Reach(q, j);
 		q->prad[j] = mkSq_BodyRadius(q->part[2 * j + 1], q->dim);
-		q->pquick[j] = mkSqQuick_Make(q->part[2 * j + 1]);
+		for (int k = 0; k < 2; ++k) q->pquick[2 * j + k] = mkSqQuick_Make(q->part[2 * j + k]);
 	}
 	for (int i = 0; i < q->nob && r == MK_OK; ++i) {
 		const mkBody3 *o = &q->obs[2 * i + 1];
-		q->oquick[i] = mkSqQuick_Make(*o);
+		for (int k = 0; k < 2; ++k) q->oquick[2 * i + k] = mkSqQuick_Make(q->obs[2 * i + k]);
 		q->osphere[i][0] = o->t.x;
 		q->osphere[i][1] = o->t.y;
 		q->osphere[i][2] = o->t.z;
@@ -536,13 +536,21 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 	return n;
 }
 
-/* A pair whose outer models the batch certified to overlap: colliding when
- * the inner models overlap for certain (the same bodies for two smooth
- * ones; else the batch's status on the inner models), *value then minus the
- * certified depth. 0 when the one-pair query must decide. */
-static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double upper, double *value)
+/* A pair whose outer models the batch certified to overlap at the point
+ * x: colliding when the inner models overlap for certain (the same bodies
+ * for two smooth ones; else x inside both by their gauges, or the batch's
+ * status on the inner models), *value then minus the certified depth. 0
+ * when the one-pair query must decide. */
+static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double upper, mkVec3 x, double *value)
 {
 	if (p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH) { *value = upper; return 1; }
+	mkSqModels om = {&q->obs[2 * i + 1], &q->obs[2 * i], &q->oquick[2 * i + 1], &q->oquick[2 * i]};
+	mkSqModels pm = {&p->outer, &p->inner, &q->pquick[2 * p->j + 1], &q->pquick[2 * p->j]};
+	double depth = mkSqQuick_PointDepth(&om, &pm, p->R, x);
+	if (depth > MK_BATCH_MARGIN * mkCollide3_PairSize(q->obs[2 * i], p->inner)) {
+		*value = -depth;
+		return 1;
+	}
 	int i1 = 2 * i, i2 = 0;
 	mkContact st;
 	unsigned char path;
@@ -614,7 +622,7 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
 	l->i[at] = i;
 	l->lower[at] = lo;
 	l->outer[at] = outer;
-	l->margin[at] = 4e-12 * (sqrt(mkVec3_Dot(d, d)) + q->oquick[i].r + q->pquick[p->j].r);
+	l->margin[at] = 4e-12 * (sqrt(mkVec3_Dot(d, d)) + q->oquick[2 * i + 1].r + q->pquick[2 * p->j + 1].r);
 	return 0;
 }
 
@@ -631,6 +639,7 @@ typedef struct mkSqGroup {
 	int ok;                   /* the batch ran (MK_OK or MK_ERR_CONVERGENCE) */
 	mkContact status[MK_SQ_BATCH];
 	double lower[MK_SQ_BATCH], upper[MK_SQ_BATCH];
+	mkVec3 point[MK_SQ_BATCH];   /* the batch's witness p1 (an overlap's point) */
 	unsigned char clear[MK_SQ_BATCH], path[MK_SQ_BATCH];
 } mkSqGroup;
 
@@ -649,6 +658,7 @@ static void mkSq_NarrowPrep(const mkSceneQuery *q, mkSqPart *p, const int *ids, 
 {
 	double b = fmin(best, bound), rel = q->opt.clearance_rel;
 	mkSq_Placed(p);
+	mkSqModels pm = {&p->outer, &p->inner, &q->pquick[2 * p->j + 1], &q->pquick[2 * p->j]};
 	g->n = n;
 	g->nb = 0;
 	g->known = isfinite(b);
@@ -657,8 +667,8 @@ static void mkSq_NarrowPrep(const mkSceneQuery *q, mkSqPart *p, const int *ids, 
 		int i = ids[m];
 		g->ids[m] = i;
 		g->depth[m] = 0.0;
-		g->quick[m] = mkSqQuick_Pair(&q->obs[2 * i + 1], &q->oquick[i], &p->outer, &q->pquick[p->j], p->R,
-			p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH, b, &g->depth[m]);
+		mkSqModels o = {&q->obs[2 * i + 1], &q->obs[2 * i], &q->oquick[2 * i + 1], &q->oquick[2 * i]};
+		g->quick[m] = mkSqQuick_Pair(&o, &pm, p->R, b, &g->depth[m]);
 		/* (separated with no clearance known yet: a bracket serves where it may be rel wide) */
 		int batch = g->quick[m] == 0 || (g->quick[m] == 3 && rel > 0.0);
 		g->slot[m] = batch ? g->nb : -1;
@@ -681,7 +691,8 @@ static void mkSq_NarrowBatch(const mkSceneQuery *q, const mkSqPart *p, mkSqGroup
 {
 	int i2[MK_SQ_BATCH] = {0};
 	mkBatchPairs3 pairs = {g->nb, q->obs, &p->outer, g->i1, i2};
-	mkBatchOut3 bo = {.status = g->status, .lower = g->lower, .upper = g->upper, .clear = g->clear, .path = g->path};
+	mkBatchOut3 bo = {.status = g->status, .lower = g->lower, .upper = g->upper, .p1 = g->point, .clear = g->clear,
+		.path = g->path};
 	g->ok = g->nb == 0 || mkSq_BatchCall(q, &pairs, g->known, g->delta, &bo);
 }
 
@@ -720,7 +731,7 @@ static int mkSq_NarrowFinish(const mkSceneQuery *q, mkSqPart *p, const mkSqGroup
 				outer = NAN;
 		}
 		double v = -g->depth[m];
-		if (quick == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], &v)))
+		if (quick == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], g->point[k], &v)))
 			return mkSq_Take(p, i, MK_POSE_COLLIDING, v, best, out);
 		int got = k >= 0 && ok;
 		if (got && upper[k] < *bound) *bound = upper[k];
@@ -942,6 +953,7 @@ static int mkSq_Flush(const mkSceneQuery *q, mkSqPose *pend, int n)
 	int i1[MK_SQ_WAITING * MK_SQ_BATCH], i2[MK_SQ_WAITING * MK_SQ_BATCH], done[MK_SQ_WAITING] = {0};
 	mkContact status[MK_SQ_WAITING * MK_SQ_BATCH];
 	double lower[MK_SQ_WAITING * MK_SQ_BATCH], upper[MK_SQ_WAITING * MK_SQ_BATCH];
+	mkVec3 point[MK_SQ_WAITING * MK_SQ_BATCH];
 	unsigned char clear[MK_SQ_WAITING * MK_SQ_BATCH], path[MK_SQ_WAITING * MK_SQ_BATCH];
 	for (int first = 0; first < n; ++first) {
 		if (done[first]) continue;
@@ -958,7 +970,7 @@ static int mkSq_Flush(const mkSceneQuery *q, mkSqPose *pend, int n)
 			++m;
 		}
 		mkBatchPairs3 pairs = {np, q->obs, parts, i1, i2};
-		mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .clear = clear, .path = path};
+		mkBatchOut3 bo = {.status = status, .lower = lower, .upper = upper, .p1 = point, .clear = clear, .path = path};
 		int ok = mkSq_BatchCall(q, &pairs, f->known, f->delta, &bo);
 		for (int e = 0, at = 0; e < m; ++e) {
 			mkSqGroup *g = &pend[members[e]].g;
@@ -967,6 +979,7 @@ static int mkSq_Flush(const mkSceneQuery *q, mkSqPose *pend, int n)
 			memcpy(g->status, status + at, nb * sizeof *status);
 			memcpy(g->lower, lower + at, nb * sizeof *lower);
 			memcpy(g->upper, upper + at, nb * sizeof *upper);
+			memcpy(g->point, point + at, nb * sizeof *point);
 			memcpy(g->clear, clear + at, nb * sizeof *clear);
 			memcpy(g->path, path + at, nb * sizeof *path);
 			at += g->nb;
