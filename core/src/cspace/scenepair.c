@@ -62,6 +62,13 @@ void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)
 	 * ellipsoid's; gauge: at least the box's (inf) or the ellipsoid's, at most the octahedron's (l1) */
 	*lo = (dual ? boxy : round) ? l2 : inf;
 	*hi = (dual ? round : boxy) ? l2 : l1;
+	if (!boxy || mkSq_Ellipsoid(s)) return;
+	/* box-like: by Hoelder per level, |(u, v)|_p <= 2^(1/p) max(u, v) and |(u, v)|_q >= 2^(1/q - 1) (u + v),
+	 * so the gauge is at most 2^((eps1 + eps2) / 2) inf and the support value at least 2^(-(eps1 + eps2) / 2) l1
+	 * (each rounded outwards) */
+	double k = exp2(0.5 * (s.eps1 + s.eps2));
+	if (dual) *lo = fmax(*lo, l1 / k * (1.0 - 1e-15));
+	else *hi = fmin(*hi, inf * k * (1.0 + 1e-15));
 }
 
 /* Lower bounds of the distance along u (unit) between bodies b and x
@@ -95,7 +102,10 @@ static int mkSq_Boxy(mkShape3 s) { return s.eps1 <= 1.0 && s.eps2 <= 1.0 && !mkS
  * canonical frame, rounded up by the slack. */
 static double mkSq_Gauge(mkShape3 s, const mkSqQuick *k, mkVec3 y)
 {
-	return mkSq_ShapeNorm(s, y, 0) * (1.0 + k->slack) + k->slack;
+	double lo, hi;
+	mkSq_NormBounds(s, y, 0, &lo, &hi);   /* (an ellipsoid's: its norm) */
+	double g = hi <= lo * (1.0 + 1e-2) ? hi : mkSq_ShapeNorm(s, y, 0);   /* the bound where it is within 1 % */
+	return g * (1.0 + k->slack) + k->slack;
 }
 
 double mkSqQuick_PointDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 x)
