@@ -45,11 +45,14 @@ mkSqQuick mkSqQuick_Make(mkBody3 b);
  * |(|(a y1, b y2)|_q2, c y3)|_q1 with q = 2 / (2 - eps) (dual 1). */
 double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual);
 
-/* Bounds lo <= mkSq_ShapeNorm(s, y, dual) <= hi without powers, by the
+/* Bounds lo <= mkSq_ShapeNorm(s, y, dual) <= hi without powers (one exp2 for a box-like shape), by the
  * shapes that hold or lie in the canonical shape: the box of its semi-axes
  * holds it and the octahedron of their ends lies in it (exponents in
  * (0, 2)); the ellipsoid of its semi-axes holds it when both exponents are
- * at least 1 and lies in it when both are at most 1. An ellipsoid's bounds
+ * at least 1 and lies in it when both are at most 1; a box-like shape
+ * (both exponents at most 1) also by Hoelder's inequality per level: its
+ * gauge at most 2^((eps1 + eps2) / 2) times the box's, its support value at
+ * least 2^(-(eps1 + eps2) / 2) times the box's. An ellipsoid's bounds
  * are its norm, by mkSq_ShapeNorm's operations. mkSqQuick_Pair decides by
  * them first where they settle it by a margin of 1e-13 of the pair's size
  * (its answers are those of the norms). */
