@@ -38,7 +38,8 @@ struct mkSceneQuery {
 	double *reach;     /* part j's outer model lies within reach[j] of its centre */
 	double *prad;      /* part j's outer model's mkSq_BodyRadius (the motion checks') */
 	double (*osphere)[4];  /* obstacle i's outer model's centre and mkSq_BodyRadius */
-	mkSqQuick *oquick, *pquick;   /* [i * 2 + bound]: the models' data for the quick certificates */
+	mkSqQuick *oquick, *oquick_in;   /* the obstacles' outer and inner models' data for the quick certificates */
+	mkSqQuick *pquick;   /* [j * 2 + bound]: the parts' */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 };
 
@@ -178,10 +179,11 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->reach = malloc((size_t)q->parts * sizeof *q->reach);
 	q->prad = malloc((size_t)q->parts * sizeof *q->prad);
 	q->osphere = malloc(nb * sizeof *q->osphere);
-	q->oquick = malloc(2 * nb * sizeof *q->oquick);
+	q->oquick = malloc(nb * sizeof *q->oquick);
+	q->oquick_in = malloc(nb * sizeof *q->oquick_in);
 	q->pquick = malloc(2 * (size_t)q->parts * sizeof *q->pquick);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->osphere || !q->oquick || !q->pquick)
+	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->osphere || !q->oquick || !q->oquick_in || !q->pquick)
 		r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
@@ -201,7 +203,8 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	}
 	for (int i = 0; i < q->nob && r == MK_OK; ++i) {
 		const mkBody3 *o = &q->obs[2 * i + 1];
-		for (int k = 0; k < 2; ++k) q->oquick[2 * i + k] = mkSqQuick_Make(q->obs[2 * i + k]);
+		q->oquick[i] = mkSqQuick_Make(q->obs[2 * i + 1]);
+		q->oquick_in[i] = mkSqQuick_Make(q->obs[2 * i]);
 		q->osphere[i][0] = o->t.x;
 		q->osphere[i][1] = o->t.y;
 		q->osphere[i][2] = o->t.z;
@@ -223,7 +226,7 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
 	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad); free(q->osphere);
-	free(q->oquick); free(q->pquick);
+	free(q->oquick); free(q->oquick_in); free(q->pquick);
 	mkSwTree_Free(&q->wide);
 	free(q);
 }
@@ -536,6 +539,21 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 	return n;
 }
 
+/* Obstacle i's and the part's models for the quick certificates (a smooth
+ * body's inner model is its outer one: the same data). */
+static mkSqModels mkSq_ObstacleModels(const mkSceneQuery *q, int i)
+{
+	int smooth = q->scene->obstacles[i].kind == MK_SCENE_SMOOTH;
+	mkSqModels m = {&q->obs[2 * i + 1], &q->obs[2 * i + smooth], &q->oquick[i], smooth ? &q->oquick[i] : &q->oquick_in[i]};
+	return m;
+}
+
+static mkSqModels mkSq_PartModels(const mkSceneQuery *q, const mkSqPart *p)
+{
+	mkSqModels m = {&p->outer, &p->inner, &q->pquick[2 * p->j + 1], &q->pquick[2 * p->j + p->smooth]};
+	return m;
+}
+
 /* A pair whose outer models the batch certified to overlap at the point
  * x: colliding when the inner models overlap for certain (the same bodies
  * for two smooth ones; else x inside both by their gauges, or the batch's
@@ -544,8 +562,7 @@ static int mkSq_Collect(const mkSceneQuery *q, mkSqWalk *w, mkSqPart *p, double 
 static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double upper, mkVec3 x, double *value)
 {
 	if (p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH) { *value = upper; return 1; }
-	mkSqModels om = {&q->obs[2 * i + 1], &q->obs[2 * i], &q->oquick[2 * i + 1], &q->oquick[2 * i]};
-	mkSqModels pm = {&p->outer, &p->inner, &q->pquick[2 * p->j + 1], &q->pquick[2 * p->j]};
+	mkSqModels om = mkSq_ObstacleModels(q, i), pm = mkSq_PartModels(q, p);
 	double depth = mkSqQuick_PointDepth(&om, &pm, p->R, x);
 	if (depth > MK_BATCH_MARGIN * mkCollide3_PairSize(q->obs[2 * i], p->inner)) {
 		*value = -depth;
@@ -622,7 +639,7 @@ static int mkSq_Leave(const mkSceneQuery *q, const mkSqPart *p, mkSqLeft *l, int
 	l->i[at] = i;
 	l->lower[at] = lo;
 	l->outer[at] = outer;
-	l->margin[at] = 4e-12 * (sqrt(mkVec3_Dot(d, d)) + q->oquick[2 * i + 1].r + q->pquick[2 * p->j + 1].r);
+	l->margin[at] = 4e-12 * (sqrt(mkVec3_Dot(d, d)) + q->oquick[i].r + q->pquick[2 * p->j + 1].r);
 	return 0;
 }
 
@@ -658,7 +675,7 @@ static void mkSq_NarrowPrep(const mkSceneQuery *q, mkSqPart *p, const int *ids, 
 {
 	double b = fmin(best, bound), rel = q->opt.clearance_rel;
 	mkSq_Placed(p);
-	mkSqModels pm = {&p->outer, &p->inner, &q->pquick[2 * p->j + 1], &q->pquick[2 * p->j]};
+	mkSqModels pm = mkSq_PartModels(q, p);
 	g->n = n;
 	g->nb = 0;
 	g->known = isfinite(b);
@@ -667,7 +684,7 @@ static void mkSq_NarrowPrep(const mkSceneQuery *q, mkSqPart *p, const int *ids, 
 		int i = ids[m];
 		g->ids[m] = i;
 		g->depth[m] = 0.0;
-		mkSqModels o = {&q->obs[2 * i + 1], &q->obs[2 * i], &q->oquick[2 * i + 1], &q->oquick[2 * i]};
+		mkSqModels o = mkSq_ObstacleModels(q, i);
 		g->quick[m] = mkSqQuick_Pair(&o, &pm, p->R, b, &g->depth[m]);
 		/* (separated with no clearance known yet: a bracket serves where it may be rel wide) */
 		int batch = g->quick[m] == 0 || (g->quick[m] == 3 && rel > 0.0);
