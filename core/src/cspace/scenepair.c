@@ -111,7 +111,13 @@ static double mkSq_Gauge(mkShape3 s, const mkSqQuick *k, mkVec3 y)
 double mkSqQuick_PointDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 x)
 {
 	if (!isfinite(x.x + x.y + x.z)) return 0.0;
-	double go = mkSq_Gauge(o->inner->shape, o->kinner, mkMat3_MulVecInline(o->kinner->Mi, mkVec3_Sub(x, o->inner->t)));
+	mkVec3 yo = mkMat3_MulVecInline(o->kinner->Mi, mkVec3_Sub(x, o->inner->t));
+	double go = mkSq_Gauge(o->inner->shape, o->kinner, yo);
+	if (go >= 1.0 && go < 2.0) { /* outside the obstacle's inner model: x drawn towards its centre, just inside it */
+		double t = (1.0 - 1e-6) / go;
+		x = mkVec3_Add(o->inner->t, mkVec3_Scale(mkVec3_Sub(x, o->inner->t), t));
+		go = mkSq_Gauge(o->inner->shape, o->kinner, mkVec3_Scale(yo, t));
+	}
 	if (!(go < 1.0)) return 0.0;
 	mkVec3 yp = mkMat3_MulVecInline(p->kinner->Mi, mkMat3_MulTVecInline(*R, mkVec3_Sub(x, p->inner->t)));
 	double gp = mkSq_Gauge(p->inner->shape, p->kinner, yp);

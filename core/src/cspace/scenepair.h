@@ -68,7 +68,10 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 
 /* A lower bound of the depth of the inner models' overlap by the point x
  * (world frame): the balls of radii (1 - g) rho about x inside each (as
- * mkSqQuick_Pair's), 0 when x is not inside both by their gauges. */
+ * mkSqQuick_Pair's), 0 when x is not inside both by their gauges. Where x
+ * lies outside the obstacle's inner model o (gauge g in [1, 2)), the point
+ * x drawn towards its centre by the factor (1 - 1e-6) / g, just inside it,
+ * is tested instead. */
 double mkSqQuick_PointDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 x);
 
 #endif
