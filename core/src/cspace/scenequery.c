@@ -13,6 +13,7 @@
 #include "base/message.h"
 #include "cspace/scenecache.h"
 #include "cspace/scenepair.h"
+#include "cspace/sceneprep.h"
 #include "cspace/scenewide.h"
 #include "cspace/work.h"
 #include "mink/batch.h"
@@ -41,6 +42,7 @@ struct mkSceneQuery {
 	mkSqQuick *oquick, *oquick_in;   /* the obstacles' outer and inner models' data for the quick certificates */
 	mkSqQuick *pquick;   /* [j * 2 + bound]: the parts' */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
+	mkSqPrepFn prep;   /* the poses' preparation (cspace/sceneprep.h) */
 };
 
 const char *mkPoseStatus_Name(mkPoseStatus s)
@@ -172,6 +174,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->nob = scene->obstacle_count;
 	q->parts = scene->part_count > 0 ? scene->part_count : 1;
 	q->part_body = scene->part_count > 0 ? scene->parts : &scene->robot;
+	q->prep = mkSqPrep_Pick(MK_IMPL_AUTO);
 	size_t nb = (size_t)q->nob + 1;
 	q->obs = malloc(2 * nb * sizeof *q->obs);
 	q->part = malloc(2 * (size_t)q->parts * sizeof *q->part);
@@ -767,14 +770,14 @@ static int mkSq_Narrow(const mkSceneQuery *q, mkSqPart *p, const int *ids, int n
 	return mkSq_NarrowFinish(q, p, &g, best, bound, left, out);
 }
 
-/* Part j at the pose, tested by its sphere at first (mkSqPart). */
-static void mkSq_PartInit(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, mkSqPart *p)
+/* Part j at the pose, tested by its sphere at first (mkSqPart), its
+ * outer model's centre pc. */
+static void mkSq_PartAt(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, mkVec3 pc, mkSqPart *p)
 {
 	p->smooth = q->part_body[j].kind == MK_SCENE_SMOOTH;
 	p->rest = &q->part[2 * j];
 	p->R = R;
 	p->at = c;
-	mkVec3 pc = mkVec3_Add(c, mkMat3_MulVecInline(*R, p->rest[1].t));   /* as mkSq_Place: the outer model's centre */
 	p->c[0] = pc.x;
 	p->c[1] = pc.y;
 	p->c[2] = pc.z;
@@ -783,6 +786,12 @@ static void mkSq_PartInit(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 
 	p->h[0] = p->h[1] = p->h[2] = 0.0;
 	p->has_box = p->opened = 0;
 	p->j = j;
+}
+
+/* The same at the pose (the centre as mkSq_Place places it). */
+static void mkSq_PartInit(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c, mkSqPart *p)
+{
+	mkSq_PartAt(q, j, R, c, mkVec3_Add(c, mkMat3_MulVecInline(*R, q->part[2 * j + 1].t)), p);
 }
 
 /* One part against the scene: the walk's candidates, MK_SQ_BATCH at a time
@@ -835,6 +844,9 @@ typedef struct mkSqPose {
 	float lo[3], hi[3];
 	mkSqLeft left;
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
+	int prepared;             /* parts whose centres and first query boxes are below (mkSq_Prepared) */
+	double pc[MK_SQ_PREP_PARTS][3];
+	float plo[MK_SQ_PREP_PARTS][3], phi[MK_SQ_PREP_PARTS][3];
 } mkSqPose;
 
 /* The answer before any pair: free, no obstacle nearer than max_clearance. */
@@ -859,6 +871,7 @@ static int mkSq_PoseBegin(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPo
 	s->out = out;
 	s->j = 0;
 	s->step = MK_SQ_NEXT_PART;
+	s->prepared = 0;
 	return 1;
 }
 
@@ -879,9 +892,20 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 				s->out->clearance = s->best;
 				return 1;
 			}
-			mkSq_PartInit(q, s->j, &s->R, s->c, p);
+			int j = s->j;
 			s->bq = fmin(s->best, s->bound);
-			mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+			if (j < s->prepared) {
+				mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(s->pc[j][0], s->pc[j][1], s->pc[j][2]), p);
+				if (s->bq == q->opt.max_clearance) {
+					memcpy(s->lo, s->plo[j], sizeof s->lo);
+					memcpy(s->hi, s->phi[j], sizeof s->hi);
+				} else {
+					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+				}
+			} else {
+				mkSq_PartInit(q, j, &s->R, s->c, p);
+				mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+			}
 			mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
 			s->left.n = 0;
 			s->step = MK_SQ_WALK;
@@ -1014,6 +1038,25 @@ static int mkSq_Flush(const mkSceneQuery *q, mkSqPose *pend, int n)
 	return left;
 }
 
+/* Pose `lane` of the prepared ones: its rotation and position. */
+static void mkSq_PreparedPose(const mkSqPrep *x, int lane, const double *p, mkMat3 *R, mkVec3 *c)
+{
+	for (int i = 0; i < 9; ++i) R->m[i / 3][i % 3] = x->R[i][lane];
+	*c = mkVec3_Make(p[0], p[1], p[2]);
+}
+
+/* The pose's parts' centres and first query boxes from the prepared ones. */
+static void mkSq_Prepared(const mkSceneQuery *q, const mkSqPrep *x, int lane, mkSqPose *s)
+{
+	s->prepared = q->parts < MK_SQ_PREP_PARTS ? q->parts : MK_SQ_PREP_PARTS;
+	for (int j = 0; j < s->prepared; ++j)
+		for (int i = 0; i < 3; ++i) {
+			s->pc[j][i] = x->pc[3 * j + i][lane];
+			s->plo[j][i] = x->lo[3 * j + i][lane];
+			s->phi[j][i] = x->hi[3 * j + i][lane];
+		}
+}
+
 static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 {
 	(void)w;
@@ -1021,17 +1064,41 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 	const mkSceneQuery *q = J->q;
 	int ps = mkSceneQuery_PoseSize(q), box = isfinite(q->opt.max_clearance), waiting = 0;
 	mkSqPose *pend = box ? malloc(MK_SQ_WAITING * sizeof *pend) : NULL;
-	long e = (task + 1) * MK_SQ_CHUNK < J->n ? (task + 1) * MK_SQ_CHUNK : J->n;
-	for (long k = task * MK_SQ_CHUNK; k < e; ++k) {
+	long first = task * MK_SQ_CHUNK, e = (task + 1) * MK_SQ_CHUNK < J->n ? (task + 1) * MK_SQ_CHUNK : J->n;
+	/* 3D poses with a finite max_clearance prepared MK_SQ_PREP at a time (a short block padded by its last
+	 * pose): their rotations, the first parts' centres and query boxes for the bound max_clearance, as
+	 * mkSq_Rotation, mkSq_PartInit and mkSq_QueryBox give them */
+	int prep = pend && q->dim == 3 && q->nob > 0;
+	mkSqPrep x;
+	mkVec3 t[MK_SQ_PREP_PARTS];
+	double half[MK_SQ_PREP_PARTS], tail[7 * MK_SQ_PREP];
+	for (int j = 0; prep && j < q->parts && j < MK_SQ_PREP_PARTS; ++j) {
+		t[j] = q->part[2 * j + 1].t;
+		half[j] = (0.0 + q->reach[j] + q->opt.max_clearance) * (1.0 + 1e-12);
+	}
+	for (long k = first; k < e; ++k) {
+		int lane = (int)((k - first) % MK_SQ_PREP);
+		if (prep && lane == 0) {
+			const double *src = J->poses + k * 7;
+			if (e - k < MK_SQ_PREP) {
+				for (int m = 0; m < MK_SQ_PREP; ++m)
+					memcpy(tail + 7 * m, J->poses + 7 * (m < e - k ? k + m : e - 1), 7 * sizeof *tail);
+				src = tail;
+			}
+			q->prep(src, q->parts, t, half, &x);
+		}
 		mkMat3 R;
 		mkVec3 c;
-		mkSq_Rotation(q, J->poses + k * ps, &R, &c);   /* (mkSceneQuery_Run checked every pose with mkSq_PoseOk) */
+		if (prep) mkSq_PreparedPose(&x, lane, J->poses + k * 7, &R, &c);
+		else mkSq_Rotation(q, J->poses + k * ps, &R, &c);   /* (mkSceneQuery_Run checked every pose with mkSq_PoseOk) */
 		if (!pend) { /* the walk nearest first, or no memory for waiting poses: one pose at a time */
 			mkSq_Answer(q, &R, c, &J->out[k]);
 			continue;
 		}
 		mkSqPose *s = &pend[waiting];
-		if (!mkSq_PoseBegin(q, &R, c, &J->out[k], s) || mkSq_Advance(q, s)) continue;
+		if (!mkSq_PoseBegin(q, &R, c, &J->out[k], s)) continue;
+		if (prep) mkSq_Prepared(q, &x, lane, s);
+		if (mkSq_Advance(q, s)) continue;
 		for (++waiting; waiting == MK_SQ_WAITING;) waiting = mkSq_Flush(q, pend, waiting);
 	}
 	while (waiting > 0) waiting = mkSq_Flush(q, pend, waiting);

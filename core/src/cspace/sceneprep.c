@@ -1,0 +1,21 @@
+/* sceneprep.c - poses prepared side by side (cspace/sceneprep.h): the
+ * portable build of the loops and the choice of a build by the CPU. */
+#include "cspace/sceneprep_body.h"
+
+
+void mkSqPrep_RunScalar(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
+{
+	mkSqPrep_Body(poses, parts, t, half, out);
+}
+
+mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
+{
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (impl == MK_IMPL_AUTO)
+		impl = mkImpl_Available(MK_IMPL_AVX512) ? MK_IMPL_AVX512 : mkImpl_Available(MK_IMPL_AVX2) ? MK_IMPL_AVX2
+			: MK_IMPL_SCALAR;
+	if (impl == MK_IMPL_AVX512 && mkImpl_Available(MK_IMPL_AVX512)) return mkSqPrep_RunAvx512;
+	if (impl == MK_IMPL_AVX2 && mkImpl_Available(MK_IMPL_AVX2)) return mkSqPrep_RunAvx2;
+#endif
+	return impl == MK_IMPL_AUTO || impl == MK_IMPL_SCALAR ? mkSqPrep_RunScalar : NULL;
+}

@@ -1,0 +1,60 @@
+/* sceneprep_body.h - the loops of mkSqPrep_Run (cspace/sceneprep.h), one
+ * source compiled for each instruction set (sceneprep.c, sceneprep_avx2.c,
+ * sceneprep_avx512.c), each with -fno-math-errno (sqrt then need not set
+ * errno, so that the loops run in vector registers; its values are the
+ * same) and without contraction. */
+#ifndef MINK_CSPACE_SCENEPREP_BODY_H
+#define MINK_CSPACE_SCENEPREP_BODY_H
+
+#include <math.h>
+
+#include "cspace/sceneprep.h"
+#include "cspace/scenewide.h"
+
+static void mkSqPrep_Body(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
+{
+	double qw[MK_SQ_PREP], qx[MK_SQ_PREP], qy[MK_SQ_PREP], qz[MK_SQ_PREP], c[3][MK_SQ_PREP];
+	for (int k = 0; k < MK_SQ_PREP; ++k) {
+		const double *p = poses + 7 * k;
+		c[0][k] = p[0];
+		c[1][k] = p[1];
+		c[2][k] = p[2];
+		qw[k] = p[3];
+		qx[k] = p[4];
+		qy[k] = p[5];
+		qz[k] = p[6];
+	}
+	/* the operations of mkMat3_FromQuatInline */
+	for (int k = 0; k < MK_SQ_PREP; ++k) {
+		double w = qw[k], x = qx[k], y = qy[k], z = qz[k];
+		double n2 = w * w + x * x + y * y + z * z;
+		double s = 1.0 / sqrt(n2);
+		w *= s; x *= s; y *= s; z *= s;
+		out->R[0][k] = 1 - 2 * (y * y + z * z);
+		out->R[1][k] = 2 * (x * y - w * z);
+		out->R[2][k] = 2 * (x * z + w * y);
+		out->R[3][k] = 2 * (x * y + w * z);
+		out->R[4][k] = 1 - 2 * (x * x + z * z);
+		out->R[5][k] = 2 * (y * z - w * x);
+		out->R[6][k] = 2 * (x * z - w * y);
+		out->R[7][k] = 2 * (y * z + w * x);
+		out->R[8][k] = 1 - 2 * (x * x + y * y);
+	}
+	for (int j = 0; j < parts && j < MK_SQ_PREP_PARTS; ++j) {
+		double tv[3] = {t[j].x, t[j].y, t[j].z}, h = half[j];
+		for (int i = 0; i < 3; ++i) {
+			double *pc = out->pc[3 * j + i];
+			float *lo = out->lo[3 * j + i], *hi = out->hi[3 * j + i];
+			const double *r0 = out->R[3 * i], *r1 = out->R[3 * i + 1], *r2 = out->R[3 * i + 2];
+			for (int k = 0; k < MK_SQ_PREP; ++k) {
+				/* c + R t as mkVec3_Add(c, mkMat3_MulVecInline(R, t)) */
+				double v = c[i][k] + (r0[k] * tv[0] + r1[k] * tv[1] + r2[k] * tv[2]);
+				pc[k] = v;
+				lo[k] = mkSw_Down(v - h);
+				hi[k] = mkSw_Up(v + h);
+			}
+		}
+	}
+}
+
+#endif

@@ -1,0 +1,94 @@
+/* test_cspace_prep.c - the scene query's poses prepared side by side
+ * (cspace/sceneprep.h) against the one-pose path's operations: every build
+ * the CPU runs (portable, AVX2, AVX-512F) gives, to the bit, the rotation of
+ * mkMat3_FromQuatInline, the part centres c + R t (mkVec3_Add,
+ * mkMat3_MulVecInline) and the float query boxes mkSw_Down(centre - half),
+ * mkSw_Up(centre + half) of every lane, on random poses and on poses with
+ * quaternions of tiny (a subnormal squared norm) and huge norms and
+ * positions up to 1e150 (what the scene query's answers being the same
+ * bits as one pose at a time rests on). A build that differs in one lane is
+ * caught (a lane swapped). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "base/geom_inline.h"
+#include "cspace/sceneprep.h"
+#include "cspace/scenewide.h"
+#include "ensure.h"
+
+static unsigned long long seed = 31;
+
+static double uni(double lo, double hi) { return mk_test_uniform(&seed, lo, hi); }
+
+static int same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+static int samef(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* The lanes of x against the one-pose operations; returns the lanes that differ. */
+static int check(const double *poses, int parts, const mkVec3 *t, const double *half, const mkSqPrep *x)
+{
+	int bad = 0;
+	for (int k = 0; k < MK_SQ_PREP; ++k) {
+		const double *p = poses + 7 * k;
+		mkMat3 R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
+		int ok = 1;
+		for (int i = 0; i < 9; ++i) ok &= same(x->R[i][k], R.m[i / 3][i % 3]);
+		for (int j = 0; j < parts && j < MK_SQ_PREP_PARTS; ++j) {
+			mkVec3 c = mkVec3_Add(mkVec3_Make(p[0], p[1], p[2]), mkMat3_MulVecInline(R, t[j]));
+			double v[3] = {c.x, c.y, c.z};
+			for (int i = 0; i < 3; ++i) {
+				ok &= same(x->pc[3 * j + i][k], v[i]);
+				ok &= samef(x->lo[3 * j + i][k], mkSw_Down(v[i] - half[j]));
+				ok &= samef(x->hi[3 * j + i][k], mkSw_Up(v[i] + half[j]));
+			}
+		}
+		bad += !ok;
+	}
+	return bad;
+}
+
+int main(void)
+{
+	const mkImpl impls[3] = {MK_IMPL_SCALAR, MK_IMPL_AVX2, MK_IMPL_AVX512};
+	const char *names[3] = {"portable", "AVX2", "AVX-512F"};
+	int ran = 0;
+	for (int b = 0; b < 3; ++b) {
+		mkSqPrepFn f = mkSqPrep_Pick(impls[b]);
+		if (!f) {
+			printf("test_cspace_prep: the %s build is not run here (the CPU or the build lacks it)\n", names[b]);
+			continue;
+		}
+		++ran;
+		int bad = 0, blocks = 2000;
+		for (int r = 0; r < blocks; ++r) {
+			double poses[7 * MK_SQ_PREP], half[MK_SQ_PREP_PARTS];
+			mkVec3 t[MK_SQ_PREP_PARTS];
+			int parts = 1 + r % MK_SQ_PREP_PARTS;
+			for (int j = 0; j < MK_SQ_PREP_PARTS; ++j) {
+				t[j] = mkVec3_Make(uni(-2, 2), uni(-2, 2), uni(-2, 2));
+				half[j] = uni(0.01, 3) * (1.0 + 1e-12);
+			}
+			for (int k = 0; k < MK_SQ_PREP; ++k) {
+				double *p = poses + 7 * k, pos = r % 4 == 3 ? 1e150 : r % 4 == 2 ? 1e6 : 10.0;
+				double qs = r % 10 == 9 ? 1e-160 : r % 5 == 4 ? 1e-150 : r % 5 == 3 ? 1e140 : 1.0;   /* (1e-160: a subnormal squared norm) */
+				for (int d = 0; d < 3; ++d) p[d] = uni(-pos, pos);
+				for (int d = 3; d < 7; ++d) p[d] = qs * uni(-1, 1);
+			}
+			mkSqPrep x;
+			f(poses, parts, t, half, &x);
+			bad += check(poses, parts, t, half, &x);
+			if (r == 0) { /* a lane swapped is caught */
+				double keep = x.R[4][3];
+				x.R[4][3] = x.R[4][5];
+				ENSURE(check(poses, parts, t, half, &x) > 0);
+				x.R[4][3] = keep;
+			}
+		}
+		printf("test_cspace_prep: %s build, %d blocks of %d poses: %d lanes differ from the one-pose operations\n",
+			names[b], blocks, MK_SQ_PREP, bad);
+		ENSURE(bad == 0);
+	}
+	ENSURE(ran >= 1);
+	ENSURE(mkSqPrep_Pick(MK_IMPL_AUTO) != NULL);
+	return mk_summary("test_cspace_prep");
+}
