@@ -25,10 +25,10 @@ static int same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 static int samef(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* The lanes of x against the one-pose operations; returns the lanes that differ. */
-static int check(const double *poses, int parts, const mkVec3 *t, const double *half, const mkSqPrep *x)
+static int check(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkSqPrep *x)
 {
 	int bad = 0;
-	for (int k = 0; k < MK_SQ_PREP; ++k) {
+	for (int k = 0; k < n; ++k) {
 		const double *p = poses + 7 * k;
 		mkMat3 R = mkMat3_FromQuatInline(p[3], p[4], p[5], p[6]);
 		int ok = 1;
@@ -59,33 +59,36 @@ int main(void)
 			continue;
 		}
 		++ran;
-		int bad = 0, blocks = 2000;
+		int bad = 0, blocks = 200, lanes = 0;
+		static double poses[7 * MK_SQ_PREP];
+		static mkSqPrep x;
 		for (int r = 0; r < blocks; ++r) {
-			double poses[7 * MK_SQ_PREP], half[MK_SQ_PREP_PARTS];
+			double half[MK_SQ_PREP_PARTS];
+			int n = r % 3 == 0 ? MK_SQ_PREP : 1 + (int)uni(0, MK_SQ_PREP - 1);   /* full and short tasks */
 			mkVec3 t[MK_SQ_PREP_PARTS];
 			int parts = 1 + r % MK_SQ_PREP_PARTS;
 			for (int j = 0; j < MK_SQ_PREP_PARTS; ++j) {
 				t[j] = mkVec3_Make(uni(-2, 2), uni(-2, 2), uni(-2, 2));
 				half[j] = uni(0.01, 3) * (1.0 + 1e-12);
 			}
-			for (int k = 0; k < MK_SQ_PREP; ++k) {
+			for (int k = 0; k < n; ++k) {
 				double *p = poses + 7 * k, pos = r % 4 == 3 ? 1e150 : r % 4 == 2 ? 1e6 : 10.0;
 				double qs = r % 10 == 9 ? 1e-160 : r % 5 == 4 ? 1e-150 : r % 5 == 3 ? 1e140 : 1.0;   /* (1e-160: a subnormal squared norm) */
 				for (int d = 0; d < 3; ++d) p[d] = uni(-pos, pos);
 				for (int d = 3; d < 7; ++d) p[d] = qs * uni(-1, 1);
 			}
-			mkSqPrep x;
-			f(poses, parts, t, half, &x);
-			bad += check(poses, parts, t, half, &x);
+			f(poses, n, parts, t, half, &x);
+			bad += check(poses, n, parts, t, half, &x);
+			lanes += n;
 			if (r == 0) { /* a lane swapped is caught */
 				double keep = x.R[4][3];
 				x.R[4][3] = x.R[4][5];
-				ENSURE(check(poses, parts, t, half, &x) > 0);
+				ENSURE(check(poses, n, parts, t, half, &x) > 0);
 				x.R[4][3] = keep;
 			}
 		}
-		printf("test_cspace_prep: %s build, %d blocks of %d poses: %d lanes differ from the one-pose operations\n",
-			names[b], blocks, MK_SQ_PREP, bad);
+		printf("test_cspace_prep: %s build, %d blocks of 1 to %d poses (%d in all): %d differ from the one-pose "
+			"operations\n", names[b], blocks, MK_SQ_PREP, lanes, bad);
 		ENSURE(bad == 0);
 	}
 	ENSURE(ran >= 1);

@@ -3,9 +3,9 @@
 #include "cspace/sceneprep_body.h"
 
 
-void mkSqPrep_RunScalar(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
+void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
 {
-	mkSqPrep_Body(poses, parts, t, half, out);
+	mkSqPrep_Body(poses, n, parts, t, half, out);
 }
 
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl)

@@ -1,5 +1,6 @@
 /* sceneprep.h - the scene query's poses prepared side by side (internal to
- * libmink_cspace): for MK_SQ_PREP 3D poses at once, their rotations and,
+ * libmink_cspace): for up to MK_SQ_PREP 3D poses at once (a task's), their
+ * rotations and,
  * for the robot's first parts, each part's centre and the float box of the
  * sphere that holds it, grown by a bound (the part's query box before any
  * pair is known).
@@ -14,7 +15,7 @@
 #include "mink/geom.h"
 #include "mink/sum.h"
 
-#define MK_SQ_PREP 16        /* poses prepared at once */
+#define MK_SQ_PREP 256       /* poses prepared at once, at most */
 #define MK_SQ_PREP_PARTS 4   /* parts whose centres and boxes are prepared */
 
 typedef struct mkSqPrep {
@@ -23,16 +24,16 @@ typedef struct mkSqPrep {
 	float lo[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP], hi[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];
 } mkSqPrep;
 
-/* poses: MK_SQ_PREP poses of 7 values (x, y, z, quaternion w, x, y, z),
+/* poses: n <= MK_SQ_PREP poses of 7 values (x, y, z, quaternion w, x, y, z),
  * each with a finite positive squared quaternion norm; the first
  * MK_SQ_PREP_PARTS of the parts, with their centres t[j] in the robot's
  * frame and their boxes' half-widths half[j]. One source (sceneprep_body.h)
  * built for each instruction set: the same values from each. */
-typedef void (*mkSqPrepFn)(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
+typedef void (*mkSqPrepFn)(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
 
-void mkSqPrep_RunScalar(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
-void mkSqPrep_RunAvx2(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
-void mkSqPrep_RunAvx512(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
+void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
+void mkSqPrep_RunAvx2(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
+void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
 
 /* The build for impl (MK_IMPL_AUTO: the widest the CPU runs),
  * NULL when the CPU or the build lacks it. */

@@ -11,10 +11,10 @@
 #include "cspace/sceneprep.h"
 #include "cspace/scenewide.h"
 
-static void mkSqPrep_Body(const double *poses, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
+static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
 {
 	double qw[MK_SQ_PREP], qx[MK_SQ_PREP], qy[MK_SQ_PREP], qz[MK_SQ_PREP], c[3][MK_SQ_PREP];
-	for (int k = 0; k < MK_SQ_PREP; ++k) {
+	for (int k = 0; k < n; ++k) {
 		const double *p = poses + 7 * k;
 		c[0][k] = p[0];
 		c[1][k] = p[1];
@@ -25,7 +25,7 @@ static void mkSqPrep_Body(const double *poses, int parts, const mkVec3 *t, const
 		qz[k] = p[6];
 	}
 	/* the operations of mkMat3_FromQuatInline */
-	for (int k = 0; k < MK_SQ_PREP; ++k) {
+	for (int k = 0; k < n; ++k) {
 		double w = qw[k], x = qx[k], y = qy[k], z = qz[k];
 		double n2 = w * w + x * x + y * y + z * z;
 		double s = 1.0 / sqrt(n2);
@@ -46,7 +46,7 @@ static void mkSqPrep_Body(const double *poses, int parts, const mkVec3 *t, const
 			double *pc = out->pc[3 * j + i];
 			float *lo = out->lo[3 * j + i], *hi = out->hi[3 * j + i];
 			const double *r0 = out->R[3 * i], *r1 = out->R[3 * i + 1], *r2 = out->R[3 * i + 2];
-			for (int k = 0; k < MK_SQ_PREP; ++k) {
+			for (int k = 0; k < n; ++k) {
 				/* c + R t as mkVec3_Add(c, mkMat3_MulVecInline(R, t)) */
 				double v = c[i][k] + (r0[k] * tv[0] + r1[k] * tv[1] + r2[k] * tv[2]);
 				pc[k] = v;

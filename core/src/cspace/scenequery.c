@@ -20,7 +20,7 @@
 #include "mink/collision.h"
 
 #define MK_SQ_ROUND 1e-12   /* rounding allowance of a pair's bound, times its size */
-#define MK_SQ_CHUNK 256     /* poses per pool task */
+#define MK_SQ_CHUNK MK_SQ_PREP   /* poses per pool task (prepared together: cspace/sceneprep.h) */
 #define MK_SQ_WAITING 16    /* poses of a task whose groups wait for one batch call (finite max_clearance) */
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 #define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
@@ -844,9 +844,8 @@ typedef struct mkSqPose {
 	float lo[3], hi[3];
 	mkSqLeft left;
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
-	int prepared;             /* parts whose centres and first query boxes are below (mkSq_Prepared) */
-	double pc[MK_SQ_PREP_PARTS][3];
-	float plo[MK_SQ_PREP_PARTS][3], phi[MK_SQ_PREP_PARTS][3];
+	const mkSqPrep *prep;     /* the task's prepared poses (NULL: none), this one in lane */
+	int lane, prepared;       /* prepared: the parts whose centres and first query boxes are there */
 } mkSqPose;
 
 /* The answer before any pair: free, no obstacle nearer than max_clearance. */
@@ -895,10 +894,14 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			int j = s->j;
 			s->bq = fmin(s->best, s->bound);
 			if (j < s->prepared) {
-				mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(s->pc[j][0], s->pc[j][1], s->pc[j][2]), p);
+				const mkSqPrep *x = s->prep;
+				int l = s->lane;
+				mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(x->pc[3 * j][l], x->pc[3 * j + 1][l], x->pc[3 * j + 2][l]), p);
 				if (s->bq == q->opt.max_clearance) {
-					memcpy(s->lo, s->plo[j], sizeof s->lo);
-					memcpy(s->hi, s->phi[j], sizeof s->hi);
+					for (int i = 0; i < 3; ++i) {
+						s->lo[i] = x->lo[3 * j + i][l];
+						s->hi[i] = x->hi[3 * j + i][l];
+					}
 				} else {
 					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 				}
@@ -1045,18 +1048,6 @@ static void mkSq_PreparedPose(const mkSqPrep *x, int lane, const double *p, mkMa
 	*c = mkVec3_Make(p[0], p[1], p[2]);
 }
 
-/* The pose's parts' centres and first query boxes from the prepared ones. */
-static void mkSq_Prepared(const mkSceneQuery *q, const mkSqPrep *x, int lane, mkSqPose *s)
-{
-	s->prepared = q->parts < MK_SQ_PREP_PARTS ? q->parts : MK_SQ_PREP_PARTS;
-	for (int j = 0; j < s->prepared; ++j)
-		for (int i = 0; i < 3; ++i) {
-			s->pc[j][i] = x->pc[3 * j + i][lane];
-			s->plo[j][i] = x->lo[3 * j + i][lane];
-			s->phi[j][i] = x->hi[3 * j + i][lane];
-		}
-}
-
 static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 {
 	(void)w;
@@ -1065,31 +1056,24 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 	int ps = mkSceneQuery_PoseSize(q), box = isfinite(q->opt.max_clearance), waiting = 0;
 	mkSqPose *pend = box ? malloc(MK_SQ_WAITING * sizeof *pend) : NULL;
 	long first = task * MK_SQ_CHUNK, e = (task + 1) * MK_SQ_CHUNK < J->n ? (task + 1) * MK_SQ_CHUNK : J->n;
-	/* 3D poses with a finite max_clearance prepared MK_SQ_PREP at a time (a short block padded by its last
-	 * pose): their rotations, the first parts' centres and query boxes for the bound max_clearance, as
-	 * mkSq_Rotation, mkSq_PartInit and mkSq_QueryBox give them */
-	int prep = pend && q->dim == 3 && q->nob > 0;
-	mkSqPrep x;
-	mkVec3 t[MK_SQ_PREP_PARTS];
-	double half[MK_SQ_PREP_PARTS], tail[7 * MK_SQ_PREP];
-	for (int j = 0; prep && j < q->parts && j < MK_SQ_PREP_PARTS; ++j) {
-		t[j] = q->part[2 * j + 1].t;
-		half[j] = (0.0 + q->reach[j] + q->opt.max_clearance) * (1.0 + 1e-12);
+	/* 3D poses with a finite max_clearance prepared side by side: their rotations, the first parts' centres
+	 * and query boxes for the bound max_clearance, as mkSq_Rotation, mkSq_PartInit and mkSq_QueryBox give
+	 * them (without memory for it: one pose at a time) */
+	mkSqPrep *x = pend && q->dim == 3 && q->nob > 0 ? malloc(sizeof *x) : NULL;
+	int prepared = q->parts < MK_SQ_PREP_PARTS ? q->parts : MK_SQ_PREP_PARTS;
+	if (x) {
+		mkVec3 t[MK_SQ_PREP_PARTS];
+		double half[MK_SQ_PREP_PARTS];
+		for (int j = 0; j < prepared; ++j) {
+			t[j] = q->part[2 * j + 1].t;
+			half[j] = (0.0 + q->reach[j] + q->opt.max_clearance) * (1.0 + 1e-12);
+		}
+		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, x);
 	}
 	for (long k = first; k < e; ++k) {
-		int lane = (int)((k - first) % MK_SQ_PREP);
-		if (prep && lane == 0) {
-			const double *src = J->poses + k * 7;
-			if (e - k < MK_SQ_PREP) {
-				for (int m = 0; m < MK_SQ_PREP; ++m)
-					memcpy(tail + 7 * m, J->poses + 7 * (m < e - k ? k + m : e - 1), 7 * sizeof *tail);
-				src = tail;
-			}
-			q->prep(src, q->parts, t, half, &x);
-		}
 		mkMat3 R;
 		mkVec3 c;
-		if (prep) mkSq_PreparedPose(&x, lane, J->poses + k * 7, &R, &c);
+		if (x) mkSq_PreparedPose(x, (int)(k - first), J->poses + k * 7, &R, &c);
 		else mkSq_Rotation(q, J->poses + k * ps, &R, &c);   /* (mkSceneQuery_Run checked every pose with mkSq_PoseOk) */
 		if (!pend) { /* the walk nearest first, or no memory for waiting poses: one pose at a time */
 			mkSq_Answer(q, &R, c, &J->out[k]);
@@ -1097,11 +1081,16 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		}
 		mkSqPose *s = &pend[waiting];
 		if (!mkSq_PoseBegin(q, &R, c, &J->out[k], s)) continue;
-		if (prep) mkSq_Prepared(q, &x, lane, s);
+		if (x) {
+			s->prep = x;
+			s->lane = (int)(k - first);
+			s->prepared = prepared;
+		}
 		if (mkSq_Advance(q, s)) continue;
 		for (++waiting; waiting == MK_SQ_WAITING;) waiting = mkSq_Flush(q, pend, waiting);
 	}
 	while (waiting > 0) waiting = mkSq_Flush(q, pend, waiting);
+	free(x);
 	free(pend);
 	return MK_OK;
 }
