@@ -7,7 +7,9 @@
  * quaternions of tiny (a subnormal squared norm) and huge norms and
  * positions up to 1e150 (what the scene query's answers being the same
  * bits as one pose at a time rests on). A build that differs in one lane is
- * caught (a lane swapped). */
+ * caught (a lane swapped). And the poses' test (mkSqPrep_FirstBad) of every
+ * build against the test pose by pose, with NaN, infinite and too large
+ * values and zero quaternions placed at random. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -91,6 +93,38 @@ int main(void)
 			"operations\n", names[b], blocks, MK_SQ_PREP, lanes, bad);
 		ENSURE(bad == 0);
 	}
+	/* the poses' test: the first bad pose of every build, against the test pose by pose */
+	long (*firstbad[3])(const double *, long) = {mkSqPrep_FirstBadScalar, mkSqPrep_FirstBadAvx2, mkSqPrep_FirstBadAvx512};
+	static double many[7 * 3000];
+	int wrong = 0, cases = 0;
+	for (int r = 0; r < 400; ++r) {
+		long n = 1 + (long)uni(0, 2999);
+		for (long k = 0; k < 7 * n; ++k) many[k] = uni(-5, 5);
+		long at = r % 4 == 0 ? n : (long)uni(0, (double)n);   /* a quarter without a bad pose */
+		if (at >= n) at = r % 4 == 0 ? n : n - 1;
+		if (at < n) {
+			int kind = r % 7, d = (int)uni(0, 7) % 7;
+			double bad[5] = {NAN, INFINITY, -INFINITY, 1.0000001e150, 0.0};
+			if (kind == 4 || kind == 5) for (int m = 3; m < 7; ++m) many[7 * at + m] = 0.0;   /* a zero quaternion */
+			else many[7 * at + d] = bad[kind % 4];
+		}
+		if (r % 5 == 1) many[7 * (n - 1)] = 1e150;   /* the bound itself is allowed */
+		long want = n;
+		for (long k = 0; k < n && want == n; ++k) {
+			const double *q = many + 7 * k;
+			int ok = 1;
+			for (int m = 0; m < 7; ++m) ok &= isfinite(q[m]) && fabs(q[m]) <= 1e150;
+			if (!ok || !(q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6] > 0.0)) want = k;
+		}
+		for (int b = 0; b < 3; ++b) {
+			if (!mkSqPrep_Pick(impls[b])) continue;
+			++cases;
+			wrong += firstbad[b](many, n) != want;
+		}
+		wrong += mkSqPrep_FirstBad(many, n) != want;
+	}
+	printf("test_cspace_prep: the poses' test on %d cases of 1 to 3,000 poses: %d wrong\n", cases, wrong);
+	ENSURE(wrong == 0);
 	ENSURE(ran >= 1);
 	ENSURE(mkSqPrep_Pick(MK_IMPL_AUTO) != NULL);
 	return mk_summary("test_cspace_prep");

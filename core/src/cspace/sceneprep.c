@@ -8,6 +8,11 @@ void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, 
 	mkSqPrep_Body(poses, n, parts, t, half, out);
 }
 
+long mkSqPrep_FirstBadScalar(const double *poses, long n)
+{
+	return mkSqPrep_FirstBadBody(poses, n);
+}
+
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
 {
 #if defined(MINK_HAVE_X86_KERNELS)
@@ -18,4 +23,13 @@ mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
 	if (impl == MK_IMPL_AVX2 && mkImpl_Available(MK_IMPL_AVX2)) return mkSqPrep_RunAvx2;
 #endif
 	return impl == MK_IMPL_AUTO || impl == MK_IMPL_SCALAR ? mkSqPrep_RunScalar : NULL;
+}
+
+long mkSqPrep_FirstBad(const double *poses, long n)
+{
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (mkImpl_Available(MK_IMPL_AVX512)) return mkSqPrep_FirstBadAvx512(poses, n);
+	if (mkImpl_Available(MK_IMPL_AVX2)) return mkSqPrep_FirstBadAvx2(poses, n);
+#endif
+	return mkSqPrep_FirstBadScalar(poses, n);
 }

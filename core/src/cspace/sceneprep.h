@@ -35,6 +35,15 @@ void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, 
 void mkSqPrep_RunAvx2(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
 void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
 
+/* The first of n 3D poses whose values are not all finite and of
+ * magnitude at most 1e150 or whose quaternion's squared norm is not
+ * positive, n when none (the scene query's test of its poses), by the
+ * widest build the CPU runs. */
+long mkSqPrep_FirstBad(const double *poses, long n);
+long mkSqPrep_FirstBadScalar(const double *poses, long n);
+long mkSqPrep_FirstBadAvx2(const double *poses, long n);
+long mkSqPrep_FirstBadAvx512(const double *poses, long n);
+
 /* The build for impl (MK_IMPL_AUTO: the widest the CPU runs),
  * NULL when the CPU or the build lacks it. */
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl);

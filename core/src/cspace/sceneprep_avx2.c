@@ -5,3 +5,8 @@ void mkSqPrep_RunAvx2(const double *poses, int n, int parts, const mkVec3 *t, co
 {
 	mkSqPrep_Body(poses, n, parts, t, half, out);
 }
+
+long mkSqPrep_FirstBadAvx2(const double *poses, long n)
+{
+	return mkSqPrep_FirstBadBody(poses, n);
+}

@@ -5,3 +5,8 @@ void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, 
 {
 	mkSqPrep_Body(poses, n, parts, t, half, out);
 }
+
+long mkSqPrep_FirstBadAvx512(const double *poses, long n)
+{
+	return mkSqPrep_FirstBadBody(poses, n);
+}

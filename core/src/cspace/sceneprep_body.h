@@ -57,4 +57,30 @@ static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t
 	}
 }
 
+/* The first of n 3D poses that mkSq_PoseOk refuses (a value not finite or
+ * of magnitude above 1e150, or a zero squared quaternion norm), n when
+ * none: blocks of MK_SQ_PREP tested without branches, a failing block then
+ * pose by pose. */
+static long mkSqPrep_FirstBadBody(const double *poses, long n)
+{
+	for (long b = 0; b < n; b += MK_SQ_PREP) {
+		long e = n - b < MK_SQ_PREP ? n : b + MK_SQ_PREP;
+		int ok = 1;
+		for (long k = b; k < e; ++k) {
+			const double *p = poses + 7 * k;
+			int v = (fabs(p[0]) <= 1e150) & (fabs(p[1]) <= 1e150) & (fabs(p[2]) <= 1e150) & (fabs(p[3]) <= 1e150)
+				& (fabs(p[4]) <= 1e150) & (fabs(p[5]) <= 1e150) & (fabs(p[6]) <= 1e150);
+			ok &= v & (p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6] > 0.0);
+		}
+		if (ok) continue;
+		for (long k = b; k < e; ++k) {
+			const double *p = poses + 7 * k;
+			int v = 1;
+			for (int d = 0; d < 7; ++d) v &= fabs(p[d]) <= 1e150;
+			if (!(v && p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6] > 0.0)) return k;
+		}
+	}
+	return n;
+}
+
 #endif

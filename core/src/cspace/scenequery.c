@@ -1099,7 +1099,8 @@ mkResult mkSceneQuery_Run(const mkSceneQuery *q, const double *poses, long n, mk
 {
 	if (!q || (n > 0 && (!poses || !out)) || n < 0) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no query, poses or answers");
 	int ps = mkSceneQuery_PoseSize(q);
-	for (long k = 0; k < n; ++k)
+	long bad = q->dim == 3 ? mkSqPrep_FirstBad(poses, n) : n;   /* (mkSq_PoseOk's test, side by side) */
+	for (long k = q->dim == 3 ? bad : 0; k < n; ++k)
 		if (!mkSq_PoseOk(q, poses + k * ps))
 			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "pose %ld is out of range: its %d values must be finite numbers of "
 				"magnitude at most 1e150%s", k, ps, q->dim == 3 ? " and its quaternion nonzero" : "");
