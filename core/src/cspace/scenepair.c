@@ -51,7 +51,7 @@ double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual)
 	return mkSq_Norm2(mkSq_Norm2(x1 / s.a, x2 / s.b, 2.0 / s.eps2), x3 / s.c, 2.0 / s.eps1);
 }
 
-void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)
+static inline void mkSq_Bounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)
 {
 	double x1 = fabs(y.x), x2 = fabs(y.y), x3 = fabs(y.z);
 	if (dual) { x1 *= s.a; x2 *= s.b; x3 *= s.c; }
@@ -71,14 +71,16 @@ void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)
 	else *hi = fmin(*hi, inf * k * (1.0 + 1e-15));
 }
 
+void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi) { mkSq_Bounds(s, y, dual, lo, hi); }
+
 /* Lower bounds of the distance along u (unit) between bodies b and x
  * whose centres are d apart (from b's to x's): u.d - h_b(u) - h_x(u), by
  * the support values' upper bounds (mkSq_NormBounds, no powers). */
 static double mkSq_AlongHi(const mkBody3 *b, const mkBody3 *x, mkVec3 u, mkVec3 d)
 {
 	double blo, bhi, xlo, xhi;
-	mkSq_NormBounds(b->shape, mkMat3_MulTVecInline(b->M, u), 1, &blo, &bhi);
-	mkSq_NormBounds(x->shape, mkMat3_MulTVecInline(x->M, u), 1, &xlo, &xhi);
+	mkSq_Bounds(b->shape, mkMat3_MulTVecInline(b->M, u), 1, &blo, &bhi);
+	mkSq_Bounds(x->shape, mkMat3_MulTVecInline(x->M, u), 1, &xlo, &xhi);
 	return mkVec3_Dot(u, d) - bhi - xhi;
 }
 
@@ -103,7 +105,7 @@ static int mkSq_Boxy(mkShape3 s) { return s.eps1 <= 1.0 && s.eps2 <= 1.0 && !mkS
 static double mkSq_Gauge(mkShape3 s, const mkSqQuick *k, mkVec3 y)
 {
 	double lo, hi;
-	mkSq_NormBounds(s, y, 0, &lo, &hi);   /* (an ellipsoid's: its norm) */
+	mkSq_Bounds(s, y, 0, &lo, &hi);   /* (an ellipsoid's: its norm) */
 	double g = hi <= lo * (1.0 + 1e-2) ? hi : mkSq_ShapeNorm(s, y, 0);   /* the bound where it is within 1 % */
 	return g * (1.0 + k->slack) + k->slack;
 }
@@ -114,9 +116,8 @@ double mkSqQuick_PointDepth(const mkSqModels *o, const mkSqModels *p, const mkMa
 	mkVec3 yo = mkMat3_MulVecInline(o->kinner->Mi, mkVec3_Sub(x, o->inner->t));
 	double go = mkSq_Gauge(o->inner->shape, o->kinner, yo);
 	if (go >= 1.0 && go < 2.0) { /* outside the obstacle's inner model: x drawn towards its centre, just inside it */
-		double t = (1.0 - 1e-6) / go;
-		x = mkVec3_Add(o->inner->t, mkVec3_Scale(mkVec3_Sub(x, o->inner->t), t));
-		go = mkSq_Gauge(o->inner->shape, o->kinner, mkVec3_Scale(yo, t));
+		x = mkVec3_Add(o->inner->t, mkVec3_Scale(mkVec3_Sub(x, o->inner->t), (1.0 - 1e-6) / go));
+		go = mkSq_Gauge(o->inner->shape, o->kinner, mkMat3_MulVecInline(o->kinner->Mi, mkVec3_Sub(x, o->inner->t)));
 	}
 	if (!(go < 1.0)) return 0.0;
 	mkVec3 yp = mkMat3_MulVecInline(p->kinner->Mi, mkMat3_MulTVecInline(*R, mkVec3_Sub(x, p->inner->t)));
@@ -148,8 +149,8 @@ static double mkSq_SegmentDepth(const mkSqModels *o, const mkSqModels *p, const 
 	mkVec3 yo = mkMat3_MulVecInline(ko->Mi, d);                                    /* the part's centre, in the obstacle's */
 	/* the gauges' lower bounds first: no interval when even they leave none */
 	double plo, phi, olo, ohi;
-	mkSq_NormBounds(ps, yp, 0, &plo, &phi);
-	mkSq_NormBounds(os, yo, 0, &olo, &ohi);
+	mkSq_Bounds(ps, yp, 0, &plo, &phi);
+	mkSq_Bounds(os, yo, 0, &olo, &ohi);
 	double gpl = plo * (1.0 + kp->slack) + kp->slack, gol = olo * (1.0 + ko->slack) + ko->slack;
 	if (fmax(0.0, 1.0 - 1.0 / gpl) >= fmin(1.0, 1.0 / gol) + 1e-12) return 0.0;
 	double gp = mkSq_Ellipsoid(ps) ? gpl : mkSq_Gauge(ps, kp, yp);
@@ -189,8 +190,8 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 	if (L > 0.0) {
 		mkVec3 u = mkVec3_Scale(d, 1.0 / L), yo = mkMat3_MulTVecInline(ob->M, u), yp = mkMat3_MulTVecInline(pb->M, u);
 		double olo, ohi, plo, phi;
-		mkSq_NormBounds(ob->shape, yo, 1, &olo, &ohi);
-		mkSq_NormBounds(pb->shape, yp, 1, &plo, &phi);
+		mkSq_Bounds(ob->shape, yo, 1, &olo, &ohi);
+		mkSq_Bounds(pb->shape, yp, 1, &plo, &phi);
 		double flo = L - ohi - phi, fhi = L - olo - plo;
 		if (flo > best + m + e) return 1;
 		if (flo > m + e && fhi <= best + m - e) return isfinite(best) ? 0 : 3;
