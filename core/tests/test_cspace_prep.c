@@ -9,7 +9,9 @@
  * bits as one pose at a time rests on). A build that differs in one lane is
  * caught (a lane swapped). And the poses' test (mkSqPrep_FirstBad) of every
  * build against the test pose by pose, with NaN, infinite and too large
- * values and zero quaternions placed at random. */
+ * values and zero quaternions placed at random; and the test of the
+ * spheres near a part (mkSqPrep_Near, built at -O3 -fno-math-errno)
+ * against the scene query's test of two spheres written out. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -125,6 +127,29 @@ int main(void)
 	}
 	printf("test_cspace_prep: the poses' test on %d cases of 1 to 3,000 poses: %d wrong\n", cases, wrong);
 	ENSURE(wrong == 0);
+	/* the spheres near a part against the scene query's test of two spheres, written out */
+	int near_wrong = 0, near_cases = 0;
+	for (int r = 0; r < 2000; ++r) {
+		double x[24], y[24], z[24], rad[24], c[3] = {uni(-5, 5), uni(-5, 5), uni(-5, 5)}, prad = uni(0.1, 2);
+		double b = r % 3 == 0 ? 1e-9 : r % 3 == 1 ? uni(0, 1) : -uni(0, 0.5);
+		int n = 1 + r % 24;
+		for (int i = 0; i < n; ++i) {
+			x[i] = uni(-5, 5); y[i] = uni(-5, 5); z[i] = uni(-5, 5); rad[i] = uni(0.1, 2);
+			if (i == 0 && r % 4 == 0) { /* exactly at the bound's edge, up to rounding */
+				double dd = (prad + rad[i] + b) * (1.0 + 1e-12);
+				x[i] = c[0] + dd; y[i] = c[1]; z[i] = c[2];
+			}
+		}
+		unsigned char near[24];
+		mkSqPrep_Near(x, y, z, rad, n, c, prad, b, near);
+		++near_cases;
+		for (int i = 0; i < n; ++i) {
+			double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + rad[i] + b) * (1.0 + 1e-12);
+			near_wrong += near[i] != !(dx * dx + dy * dy + dz * dz > rr * rr);
+		}
+	}
+	printf("test_cspace_prep: the spheres near a part, %d cases of 1 to 24 obstacles: %d wrong\n", near_cases, near_wrong);
+	ENSURE(near_wrong == 0);
 	ENSURE(ran >= 1);
 	ENSURE(mkSqPrep_Pick(MK_IMPL_AUTO) != NULL);
 	return mk_summary("test_cspace_prep");

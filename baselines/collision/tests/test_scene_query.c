@@ -32,6 +32,7 @@
 #include "ensure.h"
 
 static unsigned long long seed = 2029;
+static double spread = 10.0;   /* obstacles' and poses' positions in [-spread, spread] */
 
 static double uni(double lo, double hi) { return lo + (hi - lo) * mk_test_unit(&seed); }
 
@@ -43,7 +44,7 @@ static void scene3_text(char *buf, size_t len, int nob)
 		"part ellipsoid a=0.5 b=0.3 c=0.3 quat=0.9,0.2,0.3,0 at=1.2,0.3,0.2\nobject clutter\n");
 	for (int i = 0; i < nob; ++i) {
 		double a = uni(0.3, 1.5), b = uni(0.3, 1.5), c = uni(0.3, 1.5);
-		double x = uni(-10, 10), y = uni(-10, 10), z = uni(-10, 10);
+		double x = uni(-spread, spread), y = uni(-spread, spread), z = uni(-spread, spread);
 		if (i % 2)
 			n += (size_t)snprintf(buf + n, len - n, "obstacle superquadric a=%.6f b=%.6f c=%.6f eps1=%.4f eps2=%.4f "
 				"quat=%.4f,%.4f,%.4f,%.4f at=%.5f,%.5f,%.5f\n", a, b, c, uni(0.2, 1.8), uni(0.2, 1.8), uni(-1, 1),
@@ -60,7 +61,7 @@ static void random_poses(int dim, double *p, int n)
 	int ps = dim == 2 ? 3 : 7;
 	for (int k = 0; k < n; ++k) {
 		double *q = p + k * ps;
-		for (int d = 0; d < dim; ++d) q[d] = uni(-10, 10);
+		for (int d = 0; d < dim; ++d) q[d] = uni(-spread, spread);
 		if (dim == 2) q[2] = uni(-4, 4);
 		else for (int d = 3; d < 7; ++d) q[d] = uni(-1, 1);
 	}
@@ -258,10 +259,11 @@ static int onepair_pose(const mkScene *s, const double *P, const mkPoseAnswer *a
 	return bad;
 }
 
-static void test_3d_onepair(void)
+static void test_3d_onepair(int NOB, double half)
 {
-	enum { NOB = 40, NP = 100 };
-	static char text[NOB * 160 + 512];
+	enum { NP = 100 };
+	static char text[40 * 160 + 512];
+	spread = half;
 	scene3_text(text, sizeof text, NOB);
 	mkScene s;
 	double poses[NP * 7], caps[2] = {INFINITY, 1e-9};
@@ -286,6 +288,7 @@ static void test_3d_onepair(void)
 	ENSURE(counts[MK_POSE_FREE] > 20 && counts[MK_POSE_COLLIDING] > 10);
 	printf("3D against the one-pair narrow phase, %d obstacles, %d poses, uncapped and capped at 1e-9: %d free, "
 		"%d colliding, %d uncertain; %d differ\n", NOB, NP, counts[0], counts[1], counts[2], bad);
+	spread = 10.0;
 	mkScene_Free(&s);
 }
 
@@ -303,10 +306,10 @@ static void test_3d_onepair(void)
  * models and coarse ones (model_rel 0.05, whose wide band the batch's
  * overlap points reach: a certificate on the wrong model is caught there),
  * at random poses and at poses within the band of a box's face. */
-static void test_3d_boxes(void)
+static void test_3d_boxes(int NOB)
 {
-	enum { NOB = 30, NP = 400, NB = 100 };
-	static char text[NOB * 160 + 512];
+	enum { NP = 300, NB = 100 };
+	static char text[30 * 160 + 512];
 	size_t n = (size_t)snprintf(text, sizeof text, "dim 3\npart ellipsoid a=1 b=0.5 c=0.3\n"
 		"part superquadric a=0.5 b=0.3 c=0.3 eps1=0.6 eps2=1.3 quat=0.9,0.2,0.3,0 at=1.2,0.3,0.2\nobject clutter\n");
 	for (int i = 0; i < NOB; ++i)
@@ -492,7 +495,9 @@ int main(void)
 {
 	test_3d();
 	test_2d();
-	test_3d_onepair();
-	test_3d_boxes();
+	test_3d_onepair(40, 10.0);
+	test_3d_onepair(16, 5.0);   /* (a scene of few obstacles: their spheres side by side, no hierarchy) */
+	test_3d_boxes(30);
+	test_3d_boxes(16);
 	return mk_summary("test_scene_query");
 }

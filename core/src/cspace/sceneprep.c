@@ -13,6 +13,15 @@ long mkSqPrep_FirstBadScalar(const double *poses, long n)
 	return mkSqPrep_FirstBadBody(poses, n);
 }
 
+void mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
+	double prad, double b, unsigned char *near)
+{
+	for (int i = 0; i < n; ++i) {
+		double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + r[i] + b) * (1.0 + 1e-12);
+		near[i] = !(dx * dx + dy * dy + dz * dz > rr * rr);
+	}
+}
+
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
 {
 #if defined(MINK_HAVE_X86_KERNELS)
@@ -33,3 +42,4 @@ long mkSqPrep_FirstBad(const double *poses, long n)
 #endif
 	return mkSqPrep_FirstBadScalar(poses, n);
 }
+

@@ -44,6 +44,16 @@ long mkSqPrep_FirstBadScalar(const double *poses, long n);
 long mkSqPrep_FirstBadAvx2(const double *poses, long n);
 long mkSqPrep_FirstBadAvx512(const double *poses, long n);
 
+/* The obstacles near a part (a scene of few obstacles, tested without a
+ * hierarchy): near[i] = 0 when obstacle i's sphere (centre x, y, z [i],
+ * radius r[i]) and the part's (centre c, radius prad) are certainly more
+ * than b apart, by the operations of the scene query's test of two spheres
+ * (centres farther apart than (prad + r + b) (1 + 1e-12)), else 1. The
+ * portable build only: for the few obstacles it serves, the vector builds
+ * were no faster. */
+void mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
+	double prad, double b, unsigned char *near);
+
 /* The build for impl (MK_IMPL_AUTO: the widest the CPU runs),
  * NULL when the CPU or the build lacks it. */
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl);

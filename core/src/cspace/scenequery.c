@@ -25,6 +25,7 @@
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 #define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
 #define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
+#define MK_SQ_FLAT 24      /* scenes of at most this many obstacles: their spheres tested side by side, no hierarchy (finite max_clearance) */
 
 typedef mkSwBox mkSqBox;
 
@@ -43,6 +44,8 @@ struct mkSceneQuery {
 	mkSqQuick *pquick;   /* [j * 2 + bound]: the parts' */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 	mkSqPrepFn prep;   /* the poses' preparation (cspace/sceneprep.h) */
+	int flat;          /* a scene of few obstacles (MK_SQ_FLAT): their spheres tested side by side (mkSqPrep_Near) */
+	double *sx, *sy, *sz, *sr;   /* the obstacles' spheres (osphere), axis by axis */
 };
 
 const char *mkPoseStatus_Name(mkPoseStatus s)
@@ -175,6 +178,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->parts = scene->part_count > 0 ? scene->part_count : 1;
 	q->part_body = scene->part_count > 0 ? scene->parts : &scene->robot;
 	q->prep = mkSqPrep_Pick(MK_IMPL_AUTO);
+	q->flat = q->nob <= MK_SQ_FLAT;
 	size_t nb = (size_t)q->nob + 1;
 	q->obs = malloc(2 * nb * sizeof *q->obs);
 	q->part = malloc(2 * (size_t)q->parts * sizeof *q->part);
@@ -213,6 +217,21 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		q->osphere[i][2] = o->t.z;
 		q->osphere[i][3] = mkSq_BodyRadius(*o, q->dim);
 	}
+	if (r == MK_OK && q->flat) {
+		q->sx = malloc(4 * nb * sizeof *q->sx);
+		if (!q->sx) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+		else {
+			q->sy = q->sx + nb;
+			q->sz = q->sy + nb;
+			q->sr = q->sz + nb;
+			for (int i = 0; i < q->nob; ++i) {
+				q->sx[i] = q->osphere[i][0];
+				q->sy[i] = q->osphere[i][1];
+				q->sz[i] = q->osphere[i][2];
+				q->sr[i] = q->osphere[i][3];
+			}
+		}
+	}
 	if (r == MK_OK) {
 		for (int i = 0; i < q->nob; ++i) q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
 		if (mkSwTree_Build(&q->wide, q->obox, q->nob) != MK_OK) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
@@ -229,7 +248,7 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
 	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad); free(q->osphere);
-	free(q->oquick); free(q->oquick_in); free(q->pquick);
+	free(q->oquick); free(q->oquick_in); free(q->pquick); free(q->sx);
 	mkSwTree_Free(&q->wide);
 	free(q);
 }
@@ -844,6 +863,8 @@ typedef struct mkSqPose {
 	float lo[3], hi[3];
 	mkSqLeft left;
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
+	unsigned char near[MK_SQ_FLAT];   /* a scene of few obstacles: those near the part (mkSqPrep_Near), from fk on */
+	int fk;
 	const mkSqPrep *prep;     /* the task's prepared poses (NULL: none), this one in lane */
 	int lane, prepared;       /* prepared: the parts whose centres and first query boxes are there */
 } mkSqPose;
@@ -909,16 +930,27 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 				mkSq_PartInit(q, j, &s->R, s->c, p);
 				mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 			}
-			mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
+			if (q->flat) {
+				mkSqPrep_Near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq, s->near);
+				s->fk = 0;
+			} else {
+				mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
+			}
 			s->left.n = 0;
 			s->step = MK_SQ_WALK;
 		}
 		double b = s->best < s->bound ? s->best : s->bound;
-		if (b != s->bq) {
-			s->bq = b;
-			mkSq_QueryBox(p, b, s->lo, s->hi);
+		int got = 0, n = 0;
+		if (q->flat) { /* the near obstacles by index (their boxes at the same positions as the hierarchy's) */
+			for (; s->fk < q->nob && got < MK_SQ_BATCH; ++s->fk)
+				if (s->near[s->fk]) pos[got++] = s->fk;
+		} else {
+			if (b != s->bq) {
+				s->bq = b;
+				mkSq_QueryBox(p, b, s->lo, s->hi);
+			}
+			got = mkSwWalk_Next(&q->wide, &s->w, s->lo, s->hi, pos, MK_SQ_BATCH);
 		}
-		int got = mkSwWalk_Next(&q->wide, &s->w, s->lo, s->hi, pos, MK_SQ_BATCH), n = 0;
 		if (got == 0) {
 			if (mkSq_Resolve(q, p, &s->left, &s->best, s->out)) return 1;
 			++s->j;
@@ -926,8 +958,8 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			continue;
 		}
 		for (int m = 0; m < got; ++m) {
-			const mkSqBox *x = &q->wide.box[pos[m]];
-			int i = q->wide.order[pos[m]];
+			const mkSqBox *x = q->flat ? &q->obox[pos[m]] : &q->wide.box[pos[m]];
+			int i = q->flat ? pos[m] : q->wide.order[pos[m]];
 			if (mkSq_Far(p, x, b) || mkSq_SpheresApart(q, p, i, b)) continue;
 			if (!p->has_box) {
 				mkSq_ExactBox(p);
