@@ -4,8 +4,10 @@
  * meets the query box exactly once (compared in double precision, box by
  * box, with no hierarchy), nothing else but boxes whose float rounding
  * meets the query's, in chunks of any size and when the query box shrinks
- * during the walk; and the float rounding keeps the order of any two
- * numbers (a <= b implies down(a) <= up(b)), over the finite doubles. */
+ * during the walk; the walk's portable (SSE) and AVX2 builds return the
+ * same positions in the same order (where the CPU runs AVX2); and the
+ * float rounding keeps the order of any two numbers (a <= b implies
+ * down(a) <= up(b)), over the finite doubles. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +16,7 @@
 
 #include "cspace/scenewide.h"
 #include "ensure.h"
+#include "mink/sum.h"
 
 static unsigned long long seed = 17;
 
@@ -71,6 +74,22 @@ static int check_walk(const mkSwTree *t, const mkSwBox *box, int n, const double
 	return total;
 }
 
+/* The walk's positions for the query, in order, by the build avx (0: the
+ * portable one); returns their number (at most cap). */
+static int walk_sequence(mkSwTree *t, int avx, const double lo[3], const double hi[3], int *seq, int cap)
+{
+	float flo[3], fhi[3];
+	for (int i = 0; i < 3; ++i) { flo[i] = mkSw_Down(lo[i]); fhi[i] = mkSw_Up(hi[i]); }
+	int keep = t->avx, n = 0, pos[3], got;
+	t->avx = avx;
+	mkSwWalk w;
+	mkSwWalk_Begin(t, &w, flo, fhi);
+	while ((got = mkSwWalk_Next(t, &w, flo, fhi, pos, 3)) > 0)
+		for (int k = 0; k < got; ++k) if (n < cap) seq[n++] = pos[k];
+	t->avx = keep;
+	return n;
+}
+
 /* n random boxes of half sides in [r0, r1] in a cube of half side half
  * about c (same: all the same box), then random queries. */
 static void check_set(int n, double c, double half, double r0, double r1, int same, int queries)
@@ -109,6 +128,13 @@ static void check_set(int n, double c, double half, double r0, double r1, int sa
 		int max = 1 + k % 8;
 		hits += check_walk(&t, box, n, lo, hi, lo2, hi2, max, 0);
 		check_walk(&t, box, n, lo, hi, lo2, hi2, max, 1);
+		if (mkImpl_Available(MK_IMPL_AVX2) && k % 4 == 0) { /* the two builds: the same walk */
+			int *a = malloc(((size_t)n + 1) * sizeof *a), *b = malloc(((size_t)n + 1) * sizeof *b);
+			int na = walk_sequence(&t, 0, lo, hi, a, n), nb = walk_sequence(&t, 1, lo, hi, b, n);
+			ENSURE(na == nb && memcmp(a, b, (size_t)na * sizeof *a) == 0);
+			free(a);
+			free(b);
+		}
 	}
 	printf("%6d boxes about %-8g half side %-8g: %d queries, %.2f boxes returned per query, %d nodes\n", n, c, half,
 		queries, (double)hits / queries, t.nnode);

@@ -1,5 +1,7 @@
 /* scenewide.c - the eight-way hierarchy of box queries (scenewide.h). */
 #include "cspace/scenewide.h"
+#include "cspace/scenewide_walk.h"
+#include "mink/sum.h"
 
 #include <stdlib.h>
 
@@ -106,6 +108,9 @@ mkResult mkSwTree_Build(mkSwTree *t, const mkSwBox *box, int n)
 	t->order = NULL;
 	t->box = NULL;
 	t->nnode = t->n = 0;
+#if defined(MINK_HAVE_X86_KERNELS)
+	t->avx = mkImpl_Available(MK_IMPL_AVX2);
+#endif
 	if (n <= 0) return MK_OK;
 	mkSwBuild b = {t, box, malloc((size_t)n * sizeof(mkSwKey)), n / 4 + 1, 0};   /* (grown as needed) */
 	t->node = malloc((size_t)b.cap * sizeof *t->node);
@@ -155,45 +160,21 @@ void mkSwTree_Free(mkSwTree *t)
 	t->nnode = t->n = 0;
 }
 
-
-/* Node e visited: its inner children that meet [lo, hi] stacked, its
- * leaves that do pending. */
-static void mkSw_Visit(const mkSwTree *t, mkSwWalk *w, int e, const float lo[3], const float hi[3])
-{
-	const mkSwNode *nd = &t->node[e];
-	unsigned m = mkSwNode_Meet(nd, lo, hi), inner = m & ~nd->leaves;
-	/* (at most MK_SW_WIDTH - 1 entries per level stay on the stack) */
-	for (; inner; inner &= inner - 1) w->stack[w->top++] = nd->first[mkSw_Low(inner)];
-	w->node = e;
-	w->pend = m & nd->leaves;
-}
-
 void mkSwWalk_Begin(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3])
 {
-	w->top = 0;
-	w->pend = 0;
-	w->k = w->end = 0;
-	if (t->nnode > 0) mkSw_Visit(t, w, 0, lo, hi);
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (t->avx) {
+		mkSwWalk_BeginAvx2(t, w, lo, hi);
+		return;
+	}
+#endif
+	mkSw_BeginBody(t, w, lo, hi);
 }
 
 int mkSwWalk_Next(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3], int *pos, int max)
 {
-	int n = 0;
-	while (n < max) {
-		if (w->k < w->end) {
-			pos[n++] = w->k++;
-			continue;
-		}
-		if (w->pend) { /* the next leaf of the node last visited */
-			const mkSwNode *nd = &t->node[w->node];
-			int k = mkSw_Low(w->pend);
-			w->pend &= w->pend - 1;
-			w->k = nd->first[k];
-			w->end = w->k + nd->count[k];
-			continue;
-		}
-		if (w->top == 0) break;
-		mkSw_Visit(t, w, w->stack[--w->top], lo, hi);
-	}
-	return n;
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (t->avx) return mkSwWalk_NextAvx2(t, w, lo, hi, pos, max);
+#endif
+	return mkSw_NextBody(t, w, lo, hi, pos, max);
 }

@@ -13,7 +13,9 @@
 #define MINK_CSPACE_SCENEWIDE_H
 
 #include <math.h>
-#if defined(__SSE__)
+#if defined(__AVX__)
+#include <immintrin.h>
+#elif defined(__SSE__)
 #include <emmintrin.h>
 #endif
 
@@ -36,9 +38,20 @@ typedef struct mkSwNode {
 } mkSwNode;
 
 /* The children of node nd whose boxes meet [lo, hi], as bits (bit k:
- * child k; unused children meet a box with infinite sides): four children
- * per SSE compare on x86, one at a time elsewhere. */
-#if defined(__SSE__)
+ * child k; unused children meet a box with infinite sides): eight children
+ * per AVX compare, four per SSE compare on x86, one at a time elsewhere
+ * (the same bits). */
+#if defined(__AVX__)
+static inline unsigned mkSwNode_Meet(const mkSwNode *nd, const float lo[3], const float hi[3])
+{
+	__m256 in = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+	for (int i = 0; i < 3; ++i) {
+		in = _mm256_and_ps(in, _mm256_cmp_ps(_mm256_loadu_ps(&nd->lo[i][0]), _mm256_set1_ps(hi[i]), _CMP_LE_OQ));
+		in = _mm256_and_ps(in, _mm256_cmp_ps(_mm256_loadu_ps(&nd->hi[i][0]), _mm256_set1_ps(lo[i]), _CMP_GE_OQ));
+	}
+	return (unsigned)_mm256_movemask_ps(in);
+}
+#elif defined(__SSE__)
 static inline unsigned mkSwNode_Meet(const mkSwNode *nd, const float lo[3], const float hi[3])
 {
 	unsigned m = 0;
@@ -70,6 +83,7 @@ typedef struct mkSwTree {
 	int *order;       /* the obstacle at each position */
 	mkSwBox *box;     /* its box, at its position (the boxes of a leaf side by side) */
 	int nnode, n;
+	int avx;          /* the walk's AVX2 build runs (scenewide_avx2.c: eight children per compare) */
 } mkSwTree;
 
 /* The tree of the n boxes (n >= 0; NULL arrays when n = 0). Returns
@@ -94,6 +108,10 @@ void mkSwWalk_Begin(const mkSwTree *t, mkSwWalk *w, const float lo[3], const flo
  * tested again when visited). Returns their number, 0 when the walk is
  * over. */
 int mkSwWalk_Next(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3], int *pos, int max);
+
+/* The same built for AVX2 (called by the two above where the CPU runs it). */
+void mkSwWalk_BeginAvx2(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3]);
+int mkSwWalk_NextAvx2(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3], int *pos, int max);
 
 /* The lowest set bit of m != 0. */
 static inline int mkSw_Low(unsigned m)
