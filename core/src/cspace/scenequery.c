@@ -891,7 +891,8 @@ static int mkSq_PoseBegin(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPo
 	s->out = out;
 	s->j = 0;
 	s->step = MK_SQ_NEXT_PART;
-	s->prepared = 0;
+	s->prep = NULL;
+	s->lane = s->prepared = 0;
 	return 1;
 }
 
@@ -912,13 +913,16 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 				s->out->clearance = s->best;
 				return 1;
 			}
-			int j = s->j;
+			int j = s->j, l = s->lane;
+			const mkSqPrep *x = j < s->prepared ? s->prep : NULL;
 			s->bq = fmin(s->best, s->bound);
-			if (j < s->prepared) {
-				const mkSqPrep *x = s->prep;
-				int l = s->lane;
-				mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(x->pc[3 * j][l], x->pc[3 * j + 1][l], x->pc[3 * j + 2][l]), p);
-				if (s->bq == q->opt.max_clearance) {
+			if (x) mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(x->pc[3 * j][l], x->pc[3 * j + 1][l], x->pc[3 * j + 2][l]), p);
+			else mkSq_PartInit(q, j, &s->R, s->c, p);
+			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
+				mkSqPrep_Near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq, s->near);
+				s->fk = 0;
+			} else {
+				if (x && s->bq == q->opt.max_clearance) {
 					for (int i = 0; i < 3; ++i) {
 						s->lo[i] = x->lo[3 * j + i][l];
 						s->hi[i] = x->hi[3 * j + i][l];
@@ -926,14 +930,6 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 				} else {
 					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 				}
-			} else {
-				mkSq_PartInit(q, j, &s->R, s->c, p);
-				mkSq_QueryBox(p, s->bq, s->lo, s->hi);
-			}
-			if (q->flat) {
-				mkSqPrep_Near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq, s->near);
-				s->fk = 0;
-			} else {
 				mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
 			}
 			s->left.n = 0;
@@ -941,7 +937,7 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 		}
 		double b = s->best < s->bound ? s->best : s->bound;
 		int got = 0, n = 0;
-		if (q->flat) { /* the near obstacles by index (their boxes at the same positions as the hierarchy's) */
+		if (q->flat) { /* the near obstacles in index order (their boxes obox[i]) */
 			for (; s->fk < q->nob && got < MK_SQ_BATCH; ++s->fk)
 				if (s->near[s->fk]) pos[got++] = s->fk;
 		} else {
