@@ -96,7 +96,6 @@ int main(void)
 		ENSURE(bad == 0);
 	}
 	/* the poses' test: the first bad pose of every build, against the test pose by pose */
-	long (*firstbad[3])(const double *, long) = {mkSqPrep_FirstBadScalar, mkSqPrep_FirstBadAvx2, mkSqPrep_FirstBadAvx512};
 	static double many[7 * 3000];
 	int wrong = 0, cases = 0;
 	for (int r = 0; r < 400; ++r) {
@@ -119,9 +118,10 @@ int main(void)
 			if (!ok || !(q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6] > 0.0)) want = k;
 		}
 		for (int b = 0; b < 3; ++b) {
-			if (!mkSqPrep_Pick(impls[b])) continue;
+			mkSqFirstBadFn f = mkSqPrep_PickFirstBad(impls[b]);
+			if (!f) continue;
 			++cases;
-			wrong += firstbad[b](many, n) != want;
+			wrong += f(many, n) != want;
 		}
 		wrong += mkSqPrep_FirstBad(many, n) != want;
 	}

@@ -2,7 +2,6 @@
  * portable build of the loops and the choice of a build by the CPU. */
 #include "cspace/sceneprep_body.h"
 
-
 void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
 {
 	mkSqPrep_Body(poses, n, parts, t, half, out);
@@ -34,12 +33,17 @@ mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
 	return impl == MK_IMPL_AUTO || impl == MK_IMPL_SCALAR ? mkSqPrep_RunScalar : NULL;
 }
 
-long mkSqPrep_FirstBad(const double *poses, long n)
+mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl)
 {
+	mkSqPrepFn f = mkSqPrep_Pick(impl);
 #if defined(MINK_HAVE_X86_KERNELS)
-	if (mkImpl_Available(MK_IMPL_AVX512)) return mkSqPrep_FirstBadAvx512(poses, n);
-	if (mkImpl_Available(MK_IMPL_AVX2)) return mkSqPrep_FirstBadAvx2(poses, n);
+	if (f == mkSqPrep_RunAvx512) return mkSqPrep_FirstBadAvx512;
+	if (f == mkSqPrep_RunAvx2) return mkSqPrep_FirstBadAvx2;
 #endif
-	return mkSqPrep_FirstBadScalar(poses, n);
+	return f ? mkSqPrep_FirstBadScalar : NULL;
 }
 
+long mkSqPrep_FirstBad(const double *poses, long n)
+{
+	return mkSqPrep_PickFirstBad(MK_IMPL_AUTO)(poses, n);
+}

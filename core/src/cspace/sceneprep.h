@@ -1,9 +1,9 @@
 /* sceneprep.h - the scene query's poses prepared side by side (internal to
  * libmink_cspace): for up to MK_SQ_PREP 3D poses at once (a task's), their
- * rotations and,
- * for the robot's first parts, each part's centre and the float box of the
- * sphere that holds it, grown by a bound (the part's query box before any
- * pair is known).
+ * rotations and, for the robot's first parts, each part's centre and the
+ * float box of the sphere that holds it, grown by a bound (the part's query
+ * box before any pair is known); the test of the poses' values; and, for a
+ * scene of few obstacles, the obstacles near a part by their spheres.
  *
  * The values are those of the one-pose path to the bit (mkMat3_FromQuatInline
  * for the rotation, R t + c for a centre, mkSw_Down / mkSw_Up of centre -+
@@ -38,11 +38,14 @@ void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, 
 /* The first of n 3D poses whose values are not all finite and of
  * magnitude at most 1e150 or whose quaternion's squared norm is not
  * positive, n when none (the scene query's test of its poses), by the
- * widest build the CPU runs. */
+ * widest build the CPU runs; mkSqPrep_PickFirstBad: the build for impl as
+ * mkSqPrep_Pick. */
+typedef long (*mkSqFirstBadFn)(const double *poses, long n);
 long mkSqPrep_FirstBad(const double *poses, long n);
 long mkSqPrep_FirstBadScalar(const double *poses, long n);
 long mkSqPrep_FirstBadAvx2(const double *poses, long n);
 long mkSqPrep_FirstBadAvx512(const double *poses, long n);
+mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl);
 
 /* The obstacles near a part (a scene of few obstacles, tested without a
  * hierarchy): near[i] = 0 when obstacle i's sphere (centre x, y, z [i],
