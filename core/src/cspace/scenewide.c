@@ -1,6 +1,5 @@
 /* scenewide.c - the eight-way hierarchy of box queries (scenewide.h). */
 #include "cspace/scenewide.h"
-#include "cspace/scenewide_walk.h"
 #include "mink/sum.h"
 
 #include <stdlib.h>
@@ -158,23 +157,4 @@ void mkSwTree_Free(mkSwTree *t)
 	t->order = NULL;
 	t->box = NULL;
 	t->nnode = t->n = 0;
-}
-
-void mkSwWalk_Begin(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3])
-{
-#if defined(MINK_HAVE_X86_KERNELS)
-	if (t->avx) {
-		mkSwWalk_BeginAvx2(t, w, lo, hi);
-		return;
-	}
-#endif
-	mkSw_BeginBody(t, w, lo, hi);
-}
-
-int mkSwWalk_Next(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3], int *pos, int max)
-{
-#if defined(MINK_HAVE_X86_KERNELS)
-	if (t->avx) return mkSwWalk_NextAvx2(t, w, lo, hi, pos, max);
-#endif
-	return mkSw_NextBody(t, w, lo, hi, pos, max);
 }

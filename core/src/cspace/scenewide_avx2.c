@@ -1,6 +1,6 @@
-/* scenewide_avx2.c - the hierarchy's walk (scenewide_walk.h) built for AVX2:
+/* scenewide_avx2.c - the hierarchy's walk (scenewide_body.h) built for AVX2:
  * eight children per compare. */
-#include "cspace/scenewide_walk.h"
+#include "cspace/scenewide_body.h"
 
 void mkSwWalk_BeginAvx2(const mkSwTree *t, mkSwWalk *w, const float lo[3], const float hi[3])
 {

@@ -1,9 +1,9 @@
-/* scenewide_walk.h - the box query's walk of the hierarchy (cspace/scenewide.h),
- * one source built twice: scenewide.c (SSE: four children per compare) and
- * scenewide_avx2.c (AVX: eight), picked when the tree is built. The same
+/* scenewide_body.h - the box query's walk of the hierarchy (cspace/scenewide.h),
+ * one source built twice: scenewide_walk.c (SSE: four children per compare)
+ * and scenewide_avx2.c (AVX: eight), picked when the tree is built. The same
  * comparisons, so the same walk. */
-#ifndef MINK_CSPACE_SCENEWIDE_WALK_H
-#define MINK_CSPACE_SCENEWIDE_WALK_H
+#ifndef MINK_CSPACE_SCENEWIDE_BODY_H
+#define MINK_CSPACE_SCENEWIDE_BODY_H
 
 #include "cspace/scenewide.h"
 
