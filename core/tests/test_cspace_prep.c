@@ -123,7 +123,7 @@ int main(void)
 			++cases;
 			wrong += f(many, n) != want;
 		}
-		wrong += mkSqPrep_FirstBad(many, n) != want;
+		wrong += mkSqPrep_PickFirstBad(MK_IMPL_AUTO)(many, n) != want;
 	}
 	printf("test_cspace_prep: the poses' test on %d cases of 1 to 3,000 poses: %d wrong\n", cases, wrong);
 	ENSURE(wrong == 0);
@@ -141,7 +141,7 @@ int main(void)
 			}
 		}
 		unsigned char near[24];
-		mkSqPrep_Near(x, y, z, rad, n, c, prad, b, near);
+		mkSqPrep_Near(x, y, z, rad, n, c, prad, b, near);   /* (against the test written out below) */
 		++near_cases;
 		for (int i = 0; i < n; ++i) {
 			double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + rad[i] + b) * (1.0 + 1e-12);

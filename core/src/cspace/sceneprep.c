@@ -15,10 +15,7 @@ long mkSqPrep_FirstBadScalar(const double *poses, long n)
 void mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
 	double prad, double b, unsigned char *near)
 {
-	for (int i = 0; i < n; ++i) {
-		double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + r[i] + b) * (1.0 + 1e-12);
-		near[i] = !(dx * dx + dy * dy + dz * dz > rr * rr);
-	}
+	for (int i = 0; i < n; ++i) near[i] = !mkSqPrep_Apart(c[0] - x[i], c[1] - y[i], c[2] - z[i], prad, r[i], b);
 }
 
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
@@ -41,9 +38,4 @@ mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl)
 	if (f == mkSqPrep_RunAvx2) return mkSqPrep_FirstBadAvx2;
 #endif
 	return f ? mkSqPrep_FirstBadScalar : NULL;
-}
-
-long mkSqPrep_FirstBad(const double *poses, long n)
-{
-	return mkSqPrep_PickFirstBad(MK_IMPL_AUTO)(poses, n);
 }

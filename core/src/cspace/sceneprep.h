@@ -18,6 +18,21 @@
 #define MK_SQ_PREP 256       /* poses prepared at once, at most */
 #define MK_SQ_PREP_PARTS 4   /* parts whose centres and boxes are prepared */
 
+/* 1 when two spheres whose centres are (dx, dy, dz) apart, of radii ra and
+ * rb, are certainly more than b apart: the centres farther apart than
+ * (ra + rb + b) (1 + 1e-12) (the scene query's test of a part's and an
+ * obstacle's spheres, here and in scenequery.c). */
+static inline int mkSqPrep_Apart(double dx, double dy, double dz, double ra, double rb, double b)
+{
+	double r = (ra + rb + b) * (1.0 + 1e-12);
+	return dx * dx + dy * dy + dz * dz > r * r;
+}
+
+/* The half-width of a part's query box on an axis: the part's exact box's
+ * half-width h (0 while it is tested by its sphere), the sphere's reach and
+ * the bound b, with a rounding allowance (here and in scenequery.c). */
+static inline double mkSqPrep_Half(double h, double reach, double b) { return (h + reach + b) * (1.0 + 1e-12); }
+
 typedef struct mkSqPrep {
 	double R[9][MK_SQ_PREP];                      /* row-major rotation, lane by lane */
 	double pc[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];  /* part j's centre: [3 j + axis] */
@@ -37,11 +52,9 @@ void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, 
 
 /* The first of n 3D poses whose values are not all finite and of
  * magnitude at most 1e150 or whose quaternion's squared norm is not
- * positive, n when none (the scene query's test of its poses), by the
- * widest build the CPU runs; mkSqPrep_PickFirstBad: the build for impl as
- * mkSqPrep_Pick. */
+ * positive, n when none (the scene query's test of its poses);
+ * mkSqPrep_PickFirstBad: the build for impl as mkSqPrep_Pick. */
 typedef long (*mkSqFirstBadFn)(const double *poses, long n);
-long mkSqPrep_FirstBad(const double *poses, long n);
 long mkSqPrep_FirstBadScalar(const double *poses, long n);
 long mkSqPrep_FirstBadAvx2(const double *poses, long n);
 long mkSqPrep_FirstBadAvx512(const double *poses, long n);
@@ -50,10 +63,9 @@ mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl);
 /* The obstacles near a part (a scene of few obstacles, tested without a
  * hierarchy): near[i] = 0 when obstacle i's sphere (centre x, y, z [i],
  * radius r[i]) and the part's (centre c, radius prad) are certainly more
- * than b apart, by the operations of the scene query's test of two spheres
- * (centres farther apart than (prad + r + b) (1 + 1e-12)), else 1. The
+ * than b apart (mkSqPrep_Apart), else 1. The
  * portable build only: for the few obstacles it serves, the vector builds
- * were no faster. */
+ * were no faster. Its test is mkSqPrep_Apart. */
 void mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
 	double prad, double b, unsigned char *near);
 

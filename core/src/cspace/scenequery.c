@@ -44,6 +44,7 @@ struct mkSceneQuery {
 	mkSqQuick *pquick;   /* [j * 2 + bound]: the parts' */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 	mkSqPrepFn prep;   /* the poses' preparation (cspace/sceneprep.h) */
+	mkSqFirstBadFn firstbad;   /* its test of 3D poses */
 	int flat;          /* a scene of few obstacles (MK_SQ_FLAT): their spheres tested side by side (mkSqPrep_Near) */
 	double *sx, *sy, *sz, *sr;   /* the obstacles' spheres (osphere), axis by axis */
 };
@@ -178,6 +179,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->parts = scene->part_count > 0 ? scene->part_count : 1;
 	q->part_body = scene->part_count > 0 ? scene->parts : &scene->robot;
 	q->prep = mkSqPrep_Pick(MK_IMPL_AUTO);
+	q->firstbad = mkSqPrep_PickFirstBad(MK_IMPL_AUTO);
 	q->flat = q->nob <= MK_SQ_FLAT;
 	size_t nb = (size_t)q->nob + 1;
 	q->obs = malloc(2 * nb * sizeof *q->obs);
@@ -443,8 +445,7 @@ static inline int mkSq_Far(const mkSqPart *p, const mkSqBox *x, double best)
 static inline int mkSq_SpheresApart(const mkSceneQuery *q, const mkSqPart *p, int i, double b)
 {
 	const double *o = q->osphere[i];
-	double dx = p->c[0] - o[0], dy = p->c[1] - o[1], dz = p->c[2] - o[2], r = (q->prad[p->j] + o[3] + b) * (1.0 + 1e-12);
-	return dx * dx + dy * dy + dz * dz > r * r;
+	return mkSqPrep_Apart(p->c[0] - o[0], p->c[1] - o[1], p->c[2] - o[2], q->prad[p->j], o[3], b);
 }
 
 /* The part's box (its sphere's or its exact box) grown by b on every side,
@@ -452,7 +453,7 @@ static inline int mkSq_SpheresApart(const mkSceneQuery *q, const mkSqPart *p, in
 static void mkSq_QueryBox(const mkSqPart *p, double b, float lo[3], float hi[3])
 {
 	for (int i = 0; i < 3; ++i) {
-		double half = (p->h[i] + p->reach + b) * (1.0 + 1e-12);
+		double half = mkSqPrep_Half(p->h[i], p->reach, b);
 		lo[i] = mkSw_Down(p->c[i] - half);
 		hi[i] = mkSw_Up(p->c[i] + half);
 	}
@@ -956,7 +957,8 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 		for (int m = 0; m < got; ++m) {
 			const mkSqBox *x = q->flat ? &q->obox[pos[m]] : &q->wide.box[pos[m]];
 			int i = q->flat ? pos[m] : q->wide.order[pos[m]];
-			if (mkSq_Far(p, x, b) || mkSq_SpheresApart(q, p, i, b)) continue;
+			/* (a few obstacles' spheres were tested at bq already) */
+			if (mkSq_Far(p, x, b) || ((!q->flat || b != s->bq) && mkSq_SpheresApart(q, p, i, b))) continue;
 			if (!p->has_box) {
 				mkSq_ExactBox(p);
 				if (mkSq_Far(p, x, b)) continue;
@@ -1094,7 +1096,7 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		double half[MK_SQ_PREP_PARTS];
 		for (int j = 0; j < prepared; ++j) {
 			t[j] = q->part[2 * j + 1].t;
-			half[j] = (0.0 + q->reach[j] + q->opt.max_clearance) * (1.0 + 1e-12);
+			half[j] = mkSqPrep_Half(0.0, q->reach[j], q->opt.max_clearance);
 		}
 		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, x);
 	}
@@ -1127,11 +1129,12 @@ mkResult mkSceneQuery_Run(const mkSceneQuery *q, const double *poses, long n, mk
 {
 	if (!q || (n > 0 && (!poses || !out)) || n < 0) return mkFail(MK_ERR_ARGUMENT, msg, msglen, "no query, poses or answers");
 	int ps = mkSceneQuery_PoseSize(q);
-	long bad = q->dim == 3 ? mkSqPrep_FirstBad(poses, n) : n;   /* (mkSq_PoseOk's test, side by side) */
-	for (long k = q->dim == 3 ? bad : 0; k < n; ++k)
-		if (!mkSq_PoseOk(q, poses + k * ps))
-			return mkFail(MK_ERR_ARGUMENT, msg, msglen, "pose %ld is out of range: its %d values must be finite numbers of "
-				"magnitude at most 1e150%s", k, ps, q->dim == 3 ? " and its quaternion nonzero" : "");
+	long bad = 0;   /* the first pose mkSq_PoseOk refuses (3D: its test side by side) */
+	if (q->dim == 3) bad = q->firstbad(poses, n);
+	else while (bad < n && mkSq_PoseOk(q, poses + bad * ps)) ++bad;
+	if (bad < n)
+		return mkFail(MK_ERR_ARGUMENT, msg, msglen, "pose %ld is out of range: its %d values must be finite numbers of "
+			"magnitude at most 1e150%s", bad, ps, q->dim == 3 ? " and its quaternion nonzero" : "");
 	mkSqJob J = {q, poses, n, out};
 	mkResult r = mkCSpacePool_Run(mkSqJob_Task, &J, (n + MK_SQ_CHUNK - 1) / MK_SQ_CHUNK, q->opt.threads);
 	if (r != MK_OK) mkFail(r, msg, msglen, "%s while checking poses", mkResult_Name(r));

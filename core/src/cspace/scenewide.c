@@ -107,6 +107,7 @@ mkResult mkSwTree_Build(mkSwTree *t, const mkSwBox *box, int n)
 	t->order = NULL;
 	t->box = NULL;
 	t->nnode = t->n = 0;
+	t->avx = 0;
 #if defined(MINK_HAVE_X86_KERNELS)
 	t->avx = mkImpl_Available(MK_IMPL_AVX2);
 #endif
