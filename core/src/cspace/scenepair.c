@@ -180,6 +180,64 @@ static double mkSq_FaceDepth(const mkSqModels *o, const mkSqModels *p, const mkM
 	return mkSqQuick_PointDepth(o, p, R, mkVec3_Add(pb->t, mkVec3_Scale(v, 0.5 * (1.0 + 1.0 / g))));
 }
 
+/* M diag(a^2, b^2, c^2) M^T: the shape matrix of the ellipsoid of b's
+ * semi-axes. */
+static mkMat3 mkSq_Spread(const mkBody3 *b)
+{
+	double s[3] = {b->shape.a * b->shape.a, b->shape.b * b->shape.b, b->shape.c * b->shape.c};
+	mkMat3 S;
+	for (int i = 0; i < 3; ++i)
+		for (int j = i; j < 3; ++j)
+			S.m[i][j] = S.m[j][i] = b->M.m[i][0] * s[0] * b->M.m[j][0] + b->M.m[i][1] * s[1] * b->M.m[j][1]
+				+ b->M.m[i][2] * s[2] * b->M.m[j][2];
+	return S;
+}
+
+/* The lower bound of the distance along u (unit) between b and x whose
+ * centres are d apart (from b's to x's), by the support values' upper
+ * bounds, by their norms where those do not exceed lim. */
+static double mkSq_Along(const mkBody3 *b, const mkBody3 *x, mkVec3 u, mkVec3 d, double lim)
+{
+	mkVec3 yb = mkMat3_MulTVecInline(b->M, u), yx = mkMat3_MulTVecInline(x->M, u);
+	double blo, bhi, xlo, xhi, L = mkVec3_Dot(u, d);
+	mkSq_Bounds(b->shape, yb, 1, &blo, &bhi);
+	mkSq_Bounds(x->shape, yx, 1, &xlo, &xhi);
+	if (L - bhi - xhi > lim || L - blo - xlo <= lim) return L - bhi - xhi;
+	return L - (mkSq_Ellipsoid(b->shape) ? bhi : mkSq_ShapeNorm(b->shape, yb, 1))
+		- (mkSq_Ellipsoid(x->shape) ? xhi : mkSq_ShapeNorm(x->shape, yx, 1));
+}
+
+/* The lower bound of the distance along (S_o + S_p)^-1 d, S the bodies'
+ * mkSq_Spread: the normal of their sum's boundary towards d when the two
+ * are ellipsoids of one shape (-inf when it cannot be formed). */
+static double mkSq_SpreadApart(const mkBody3 *ob, const mkBody3 *pb, mkVec3 d, double lim)
+{
+	mkMat3 S = mkSq_Spread(ob), T = mkSq_Spread(pb);
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) S.m[i][j] += T.m[i][j];
+	mkVec3 r0 = {S.m[0][0], S.m[0][1], S.m[0][2]}, r1 = {S.m[1][0], S.m[1][1], S.m[1][2]}, r2 = {S.m[2][0], S.m[2][1], S.m[2][2]};
+	/* S^-1 d up to its (positive) determinant: the adjugate's rows are the cross products */
+	mkVec3 n = {mkVec3_Dot(mkVec3_Cross(r1, r2), d), mkVec3_Dot(mkVec3_Cross(r2, r0), d), mkVec3_Dot(mkVec3_Cross(r0, r1), d)};
+	double l = sqrt(mkVec3_Dot(n, n));
+	if (!(l > 0.0) || !isfinite(l)) return -INFINITY;
+	return mkSq_Along(ob, pb, mkVec3_Scale(n, 1.0 / l), d, lim);
+}
+
+/* The largest lower bound of the distance along the face normals of the
+ * box of box-like body b's semi-axes (towards x: d from b's centre to x's). */
+static double mkSq_FacesApart(const mkBody3 *b, const mkSqQuick *k, const mkBody3 *x, mkVec3 d, double lim)
+{
+	double f = -INFINITY;
+	for (int i = 0; i < 3 && !(f > lim); ++i) {
+		mkVec3 n = {k->Mi.m[i][0], k->Mi.m[i][1], k->Mi.m[i][2]};   /* row i of M^-1: normal to faces i */
+		double l = sqrt(mkVec3_Dot(n, n));
+		if (!(l > 0.0) || !isfinite(l)) continue;
+		if (mkVec3_Dot(n, d) < 0.0) l = -l;
+		f = fmax(f, mkSq_Along(b, x, mkVec3_Scale(n, 1.0 / l), d, lim));
+	}
+	return f;
+}
+
 int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, double best, double *depth)
 {
 	const mkBody3 *ob = o->outer, *pb = p->outer;
@@ -210,6 +268,14 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 	double dep = mkSq_SegmentDepth(o, p, R);
 	if (!(dep > m) && mkSq_Boxy(o->inner->shape)) dep = fmax(dep, mkSq_FaceDepth(o, p, R));
 	*depth = dep;
-	return dep > m ? 2 : 0;
+	if (dep > m) return 2;
+	/* the direction of the sum of the semi-axes' ellipsoids */
+	if (!isfinite(best)) return 0;
+	double lim = best + m + e;
+	/* (two ellipsoids: the batch's own steps towards their best direction are as cheap) */
+	if (!(mkSq_Ellipsoid(ob->shape) && mkSq_Ellipsoid(pb->shape)) && mkSq_SpreadApart(ob, pb, d, lim) > lim) return 1;
+	/* a box-like body's face normals */
+	if (mkSq_Boxy(ob->shape) && mkSq_FacesApart(ob, o->kouter, pb, d, lim) > lim) return 1;
+	return 0;
 }
 

@@ -14,6 +14,12 @@
  *    it) to the other's centre, by the support values' upper bounds
  *    (mkSq_NormBounds); returns 1 when f(u) > best + m (+ 1e-13 of the
  *    size);
+ *  - best finite, when the overlap below is not certified: f (but for two
+ *    ellipsoids) along (S_O + S_P)^-1 d, S = M diag(a^2, b^2, c^2) M^T the shape matrix of a
+ *    body's semi-axes' ellipsoid (the normal of the sum's boundary towards
+ *    d when the two are ellipsoids of one shape), then along a box-like
+ *    obstacle's face normals; returns 1 when one exceeds best + m (+ 1e-13
+ *    of the size);
  *  - returns 2 when the inner models (the bodies themselves where smooth)
  *    overlap for certain. A point x of the centre segment inside
  *    both, by their gauges g_O, g_P < 1, puts balls of radii (1 - g) rho
