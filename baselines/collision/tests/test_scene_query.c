@@ -301,7 +301,10 @@ static void test_3d_onepair(int NOB, double half)
  * distance to the outer model (upper end of the referee's bracket), no free
  * pose where an inner model overlaps a part; a colliding pose's pair's inner
  * model overlapping with a signed distance at most the reported one (minus
- * a certified depth), no colliding pose where every outer model is apart.
+ * a certified depth), no colliding pose where every outer model is apart;
+ * an uncertain pose's value at most 0 and at most its pair's signed
+ * distance to the declared box (the referee's on a model within 1e-5 that
+ * holds the box, mkSceneBody3_Model, plus 1e-5).
  * Capped at 1e-9 (the yes/no question) and uncapped, with the default
  * models and coarse ones (model_rel 0.05, whose wide band the batch's
  * overlap points reach: a certificate on the wrong model is caught there),
@@ -355,7 +358,8 @@ static void test_3d_boxes(int NOB)
 	ENSURE(ref != NULL);
 	mkColliderScratch scratch;
 	double caps[2] = {1e-9, INFINITY};
-	int counts[3] = {0, 0, 0}, bad_free = 0, bad_coll = 0, bad_depth = 0, band_unc = 0, fine_unc = 0;
+	int counts[3] = {0, 0, 0}, bad_free = 0, bad_coll = 0, bad_depth = 0, band_unc = 0, fine_unc = 0, bad_unc = 0,
+		capped_unc = 0;
 	for (int c = 0; c < 4; ++c) {
 		mkSceneQueryOptions o = mkSceneQueryOptions_Default();
 		o.max_clearance = caps[c % 2];
@@ -390,19 +394,39 @@ static void test_3d_boxes(int NOB)
 			fine_unc += c < 2 && k < NP - NB && a->status == MK_POSE_UNCERTAIN;
 			if (a->status == MK_POSE_FREE && (inner_overlap || !(a->clearance <= outer_hi))) ++bad_free;
 			if (a->status == MK_POSE_COLLIDING && outer_apart) ++bad_coll;
+			/* an uncertain pose's value: at most 0 and at most its pair's declared signed distance, which is at most
+			 * the referee's upper end on an outer model within et = 1e-5 of the declared box plus et */
+			if (a->status == MK_POSE_UNCERTAIN) {
+				capped_unc += c % 2 == 0;
+				mkBody3 tight;
+				double et;
+				if (a->obstacle < 0 || a->part < 0 || !(a->clearance <= 0.0)
+					|| mkSceneBody3_Model(&s.obstacles[a->obstacle], 1e-5, MK_BOUND_OUTER, &tight, &et, msg, sizeof msg)
+						!= MK_OK) {
+					++bad_unc;
+					continue;
+				}
+				mkCollision3 ct;
+				ENSURE(mkCollider_Run(ref, tight, placed_part(&s, poses + 7 * k, a->part), &scratch, &ct) == MK_OK);
+				double hi_t = isnan(ct.gap) ? ct.distance : ct.distance + ct.gap;
+				if (!(a->clearance <= hi_t + et + 1e-9 * ct.scale)) ++bad_unc;
+			}
 		}
 		mkSceneQuery_Destroy(q);
 	}
 	printf("3D boxes, %d obstacles, %d poses (%d within the models' band), capped at 1e-9 and uncapped, model_rel "
 		"1e-4 and 0.05: %d free, "
-		"%d colliding, %d uncertain (%d in the band); mismatches free %d colliding %d depth %d\n", NOB, NP, NB, counts[0],
-		counts[1], counts[2], band_unc, bad_free, bad_coll, bad_depth);
+		"%d colliding, %d uncertain (%d in the band, %d capped); mismatches free %d colliding %d depth %d uncertain's "
+		"value %d\n", NOB, NP, NB, counts[0], counts[1], counts[2], band_unc, capped_unc, bad_free, bad_coll, bad_depth,
+		bad_unc);
 	ENSURE(bad_free == 0);
 	ENSURE(bad_coll == 0);
 	ENSURE(bad_depth == 0);
 	ENSURE(counts[MK_POSE_FREE] > 100 && counts[MK_POSE_COLLIDING] > 100);
 	ENSURE(fine_unc <= 4);   /* random poses, model_rel 1e-4 */
 	ENSURE(band_unc > 20);
+	ENSURE(bad_unc == 0);
+	ENSURE(capped_unc > 10);
 	mkScene_Free(&s);
 }
 

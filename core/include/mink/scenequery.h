@@ -20,7 +20,9 @@
  * obstacle whose centre is farther from the part's than their two radii
  * and the cap is set aside at once). Narrow
  * phase: the candidates, 8 at a time in the walk's order: quick
- * certificates first (a support-function bound along the centre line; a
+ * certificates first (a support-function bound along the centre line,
+ * then, where no overlap is certified, along the normal of the sum of the
+ * bodies' semi-axes' ellipsoids and a box-like obstacle's face normals; a
  * common point of two smooth bodies on the centre segment, by their
  * gauges; a superquadric's norms bounded first without powers), then mkCollide3_Batch on the rest (clearance mode, delta = the
  * clearance found so far; status mode while none is known; with a finite
@@ -98,7 +100,9 @@ typedef struct mkPoseAnswer {
 	double clearance; /* free: certified lower bound of the distance from the robot to every obstacle (capped);
 	                   * colliding: an upper bound of that pair's signed distance (<= 0): minus a certified lower
 	                   * bound of its depth, 0 when only a common point certifies the contact; uncertain: the
-	                   * smallest lower bound found (<= 0, -inf when a solver failed) */
+	                   * smallest lower bound found (<= 0, -inf when a solver failed; with a finite max_clearance,
+	                   * a pair whose outer models overlap and whose inner ones are apart for certain takes the
+	                   * inner models' lower bound less their model errors, with no one-pair query) */
 	int pairs;        /* narrow-phase pairs computed (batch screen or one-pair query) */
 } mkPoseAnswer;
 

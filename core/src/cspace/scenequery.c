@@ -42,6 +42,7 @@ struct mkSceneQuery {
 	double (*osphere)[4];  /* obstacle i's outer model's centre and mkSq_BodyRadius */
 	mkSqQuick *oquick, *oquick_in;   /* the obstacles' outer and inner models' data for the quick certificates */
 	mkSqQuick *pquick;   /* [j * 2 + bound]: the parts' */
+	double *oerr, *perr; /* the inner models' Hausdorff distance to the declared obstacles and parts (0: smooth) */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 	mkSqPrepFn prep;   /* the poses' preparation (cspace/sceneprep.h) */
 	mkSqFirstBadFn firstbad;   /* its test of 3D poses */
@@ -76,15 +77,16 @@ static mkBody3 mkSq_Lift(mkBody2 b)
 
 /* A scene body's model for the side, in 3D form; delta relative to an
  * upper bound of its reach (|M|_F times the half diagonal). */
-static mkResult mkSq_Model(const mkSceneBody *d, double rel, mkBound side, mkBody3 *out, char *msg, size_t msglen)
+static mkResult mkSq_Model(const mkSceneBody *d, double rel, mkBound side, mkBody3 *out, double *err, char *msg,
+	size_t msglen)
 {
-	double err, f = 0.0, s2 = 0.0;
+	double f = 0.0, s2 = 0.0;
 	if (d->dim == 2) {
 		const mkMat2 *M = &d->spec.body2.M;
 		for (int i = 0; i < 4; ++i) f += M->m[i / 2][i % 2] * M->m[i / 2][i % 2];
 		s2 = d->kind == MK_SCENE_BOX ? 0.25 * (d->size[0] * d->size[0] + d->size[1] * d->size[1]) : 0.0;
 		mkBody2 b;
-		mkResult r = mkSceneBody2_Model(d, rel * sqrt(f * s2) + (s2 > 0.0 ? 0.0 : 1.0), side, &b, &err, msg, msglen);
+		mkResult r = mkSceneBody2_Model(d, rel * sqrt(f * s2) + (s2 > 0.0 ? 0.0 : 1.0), side, &b, err, msg, msglen);
 		if (r == MK_OK) *out = mkSq_Lift(b);
 		return r;
 	}
@@ -92,7 +94,7 @@ static mkResult mkSq_Model(const mkSceneBody *d, double rel, mkBound side, mkBod
 	for (int i = 0; i < 9; ++i) f += M->m[i / 3][i % 3] * M->m[i / 3][i % 3];
 	if (d->kind == MK_SCENE_BOX) s2 = 0.25 * (d->size[0] * d->size[0] + d->size[1] * d->size[1] + d->size[2] * d->size[2]);
 	else if (d->kind == MK_SCENE_CYLINDER) s2 = d->size[0] * d->size[0] + 0.25 * d->size[1] * d->size[1];
-	return mkSceneBody3_Model(d, rel * sqrt(f * s2) + (s2 > 0.0 ? 0.0 : 1.0), side, out, &err, msg, msglen);
+	return mkSceneBody3_Model(d, rel * sqrt(f * s2) + (s2 > 0.0 ? 0.0 : 1.0), side, out, err, msg, msglen);
 }
 
 /* The exact axis-aligned box of a (centrally symmetric) body. */
@@ -191,17 +193,27 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->oquick = malloc(nb * sizeof *q->oquick);
 	q->oquick_in = malloc(nb * sizeof *q->oquick_in);
 	q->pquick = malloc(2 * (size_t)q->parts * sizeof *q->pquick);
+	q->oerr = malloc(nb * sizeof *q->oerr);
+	q->perr = malloc((size_t)q->parts * sizeof *q->perr);
 	mkResult r = MK_OK;
-	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->osphere || !q->oquick || !q->oquick_in || !q->pquick)
+	if (!q->obs || !q->part || !q->obox || !q->reach || !q->prad || !q->osphere || !q->oquick || !q->oquick_in || !q->pquick
+		|| !q->oerr || !q->perr)
 		r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	char sub[512];
 	for (int k = 0; k < 2 && r == MK_OK; ++k) {
-		for (int i = 0; i < q->nob && r == MK_OK; ++i)
-			if ((r = mkSq_Model(&scene->obstacles[i], opt->model_rel, (mkBound)k, &q->obs[2 * i + k], sub, sizeof sub)) != MK_OK)
+		double err;
+		for (int i = 0; i < q->nob && r == MK_OK; ++i) {
+			if ((r = mkSq_Model(&scene->obstacles[i], opt->model_rel, (mkBound)k, &q->obs[2 * i + k], &err, sub,
+				sizeof sub)) != MK_OK)
 				mkFail(r, msg, msglen, "obstacle %d: %s", i, sub);
-		for (int j = 0; j < q->parts && r == MK_OK; ++j)
-			if ((r = mkSq_Model(&q->part_body[j], opt->model_rel, (mkBound)k, &q->part[2 * j + k], sub, sizeof sub)) != MK_OK)
+			else if (k == MK_BOUND_INNER) q->oerr[i] = err;
+		}
+		for (int j = 0; j < q->parts && r == MK_OK; ++j) {
+			if ((r = mkSq_Model(&q->part_body[j], opt->model_rel, (mkBound)k, &q->part[2 * j + k], &err, sub,
+				sizeof sub)) != MK_OK)
 				mkFail(r, msg, msglen, "part %d: %s", j, sub);
+			else if (k == MK_BOUND_INNER) q->perr[j] = err;
+		}
 	}
 	if (r == MK_OK && scene->part_count == 0) /* a hand-built scene's robot: its at= unused */
 		for (int k = 0; k < 2; ++k) q->part[k].t = mkVec3_Make(0.0, 0.0, 0.0);
@@ -250,7 +262,7 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
 	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad); free(q->osphere);
-	free(q->oquick); free(q->oquick_in); free(q->pquick); free(q->sx);
+	free(q->oquick); free(q->oquick_in); free(q->pquick); free(q->oerr); free(q->perr); free(q->sx);
 	mkSwTree_Free(&q->wide);
 	free(q);
 }
@@ -580,8 +592,13 @@ static mkSqModels mkSq_PartModels(const mkSceneQuery *q, const mkSqPart *p)
 /* A pair whose outer models the batch certified to overlap at the point
  * x: colliding when the inner models overlap for certain (the same bodies
  * for two smooth ones; else x inside both by their gauges, or the batch's
- * status on the inner models), *value then minus the certified depth. 0
- * when the one-pair query must decide. */
+ * status on the inner models), *value then minus the certified depth.
+ * With a finite max_clearance, -1 when the batch certifies the inner
+ * models apart instead (the pair lies in the models' band: neither free
+ * nor colliding, whatever the one-pair query finds), *value then a lower
+ * bound of the declared bodies' signed distance (<= 0): the inner models'
+ * less the inner models' errors (the declared bodies lie within them of
+ * the inner models). 0 when the one-pair query must decide. */
 static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double upper, mkVec3 x, double *value)
 {
 	if (p->smooth && q->scene->obstacles[i].kind == MK_SCENE_SMOOTH) { *value = upper; return 1; }
@@ -594,10 +611,16 @@ static int mkSq_Contact(const mkSceneQuery *q, const mkSqPart *p, int i, double 
 	int i1 = 2 * i, i2 = 0;
 	mkContact st;
 	unsigned char path;
-	double up;
+	double up, lo;
 	mkBatchPairs3 pairs = {1, q->obs, &p->inner, &i1, &i2};
-	mkBatchOut3 out = {.status = &st, .upper = &up, .path = &path};
-	if (mkCollide3_Batch(&pairs, MK_BATCH_STATUS, 0.0, &out, NULL) != MK_OK || path != MK_PATH_OVERLAP_POINT) return 0;
+	mkBatchOut3 out = {.status = &st, .lower = &lo, .upper = &up, .path = &path};
+	if (mkCollide3_Batch(&pairs, MK_BATCH_STATUS, 0.0, &out, NULL) != MK_OK) return 0;
+	if (path == MK_PATH_SEPARATING && isfinite(q->opt.max_clearance) && lo > 0.0) {
+		double v = lo - q->oerr[i] - q->perr[p->j] - MK_SQ_ROUND * mkCollide3_PairSize(q->obs[2 * i], p->inner);
+		*value = v < 0.0 ? v : 0.0;
+		return -1;
+	}
+	if (path != MK_PATH_OVERLAP_POINT) return 0;
 	*value = up;
 	return 1;
 }
@@ -771,10 +794,15 @@ static int mkSq_NarrowFinish(const mkSceneQuery *q, mkSqPart *p, const mkSqGroup
 				outer = NAN;
 		}
 		double v = -g->depth[m];
-		if (quick == 2 || (k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT && mkSq_Contact(q, p, i, upper[k], g->point[k], &v)))
-			return mkSq_Take(p, i, MK_POSE_COLLIDING, v, best, out);
+		int contact = quick == 2 ? 1 : k >= 0 && ok && path[k] == MK_PATH_OVERLAP_POINT
+			? mkSq_Contact(q, p, i, upper[k], g->point[k], &v) : 0;
+		if (contact == 1) return mkSq_Take(p, i, MK_POSE_COLLIDING, v, best, out);
 		int got = k >= 0 && ok;
 		if (got && upper[k] < *bound) *bound = upper[k];
+		if (contact == -1) { /* the models' band: uncertain */
+			mkSq_Take(p, i, MK_POSE_UNCERTAIN, v, best, out);
+			continue;
+		}
 		if (mkSq_Leave(q, p, left, i, got && !isnan(lower[k]) ? lower[k] : -INFINITY, outer, best, out)) return 1;
 	}
 	return 0;
