@@ -140,12 +140,12 @@ int main(void)
 				x[i] = c[0] + dd; y[i] = c[1]; z[i] = c[2];
 			}
 		}
-		unsigned char near[24];
-		mkSqPrep_Near(x, y, z, rad, n, c, prad, b, near);   /* (against the test written out below) */
+		uint32_t near = mkSqPrep_Near(x, y, z, rad, n, c, prad, b);   /* (against the test written out below) */
 		++near_cases;
+		near_wrong += n < 32 && near >> n != 0;
 		for (int i = 0; i < n; ++i) {
 			double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + rad[i] + b) * (1.0 + 1e-12);
-			near_wrong += near[i] != !(dx * dx + dy * dy + dz * dz > rr * rr);
+			near_wrong += (int)(near >> i & 1u) != !(dx * dx + dy * dy + dz * dz > rr * rr);
 		}
 	}
 	printf("test_cspace_prep: the spheres near a part, %d cases of 1 to 24 obstacles: %d wrong\n", near_cases, near_wrong);

@@ -12,10 +12,12 @@ long mkSqPrep_FirstBadScalar(const double *poses, long n)
 	return mkSqPrep_FirstBadBody(poses, n);
 }
 
-void mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
-	double prad, double b, unsigned char *near)
+uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
+	double prad, double b)
 {
-	for (int i = 0; i < n; ++i) near[i] = !mkSqPrep_Apart(c[0] - x[i], c[1] - y[i], c[2] - z[i], prad, r[i], b);
+	uint32_t m = 0;
+	for (int i = 0; i < n; ++i) m |= (uint32_t)!mkSqPrep_Apart(c[0] - x[i], c[1] - y[i], c[2] - z[i], prad, r[i], b) << i;
+	return m;
 }
 
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl)

@@ -12,6 +12,8 @@
 #ifndef MINK_CSPACE_SCENEPREP_H
 #define MINK_CSPACE_SCENEPREP_H
 
+#include <stdint.h>
+
 #include "mink/geom.h"
 #include "mink/sum.h"
 
@@ -60,14 +62,14 @@ long mkSqPrep_FirstBadAvx2(const double *poses, long n);
 long mkSqPrep_FirstBadAvx512(const double *poses, long n);
 mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl);
 
-/* The obstacles near a part (a scene of few obstacles, tested without a
- * hierarchy): near[i] = 0 when obstacle i's sphere (centre x, y, z [i],
- * radius r[i]) and the part's (centre c, radius prad) are certainly more
- * than b apart (mkSqPrep_Apart), else 1. The
+/* The obstacles near a part (a scene of at most 32 obstacles, tested
+ * without a hierarchy): bit i of the mask returned is 0 when obstacle i's
+ * sphere (centre x, y, z [i], radius r[i]) and the part's (centre c, radius
+ * prad) are certainly more than b apart (mkSqPrep_Apart), else 1. The
  * portable build only: for the few obstacles it serves, the vector builds
- * were no faster. Its test is mkSqPrep_Apart. */
-void mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
-	double prad, double b, unsigned char *near);
+ * were no faster. */
+uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
+	double prad, double b);
 
 /* The build for impl (MK_IMPL_AUTO: the widest the CPU runs),
  * NULL when the CPU or the build lacks it. */

@@ -25,7 +25,7 @@
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 #define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
 #define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
-#define MK_SQ_FLAT 24      /* scenes of at most this many obstacles: their spheres tested side by side, no hierarchy (finite max_clearance) */
+#define MK_SQ_FLAT 24      /* scenes of at most this many obstacles (<= 32: mkSqPrep_Near's mask): their spheres tested side by side, no hierarchy (finite max_clearance) */
 
 typedef mkSwBox mkSqBox;
 
@@ -892,11 +892,22 @@ typedef struct mkSqPose {
 	float lo[3], hi[3];
 	mkSqLeft left;
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
-	unsigned char near[MK_SQ_FLAT];   /* a scene of few obstacles: those near the part (mkSqPrep_Near), from fk on */
-	int fk;
+	uint32_t near;            /* a scene of few obstacles: those near the part not yet taken (mkSqPrep_Near) */
 	const mkSqPrep *prep;     /* the task's prepared poses (NULL: none), this one in lane */
 	int lane, prepared;       /* prepared: the parts whose centres and first query boxes are there */
 } mkSqPose;
+
+/* The index of the lowest set bit of m != 0. */
+static inline int mkSq_LowestBit(uint32_t m)
+{
+#if defined(__GNUC__)
+	return __builtin_ctz(m);
+#else
+	int i = 0;
+	while (!(m & 1u)) { m >>= 1; ++i; }
+	return i;
+#endif
+}
 
 /* The answer before any pair: free, no obstacle nearer than max_clearance. */
 static void mkSq_AnswerInit(const mkSceneQuery *q, mkPoseAnswer *out)
@@ -948,8 +959,7 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			if (x) mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(x->pc[3 * j][l], x->pc[3 * j + 1][l], x->pc[3 * j + 2][l]), p);
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
-				mkSqPrep_Near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq, s->near);
-				s->fk = 0;
+				s->near = mkSqPrep_Near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq);
 			} else {
 				if (x && s->bq == q->opt.max_clearance) {
 					for (int i = 0; i < 3; ++i) {
@@ -967,8 +977,7 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 		double b = s->best < s->bound ? s->best : s->bound;
 		int got = 0, n = 0;
 		if (q->flat) { /* the near obstacles in index order (their boxes obox[i]) */
-			for (; s->fk < q->nob && got < MK_SQ_BATCH; ++s->fk)
-				if (s->near[s->fk]) pos[got++] = s->fk;
+			for (; s->near != 0 && got < MK_SQ_BATCH; s->near &= s->near - 1) pos[got++] = mkSq_LowestBit(s->near);
 		} else {
 			if (b != s->bq) {
 				s->bq = b;
