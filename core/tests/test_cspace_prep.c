@@ -10,7 +10,7 @@
  * caught (a lane swapped). And the poses' test (mkSqPrep_FirstBad) of every
  * build against the test pose by pose, with NaN, infinite and too large
  * values and zero quaternions placed at random; and the test of the
- * spheres near a part (mkSqPrep_Near, built at -O3 -fno-math-errno)
+ * spheres near a part (mkSqPrep_Near's builds, as a bit mask)
  * against the scene query's test of two spheres written out. */
 #include <math.h>
 #include <stdio.h>
@@ -140,15 +140,20 @@ int main(void)
 				x[i] = c[0] + dd; y[i] = c[1]; z[i] = c[2];
 			}
 		}
-		uint32_t near = mkSqPrep_Near(x, y, z, rad, n, c, prad, b);   /* (against the test written out below) */
-		++near_cases;
-		near_wrong += n < 32 && near >> n != 0;
-		for (int i = 0; i < n; ++i) {
-			double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + rad[i] + b) * (1.0 + 1e-12);
-			near_wrong += (int)(near >> i & 1u) != !(dx * dx + dy * dy + dz * dz > rr * rr);
+		for (int v = 0; v < 3; ++v) { /* each build the CPU runs, against the test written out below */
+			mkSqNearFn f = mkSqPrep_PickNear(impls[v]);
+			if (!f) continue;
+			uint32_t near = f(x, y, z, rad, n, c, prad, b);
+			++near_cases;
+			near_wrong += n < 32 && near >> n != 0;
+			for (int i = 0; i < n; ++i) {
+				double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + rad[i] + b) * (1.0 + 1e-12);
+				near_wrong += (int)(near >> i & 1u) != !(dx * dx + dy * dy + dz * dz > rr * rr);
+			}
 		}
 	}
-	printf("test_cspace_prep: the spheres near a part, %d cases of 1 to 24 obstacles: %d wrong\n", near_cases, near_wrong);
+	printf("test_cspace_prep: the spheres near a part, %d cases of 1 to 24 obstacles (each build): %d wrong\n", near_cases,
+		near_wrong);
 	ENSURE(near_wrong == 0);
 	ENSURE(ran >= 1);
 	ENSURE(mkSqPrep_Pick(MK_IMPL_AUTO) != NULL);

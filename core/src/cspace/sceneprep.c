@@ -32,6 +32,16 @@ mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
 	return impl == MK_IMPL_AUTO || impl == MK_IMPL_SCALAR ? mkSqPrep_RunScalar : NULL;
 }
 
+mkSqNearFn mkSqPrep_PickNear(mkImpl impl)
+{
+	mkSqPrepFn f = mkSqPrep_Pick(impl);
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (f == mkSqPrep_RunAvx512) return mkSqPrep_NearAvx512;
+	if (f == mkSqPrep_RunAvx2) return mkSqPrep_NearAvx2;
+#endif
+	return f ? mkSqPrep_Near : NULL;
+}
+
 mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl)
 {
 	mkSqPrepFn f = mkSqPrep_Pick(impl);

@@ -65,11 +65,18 @@ mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl);
 /* The obstacles near a part (a scene of at most 32 obstacles, tested
  * without a hierarchy): bit i of the mask returned is 0 when obstacle i's
  * sphere (centre x, y, z [i], radius r[i]) and the part's (centre c, radius
- * prad) are certainly more than b apart (mkSqPrep_Apart), else 1. The
- * portable build only: for the few obstacles it serves, the vector builds
- * were no faster. */
+ * prad) are certainly more than b apart (mkSqPrep_Apart's operations), else
+ * 1. Portable, AVX2 and AVX-512F builds (the same masks), picked with the
+ * preparation's (mkSqPrep_PickNear). */
+typedef uint32_t (*mkSqNearFn)(const double *x, const double *y, const double *z, const double *r, int n,
+	const double c[3], double prad, double b);
 uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
 	double prad, double b);
+uint32_t mkSqPrep_NearAvx2(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
+	double prad, double b);
+uint32_t mkSqPrep_NearAvx512(const double *x, const double *y, const double *z, const double *r, int n,
+	const double c[3], double prad, double b);
+mkSqNearFn mkSqPrep_PickNear(mkImpl impl);
 
 /* The build for impl (MK_IMPL_AUTO: the widest the CPU runs),
  * NULL when the CPU or the build lacks it. */

@@ -46,6 +46,7 @@ struct mkSceneQuery {
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
 	mkSqPrepFn prep;   /* the poses' preparation (cspace/sceneprep.h) */
 	mkSqFirstBadFn firstbad;   /* its test of 3D poses */
+	mkSqNearFn near;   /* its build of mkSqPrep_Near */
 	int flat;          /* a scene of few obstacles (MK_SQ_FLAT): their spheres tested side by side (mkSqPrep_Near) */
 	double *sx, *sy, *sz, *sr;   /* the obstacles' spheres (osphere), axis by axis */
 };
@@ -182,6 +183,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->part_body = scene->part_count > 0 ? scene->parts : &scene->robot;
 	q->prep = mkSqPrep_Pick(MK_IMPL_AUTO);
 	q->firstbad = mkSqPrep_PickFirstBad(MK_IMPL_AUTO);
+	q->near = mkSqPrep_PickNear(MK_IMPL_AUTO);
 	q->flat = q->nob <= MK_SQ_FLAT;
 	size_t nb = (size_t)q->nob + 1;
 	q->obs = malloc(2 * nb * sizeof *q->obs);
@@ -959,7 +961,7 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			if (x) mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(x->pc[3 * j][l], x->pc[3 * j + 1][l], x->pc[3 * j + 2][l]), p);
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
-				s->near = mkSqPrep_Near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq);
+				s->near = q->near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq);
 			} else {
 				if (x && s->bq == q->opt.max_clearance) {
 					for (int i = 0; i < 3; ++i) {
