@@ -73,16 +73,22 @@ static inline void mkSq_Bounds(mkShape3 s, mkVec3 y, int dual, double *lo, doubl
 
 void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi) { mkSq_Bounds(s, y, dual, lo, hi); }
 
-/* Lower bounds of the distance along u (unit) between bodies b and x
- * whose centres are d apart (from b's to x's): u.d - h_b(u) - h_x(u), by
- * the support values' upper bounds (mkSq_NormBounds, no powers). */
-static double mkSq_AlongHi(const mkBody3 *b, const mkBody3 *x, mkVec3 u, mkVec3 d)
+/* A lower bound of the distance along u (unit) between bodies b and x
+ * whose centres are d apart (from b's to x's), u.d - h_b(u) - h_x(u): by
+ * the support values' upper bounds (mkSq_NormBounds, no powers), by their
+ * norms where the bounds leave open whether it exceeds lim (lim infinite:
+ * the bounds alone). */
+static double mkSq_Along(const mkBody3 *b, const mkBody3 *x, mkVec3 u, mkVec3 d, double lim)
 {
-	double blo, bhi, xlo, xhi;
-	mkSq_Bounds(b->shape, mkMat3_MulTVecInline(b->M, u), 1, &blo, &bhi);
-	mkSq_Bounds(x->shape, mkMat3_MulTVecInline(x->M, u), 1, &xlo, &xhi);
-	return mkVec3_Dot(u, d) - bhi - xhi;
+	mkVec3 yb = mkMat3_MulTVecInline(b->M, u), yx = mkMat3_MulTVecInline(x->M, u);
+	double blo, bhi, xlo, xhi, L = mkVec3_Dot(u, d);
+	mkSq_Bounds(b->shape, yb, 1, &blo, &bhi);
+	mkSq_Bounds(x->shape, yx, 1, &xlo, &xhi);
+	if (L - bhi - xhi > lim || L - blo - xlo <= lim) return L - bhi - xhi;
+	return L - (mkSq_Ellipsoid(b->shape) ? bhi : mkSq_ShapeNorm(b->shape, yb, 1))
+		- (mkSq_Ellipsoid(x->shape) ? xhi : mkSq_ShapeNorm(x->shape, yx, 1));
 }
+
 
 /* The lower bound of the distance between a body b whose exponents are at
  * most 1 and body x along the direction from the box of b's semi-axes
@@ -95,7 +101,7 @@ static double mkSq_BoxDirection(const mkBody3 *b, const mkBody3 *x, mkVec3 y, mk
 	mkVec3 w = mkMat3_MulVecInline(b->M, g);
 	double n = sqrt(mkVec3_Dot(w, w));
 	if (!(n > 0.0) || !isfinite(n)) return -INFINITY;
-	return mkSq_AlongHi(b, x, mkVec3_Scale(w, 1.0 / n), d);
+	return mkSq_Along(b, x, mkVec3_Scale(w, 1.0 / n), d, INFINITY);
 }
 
 static int mkSq_Boxy(mkShape3 s) { return s.eps1 <= 1.0 && s.eps2 <= 1.0 && !mkSq_Ellipsoid(s); }
@@ -191,20 +197,6 @@ static mkMat3 mkSq_Spread(const mkBody3 *b)
 			S.m[i][j] = S.m[j][i] = b->M.m[i][0] * s[0] * b->M.m[j][0] + b->M.m[i][1] * s[1] * b->M.m[j][1]
 				+ b->M.m[i][2] * s[2] * b->M.m[j][2];
 	return S;
-}
-
-/* The lower bound of the distance along u (unit) between b and x whose
- * centres are d apart (from b's to x's), by the support values' upper
- * bounds, by their norms where those do not exceed lim. */
-static double mkSq_Along(const mkBody3 *b, const mkBody3 *x, mkVec3 u, mkVec3 d, double lim)
-{
-	mkVec3 yb = mkMat3_MulTVecInline(b->M, u), yx = mkMat3_MulTVecInline(x->M, u);
-	double blo, bhi, xlo, xhi, L = mkVec3_Dot(u, d);
-	mkSq_Bounds(b->shape, yb, 1, &blo, &bhi);
-	mkSq_Bounds(x->shape, yx, 1, &xlo, &xhi);
-	if (L - bhi - xhi > lim || L - blo - xlo <= lim) return L - bhi - xhi;
-	return L - (mkSq_Ellipsoid(b->shape) ? bhi : mkSq_ShapeNorm(b->shape, yb, 1))
-		- (mkSq_Ellipsoid(x->shape) ? xhi : mkSq_ShapeNorm(x->shape, yx, 1));
 }
 
 /* The lower bound of the distance along (S_o + S_p)^-1 d, S the bodies'

@@ -899,18 +899,6 @@ typedef struct mkSqPose {
 	int lane, prepared;       /* prepared: the parts whose centres and first query boxes are there */
 } mkSqPose;
 
-/* The index of the lowest set bit of m != 0. */
-static inline int mkSq_LowestBit(uint32_t m)
-{
-#if defined(__GNUC__)
-	return __builtin_ctz(m);
-#else
-	int i = 0;
-	while (!(m & 1u)) { m >>= 1; ++i; }
-	return i;
-#endif
-}
-
 /* The answer before any pair: free, no obstacle nearer than max_clearance. */
 static void mkSq_AnswerInit(const mkSceneQuery *q, mkPoseAnswer *out)
 {
@@ -979,7 +967,7 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 		double b = s->best < s->bound ? s->best : s->bound;
 		int got = 0, n = 0;
 		if (q->flat) { /* the near obstacles in index order (their boxes obox[i]) */
-			for (; s->near != 0 && got < MK_SQ_BATCH; s->near &= s->near - 1) pos[got++] = mkSq_LowestBit(s->near);
+			for (; s->near != 0 && got < MK_SQ_BATCH; s->near &= s->near - 1) pos[got++] = mkSw_Low(s->near);
 		} else {
 			if (b != s->bq) {
 				s->bq = b;
