@@ -5,7 +5,10 @@
  * directions, lo <= h(y) <= hi for the support value h = mkShape3_SupportValue,
  * and for the gauge g the point y / lo lies on or outside the surface and
  * y / hi on or inside it (mkShape3_Implicit, which is 1 on the surface);
- * an ellipsoid's bounds equal mkSq_ShapeNorm's value to the bit. */
+ * an ellipsoid's bounds equal mkSq_ShapeNorm's value to the bit. The
+ * least of a convex quadratic over a box (mkSqQuick_BoxLeast) against
+ * every face of the box solved by elimination, and the box mkSqQuick_Make
+ * puts inside a shape: its corner's gauge at most 1 (long double). */
 #include <math.h>
 #include <stdio.h>
 
@@ -27,6 +30,83 @@ static double mkExponent(int kind)
 	case 5: return uni(1.0, 1.95);
 	default: return uni(0.02, 1.98);
 	}
+}
+
+static double mkQuad(double H[3][3], const double y[3], const double y0[3])
+{
+	double f = 0.0;
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) f += (y[i] - y0[i]) * H[i][j] * (y[j] - y0[j]);
+	return f;
+}
+
+/* The least of (y - y0)^T H (y - y0) over |y_i| <= w_i by brute force:
+ * on each of the 27 faces (each coordinate at -w, free or at w) the
+ * stationary point of the free coordinates by Gaussian elimination with
+ * pivoting, the least of those inside the box. */
+static double mkBoxLeastRef(double H[3][3], const double y0[3], const double w[3])
+{
+	double best = INFINITY;
+	for (int f = 0; f < 27; ++f) {
+		int at[3] = {f % 3 - 1, (f / 3) % 3 - 1, f / 9 - 1}, free[3], nf = 0;
+		double y[3], A[3][4];
+		for (int i = 0; i < 3; ++i) {
+			y[i] = at[i] * w[i];
+			if (at[i] == 0) free[nf++] = i;
+		}
+		/* sum_j H_ij (y_j - y0_j) = 0 for each free i */
+		for (int r = 0; r < nf; ++r) {
+			int i = free[r];
+			A[r][3] = 0.0;
+			for (int j = 0; j < 3; ++j)
+				if (at[j] != 0) A[r][3] -= H[i][j] * (y[j] - y0[j]);
+			for (int c = 0; c < nf; ++c) A[r][c] = H[i][free[c]];
+		}
+		int ok = 1;
+		for (int c = 0; c < nf && ok; ++c) {
+			int pv = c;
+			for (int r = c + 1; r < nf; ++r) if (fabs(A[r][c]) > fabs(A[pv][c])) pv = r;
+			if (!(fabs(A[pv][c]) > 0.0)) { ok = 0; break; }
+			for (int k = 0; k < 4; ++k) { double t = A[c][k]; A[c][k] = A[pv][k]; A[pv][k] = t; }
+			for (int r = 0; r < nf; ++r) {
+				if (r == c) continue;
+				double q = A[r][c] / A[c][c];
+				for (int k = c; k < 4; ++k) if (k < nf || k == 3) A[r][k] -= q * A[c][k];
+			}
+		}
+		if (!ok) continue;
+		for (int r = 0; r < nf; ++r) y[free[r]] = y0[free[r]] + A[r][3] / A[r][r];
+		int inside = 1;
+		for (int i = 0; i < 3; ++i) inside &= fabs(y[i]) <= w[i] * (1.0 + 1e-12);
+		if (inside) best = fmin(best, mkQuad(H, y, y0));
+	}
+	return best;
+}
+
+static long mkBoxLeastCases(void)
+{
+	long n = 0;
+	for (int t = 0; t < 20000; ++t) {
+		double B[3][3], H[3][3], y0[3], w[3], y[3];
+		/* rows of very different lengths for the harder cases: an elongated ellipsoid */
+		for (int i = 0; i < 3; ++i) {
+			double s = pow(10.0, uni(-(t % 4), t % 4));
+			for (int j = 0; j < 3; ++j) B[i][j] = s * uni(-1, 1);
+		}
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j) H[i][j] = B[0][i] * B[0][j] + B[1][i] * B[1][j] + B[2][i] * B[2][j];
+		for (int i = 0; i < 3; ++i) {
+			w[i] = uni(0.1, 10.0);
+			y0[i] = uni(-3.0, 3.0) * w[i];
+		}
+		mkSqQuick_BoxLeast(H, y0, w, y);
+		for (int i = 0; i < 3; ++i) ENSURE(fabs(y[i]) <= w[i]);
+		double ref = mkBoxLeastRef(H, y0, w), scale = 0.0;
+		for (int i = 0; i < 3; ++i) scale += H[i][i] * (fabs(y0[i]) + w[i]) * (fabs(y0[i]) + w[i]);
+		ENSURE(isfinite(ref) && mkQuad(H, y, y0) <= ref + 1e-9 * scale);
+		++n;
+	}
+	return n;
 }
 
 int main(void)
@@ -53,6 +133,16 @@ int main(void)
 			}
 		++checked;
 	}
-	printf("test_cspace_pair: %ld shapes and directions\n", checked);
+	/* the box inside the shape: its corner's gauge at most 1, in long double by the powers' definition */
+	for (int t = 0; t < 20000; ++t) {
+		mkShape3 s = { uni(0.1, 10.0), uni(0.1, 10.0), uni(0.1, 10.0), mkExponent(t % 6), mkExponent((t / 6) % 6) };
+		mkSqQuick k = mkSqQuick_Make(mkBody3_Make(s, mkMat3_Identity(), mkVec3_Make(0, 0, 0)));
+		long double p1 = 2.0L / s.eps1, p2 = 2.0L / s.eps2, u = k.w[0] / (long double)s.a, v = k.w[1] / (long double)s.b;
+		long double z = k.w[2] / (long double)s.c, m = fmaxl(u, v), r = fminl(u, v) / m;
+		long double xy = m * powl(1.0L + powl(r, p2), 1.0L / p2), M = fmaxl(xy, z), R = fminl(xy, z) / M;
+		ENSURE(M * powl(1.0L + powl(R, p1), 1.0L / p1) <= 1.0L);
+	}
+	long boxes = mkBoxLeastCases();
+	printf("test_cspace_pair: %ld shapes and directions, %ld least points on boxes\n", checked, boxes);
 	return mk_summary("test_cspace_pair");
 }

@@ -25,6 +25,11 @@ mkSqQuick mkSqQuick_Make(mkBody3 b)
 	k.rho = 1.0 / (sqrt(fi) * sqrt(1.0 / (b.shape.a * b.shape.a) + 1.0 / (b.shape.b * b.shape.b)
 		+ 1.0 / (b.shape.c * b.shape.c))) * (1.0 - 1e-12);
 	k.slack = 64.0 * DBL_EPSILON * (1.0 + sqrt(fm * fi));
+	/* by Hoelder per level (mkSq_Bounds), the gauge is at most 2^((eps1 + eps2) / 2) times the box's */
+	double f = exp2(-0.5 * (b.shape.eps1 + b.shape.eps2)) * (1.0 - 1e-12);
+	k.w[0] = f * b.shape.a;
+	k.w[1] = f * b.shape.b;
+	k.w[2] = f * b.shape.c;
 	return k;
 }
 
@@ -230,6 +235,129 @@ static double mkSq_FacesApart(const mkBody3 *b, const mkSqQuick *k, const mkBody
 	return f;
 }
 
+/* Solves A x = r for a symmetric positive definite A (by its adjugate);
+ * 0 when A is singular as computed. */
+static int mkSq_Solve3(double A[3][3], const double r[3], double x[3])
+{
+	double c00 = A[1][1] * A[2][2] - A[1][2] * A[2][1], c01 = A[1][2] * A[2][0] - A[1][0] * A[2][2];
+	double c02 = A[1][0] * A[2][1] - A[1][1] * A[2][0];
+	double det = A[0][0] * c00 + A[0][1] * c01 + A[0][2] * c02;
+	if (!(det > 0.0) || !isfinite(det)) return 0;
+	double c11 = A[0][0] * A[2][2] - A[0][2] * A[2][0], c12 = A[0][1] * A[2][0] - A[0][0] * A[2][1];
+	double c22 = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+	x[0] = (c00 * r[0] + c01 * r[1] + c02 * r[2]) / det;
+	x[1] = (c01 * r[0] + c11 * r[1] + c12 * r[2]) / det;
+	x[2] = (c02 * r[0] + c12 * r[1] + c22 * r[2]) / det;
+	return 1;
+}
+
+/* (mkSqQuick_BoxLeast: scenepair.h) */
+void mkSqQuick_BoxLeast(double H[3][3], const double y0[3], const double w[3], double y[3])
+{
+	int at[3];   /* -1, 0, 1: at -w_i, free, at w_i */
+	for (int i = 0; i < 3; ++i) {
+		at[i] = y0[i] > w[i] ? 1 : y0[i] < -w[i] ? -1 : 0;
+		y[i] = at[i] ? at[i] * w[i] : y0[i];
+	}
+	for (int step = 0; step < 8; ++step) {
+		double g[3], A[3][3], r[3], dy[3];
+		for (int i = 0; i < 3; ++i)
+			g[i] = H[i][0] * (y[0] - y0[0]) + H[i][1] * (y[1] - y0[1]) + H[i][2] * (y[2] - y0[2]);
+		int nfree = 0;
+		for (int i = 0; i < 3; ++i) {
+			nfree += at[i] == 0;
+			r[i] = at[i] ? 0.0 : -g[i];
+			for (int j = 0; j < 3; ++j) A[i][j] = at[i] || at[j] ? (double)(i == j) : H[i][j];
+		}
+		if (nfree > 0) {
+			if (!mkSq_Solve3(A, r, dy)) return;
+			double t = 1.0;
+			int block = -1;
+			for (int i = 0; i < 3; ++i) {
+				if (at[i]) continue;
+				double lim = dy[i] > 0.0 ? w[i] - y[i] : -w[i] - y[i];
+				if (fabs(dy[i]) * t > fabs(lim)) { t = lim / dy[i]; block = i; }
+			}
+			for (int i = 0; i < 3; ++i)
+				if (!at[i]) y[i] = fmax(-w[i], fmin(w[i], y[i] + t * dy[i]));
+			if (block >= 0) {
+				at[block] = dy[block] > 0.0 ? 1 : -1;
+				y[block] = at[block] * w[block];
+				continue;
+			}
+			for (int i = 0; i < 3; ++i)
+				g[i] = H[i][0] * (y[0] - y0[0]) + H[i][1] * (y[1] - y0[1]) + H[i][2] * (y[2] - y0[2]);
+		}
+		/* the least on this face: let go the bound whose multiplier is most wrong (moving inwards lowers it) */
+		int worst = -1;
+		double most = 0.0;
+		for (int i = 0; i < 3; ++i)
+			if (at[i] && at[i] * g[i] > most) { most = at[i] * g[i]; worst = i; }
+		if (worst < 0) return;
+		at[worst] = 0;
+	}
+}
+
+/* The transpose of a matrix. */
+static mkMat3 mkSq_T(const mkMat3 *R)
+{
+	mkMat3 t = {{{R->m[0][0], R->m[1][0], R->m[2][0]}, {R->m[0][1], R->m[1][1], R->m[2][1]},
+		{R->m[0][2], R->m[1][2], R->m[2][2]}}};
+	return t;
+}
+
+/* A box-like inner model X (M^-1 Mi, the box inside it w: mkSqQuick's)
+ * and an ellipsoid E (its world frame to its canonical one: Ei): the point
+ * x of X's box where E's gauge is least (mkSqQuick_BoxLeast). Returns 1 when
+ * that gauge is below 1 (*x), else 0 and *n, the normal of E's level set
+ * at x, pointing from E towards X (not unit). */
+static int mkSq_BoxPoint(const mkBody3 *X, const mkMat3 *Mi, const double w[3], const mkBody3 *E, mkMat3 Ei, mkVec3 *x,
+	mkVec3 *n)
+{
+	/* Bw: world to E's unit ball; B = Bw M_X: X's frame to it */
+	double s[3] = {1.0 / E->shape.a, 1.0 / E->shape.b, 1.0 / E->shape.c};
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j) Ei.m[i][j] *= s[i];
+	mkMat3 B = mkMat3_MulInline(Ei, X->M);
+	mkVec3 c = mkMat3_MulVecInline(*Mi, mkVec3_Sub(E->t, X->t));
+	double H[3][3], y0[3] = {c.x, c.y, c.z}, y[3];
+	for (int i = 0; i < 3; ++i)
+		for (int j = i; j < 3; ++j)
+			H[i][j] = H[j][i] = B.m[0][i] * B.m[0][j] + B.m[1][i] * B.m[1][j] + B.m[2][i] * B.m[2][j];
+	mkSqQuick_BoxLeast(H, y0, w, y);
+	mkVec3 yv = {y[0], y[1], y[2]}, z = mkMat3_MulVecInline(B, mkVec3_Sub(yv, c));
+	*x = mkVec3_Add(X->t, mkMat3_MulVecInline(X->M, yv));
+	*n = mkMat3_MulTVecInline(Ei, z);   /* the gradient of E's gauge (squared, halved) at x */
+	return mkVec3_Dot(z, z) < 1.0;
+}
+
+/* A box-like inner model against an ellipsoid one, the obstacle's o and
+ * the part's p (either way round): the point of the box inside the
+ * box-like one where the ellipsoid's gauge is least (mkSq_BoxPoint).
+ * Returns 2 when it certifies an overlap deeper than m
+ * (mkSqQuick_PointDepth, *depth), 1 when the normal of the ellipsoid's
+ * level set there certifies the outer models at least lim apart
+ * (mkSq_Along; not tried when lim is infinite), else 0. */
+static int mkSq_BoxEllipsoid(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 d, double lim, double m,
+	double *depth)
+{
+	mkVec3 x, n;
+	mkMat3 Rt = mkSq_T(R), Pi = mkMat3_MulInline(p->kinner->Mi, Rt);   /* the part's world frame to its canonical one */
+	int obox = mkSq_Boxy(o->inner->shape);
+	int in = obox ? mkSq_BoxPoint(o->inner, &o->kinner->Mi, o->kinner->w, p->inner, Pi, &x, &n)
+		: mkSq_BoxPoint(p->inner, &Pi, p->kinner->w, o->inner, o->kinner->Mi, &x, &n);
+	if (in) {
+		double dep = mkSqQuick_PointDepth(o, p, R, x);
+		if (!(dep > m)) return 0;
+		*depth = dep;
+		return 2;
+	}
+	double l = sqrt(mkVec3_Dot(n, n));
+	if (!isfinite(lim) || !(l > 0.0) || !isfinite(l)) return 0;
+	/* (along d: from the obstacle to the part) */
+	return mkSq_Along(o->outer, p->outer, mkVec3_Scale(n, (obox ? -1.0 : 1.0) / l), d, lim) > lim;
+}
+
 int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, double best, double *depth)
 {
 	const mkBody3 *ob = o->outer, *pb = p->outer;
@@ -252,6 +380,12 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 			if (f > best + m) return 1;
 			if (f > m) return isfinite(best) ? 0 : 3;
 		}
+	}
+	/* a box-like body and an ellipsoid: the box inside the box-like one (about a declared box) */
+	if ((mkSq_Boxy(o->inner->shape) && mkSq_Ellipsoid(p->inner->shape))
+		|| (mkSq_Boxy(p->inner->shape) && mkSq_Ellipsoid(o->inner->shape))) {
+		int r = mkSq_BoxEllipsoid(o, p, R, d, isfinite(best) ? best + m + e : INFINITY, m, depth);
+		if (r) return r;
 	}
 	/* a box-like body: the direction from the box of its semi-axes to the other's centre */
 	if (isfinite(best) && (mkSq_Boxy(ob->shape) || mkSq_Boxy(pb->shape)) && mkSq_BoxApart(o, p, R, d, best + m + e))

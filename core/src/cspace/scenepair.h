@@ -42,6 +42,7 @@ typedef struct mkSqQuick {
 	double r;      /* max(a, b, c) |M|_F: the radius in the pair's size (mkCollide3_PairSize) */
 	double rho;    /* a ball about the centre inside the body: sigma_min(M) / |(1/a, 1/b, 1/c)| at least */
 	double slack;  /* relative rounding of the gauge */
+	double w[3];   /* the half-sides of a box about the centre inside the shape (canonical frame): the semi-axes times 2^(-(eps1 + eps2) / 2), less a rounding allowance */
 } mkSqQuick;
 
 mkSqQuick mkSqQuick_Make(mkBody3 b);
@@ -63,6 +64,14 @@ double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual);
  * them first where they settle it by a margin of 1e-13 of the pair's size
  * (its answers are those of the norms). */
 void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi);
+
+/* The point y of the box |y_i| <= w_i where (y - y0)^T H (y - y0) is
+ * least (H symmetric positive definite), by the primal active-set method
+ * from the point of the box nearest y0: the least on the face of the
+ * bounds held, a step to the first bound met, or the bound let go whose
+ * multiplier has the wrong sign. At most 8 steps (mkSqQuick_Pair verifies
+ * what it makes of the point). */
+void mkSqQuick_BoxLeast(double H[3][3], const double y0[3], const double w[3], double y[3]);
 
 /* A body's two models, placed, with their quick data. */
 typedef struct mkSqModels {
