@@ -262,7 +262,7 @@ static int onepair_pose(const mkScene *s, const double *P, const mkPoseAnswer *a
 static void test_3d_onepair(int NOB, double half)
 {
 	enum { NP = 100 };
-	static char text[40 * 160 + 512];
+	static char text[200 * 160 + 512];
 	spread = half;
 	scene3_text(text, sizeof text, NOB);
 	mkScene s;
@@ -312,20 +312,21 @@ static void test_3d_onepair(int NOB, double half)
 static void test_3d_boxes(int NOB)
 {
 	enum { NP = 300, NB = 100 };
-	static char text[30 * 160 + 512];
+	static char text[150 * 160 + 512];
+	double span = NOB > 30 ? 6.0 * cbrt(NOB / 30.0) : 6.0;   /* (larger scenes as dense as 30 boxes in [-6, 6]^3) */
 	size_t n = (size_t)snprintf(text, sizeof text, "dim 3\npart ellipsoid a=1 b=0.5 c=0.3\n"
 		"part superquadric a=0.5 b=0.3 c=0.3 eps1=0.6 eps2=1.3 quat=0.9,0.2,0.3,0 at=1.2,0.3,0.2\nobject clutter\n");
 	for (int i = 0; i < NOB; ++i)
 		n += (size_t)snprintf(text + n, sizeof text - n, "obstacle box size=%.5f,%.5f,%.5f quat=%.4f,%.4f,%.4f,%.4f "
 			"at=%.5f,%.5f,%.5f\n", uni(0.2, 3), uni(0.2, 3), uni(0.2, 3), uni(-1, 1), uni(-1, 1), uni(-1, 1), uni(-1, 1),
-			uni(-6, 6), uni(-6, 6), uni(-6, 6));
+			uni(-span, span), uni(-span, span), uni(-span, span));
 	snprintf(text + n, sizeof text - n, "quaternions 1,0,0,0\n");
 	mkScene s;
 	char msg[512];
 	ENSURE(mkScene_Parse(text, &s, msg, sizeof msg) == MK_OK);
 	static double poses[NP * 7];
 	for (int k = 0; k < NP; ++k) {
-		for (int d = 0; d < 3; ++d) poses[7 * k + d] = uni(-6, 6);
+		for (int d = 0; d < 3; ++d) poses[7 * k + d] = uni(-span, span);
 		for (int d = 3; d < 7; ++d) poses[7 * k + d] = uni(-1, 1);
 	}
 	/* the last NB poses put the first part (at the robot's origin) against a box's face centre, apart from the
@@ -520,8 +521,11 @@ int main(void)
 	test_3d();
 	test_2d();
 	test_3d_onepair(40, 10.0);
-	test_3d_onepair(16, 5.0);   /* (a scene of few obstacles: their spheres side by side, no hierarchy) */
+	test_3d_onepair(16, 5.0);
 	test_3d_boxes(30);
 	test_3d_boxes(16);
+	/* (capped queries: scenes of at most 128 obstacles test their spheres side by side, larger ones walk the hierarchy) */
+	test_3d_onepair(200, 17.0);
+	test_3d_boxes(150);
 	return mk_summary("test_scene_query");
 }

@@ -62,8 +62,9 @@ long mkSqPrep_FirstBadAvx2(const double *poses, long n);
 long mkSqPrep_FirstBadAvx512(const double *poses, long n);
 mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl);
 
-/* The obstacles near a part (a scene of at most 32 obstacles, tested
- * without a hierarchy): bit i of the mask returned is 0 when obstacle i's
+/* The obstacles near a part, at most 32 at a time (a scene of few
+ * obstacles, tested without a hierarchy, takes as many calls as it needs):
+ * bit i of the mask returned is 0 when obstacle i's
  * sphere (centre x, y, z [i], radius r[i]) and the part's (centre c, radius
  * prad) are certainly more than b apart (mkSqPrep_Apart's operations), else
  * 1. Portable, AVX2 and AVX-512F builds (the same masks), picked with the

@@ -25,7 +25,9 @@
 #define MK_SQ_BATCH 8       /* candidate pairs screened per batch call */
 #define MK_SQ_LEFT 32       /* pairs a part leaves to the one-pair query before they are answered */
 #define MK_SQ_SPHERE_NODES 2  /* inner nodes a part's sphere opens before its exact box is computed */
-#define MK_SQ_FLAT 24      /* scenes of at most this many obstacles (<= 32: mkSqPrep_Near's mask): their spheres tested side by side, no hierarchy (finite max_clearance) */
+#define MK_SQ_FLAT 128     /* scenes of at most this many obstacles: their spheres tested side by side, 32 to a mask (mkSqPrep_Near's vector builds), no hierarchy (finite max_clearance) */
+#define MK_SQ_FLAT_PORTABLE 24   /* the same with mkSqPrep_Near's portable build */
+#define MK_SQ_WORDS (MK_SQ_FLAT / 32)
 
 typedef mkSwBox mkSqBox;
 
@@ -184,7 +186,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->prep = mkSqPrep_Pick(MK_IMPL_AUTO);
 	q->firstbad = mkSqPrep_PickFirstBad(MK_IMPL_AUTO);
 	q->near = mkSqPrep_PickNear(MK_IMPL_AUTO);
-	q->flat = q->nob <= MK_SQ_FLAT;
+	q->flat = q->nob <= (q->near == mkSqPrep_Near ? MK_SQ_FLAT_PORTABLE : MK_SQ_FLAT);
 	size_t nb = (size_t)q->nob + 1;
 	q->obs = malloc(2 * nb * sizeof *q->obs);
 	q->part = malloc(2 * (size_t)q->parts * sizeof *q->part);
@@ -894,7 +896,8 @@ typedef struct mkSqPose {
 	float lo[3], hi[3];
 	mkSqLeft left;
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
-	uint32_t near;            /* a scene of few obstacles: those near the part not yet taken (mkSqPrep_Near) */
+	uint32_t near[MK_SQ_WORDS];   /* a scene of few obstacles: those near the part not yet taken, 32 to a word (mkSqPrep_Near) */
+	int word;                 /* the first word of near not yet empty */
 	const mkSqPrep *prep;     /* the task's prepared poses (NULL: none), this one in lane */
 	int lane, prepared;       /* prepared: the parts whose centres and first query boxes are there */
 } mkSqPose;
@@ -949,7 +952,10 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			if (x) mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(x->pc[3 * j][l], x->pc[3 * j + 1][l], x->pc[3 * j + 2][l]), p);
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
-				s->near = q->near(q->sx, q->sy, q->sz, q->sr, q->nob, p->c, q->prad[j], s->bq);
+				for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
+					s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32, p->c,
+						q->prad[j], s->bq);
+				s->word = 0;
 			} else {
 				if (x && s->bq == q->opt.max_clearance) {
 					for (int i = 0; i < 3; ++i) {
@@ -967,7 +973,15 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 		double b = s->best < s->bound ? s->best : s->bound;
 		int got = 0, n = 0;
 		if (q->flat) { /* the near obstacles in index order (their boxes obox[i]) */
-			for (; s->near != 0 && got < MK_SQ_BATCH; s->near &= s->near - 1) pos[got++] = mkSw_Low(s->near);
+			for (int words = (q->nob + 31) / 32; got < MK_SQ_BATCH && s->word < words;) {
+				uint32_t m = s->near[s->word];
+				if (m == 0) {
+					++s->word;
+					continue;
+				}
+				pos[got++] = 32 * s->word + mkSw_Low(m);
+				s->near[s->word] = m & (m - 1);
+			}
 		} else {
 			if (b != s->bq) {
 				s->bq = b;
