@@ -1,7 +1,9 @@
 /* scenepair.c - the scene query's quick certificates of a pair
  * (cspace/scenepair.h): support values and gauges of superquadrics by
- * their norms, a separating direction along the centre line and a common
- * point on the centre segment. */
+ * their norms, separating directions (the centre line, from a box-like
+ * body's box, the sum of the semi-axes' ellipsoids, a box's faces) and
+ * common points (on the centre segment, past a box's face, and the point of
+ * a box-like body's inner box where an ellipsoid's gauge is least). */
 #include "cspace/scenepair.h"
 
 #include <float.h>

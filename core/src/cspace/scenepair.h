@@ -9,6 +9,13 @@
  *    (best finite: the pair is certainly at least best away), 3 when
  *    f(u) > m and best is infinite (separated; the exact distance is
  *    wanted), 0 when m < f(u) <= best + m (left to the batch);
+ *  - a box-like inner model against an ellipsoid one (either way round):
+ *    the point x of the box inside the box-like one (mkSqQuick's w) where
+ *    the ellipsoid's gauge is least (mkSqQuick_BoxLeast). Returns 2 when
+ *    that gauge is below 1 and x certifies the overlap by the gauges
+ *    (mkSqQuick_PointDepth, below), 1 when best is finite and f along the
+ *    normal of the ellipsoid's level set at x exceeds best + m (+ 1e-13 of
+ *    the size);
  *  - best finite, a body whose exponents are at most 1 (box-like, not an
  *    ellipsoid): f(u) along u from the box of its semi-axes (which holds
  *    it) to the other's centre, by the support values' upper bounds
