@@ -159,7 +159,8 @@ MK_API mkResult mkCollide3_BatchReference(const mkBatchPairs3 *pairs, mkBatchMod
 
 /* Which support map the searches of mkCollide3_Batch run on this
  * processor: "avx512" (8 lanes, SLEEF's exp2 / log2), "avx2" (4 lanes), or
- * "scalar" (the solver's, four pairs in lock-step). For results' metadata. */
+ * "scalar" (the solver's, four pairs in lock-step, eight where every pair
+ * has an ellipsoid). For results' metadata. */
 MK_API const char *mkCollide3_BatchLanes(void);
 
 /* "status", "clearance", "distance", "full"; NULL for another value. */

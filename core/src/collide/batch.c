@@ -472,8 +472,10 @@ static void mkBatch_EvalVector(int nl, const mkSupBody *const b[MK_LANES], const
 
 /* Searches in lock-step: the superquadric bodies of up to this many pairs'
  * searches are evaluated together (mkSupBody_EvalLanes: their chains of
- * libm calls interleaved, which the processor overlaps). */
-#define MK_BATCH_LANES (MK_LANES / 2)
+ * libm calls interleaved, which the processor overlaps; the vector builds
+ * MK_LANES at a time). Half as many where some pair has two superquadrics
+ * (mkBatch_LockStep). */
+#define MK_BATCH_LANES MK_LANES
 
 /* Pair k's bodies. */
 static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
@@ -482,7 +484,21 @@ static const mkBody3 *mkBatch_Body(const mkBatchPairs3 *pairs, int which, int k)
 	return &(which ? pairs->bodies2 : pairs->bodies1)[ix ? ix[k] : k];
 }
 
-/* The certificates' searches of every pair, MK_BATCH_LANES at a time, each
+/* The pairs searched in lock-step: MK_BATCH_LANES when every pair has an
+ * ellipsoid (its support points are computed apart, so that each pair
+ * brings one body to the vector lanes), else half as many (measured: on
+ * pairs of two superquadrics the wider lock-step was no faster). */
+static int mkBatch_LockStep(const mkBatchPairs3 *pairs)
+{
+	for (int k = 0; k < pairs->count; ++k) {
+		mkShape3 s1 = mkBatch_Body(pairs, 0, k)->shape, s2 = mkBatch_Body(pairs, 1, k)->shape;
+		if (!(s1.eps1 == 1.0 && s1.eps2 == 1.0) && !(s2.eps1 == 1.0 && s2.eps2 == 1.0))
+			return MK_BATCH_LANES / 2;
+	}
+	return MK_BATCH_LANES;
+}
+
+/* The certificates' searches of every pair, mkBatch_LockStep at a time, each
  * lane taking the next pair as its search ends; then each answer
  * (mkBatch_Finish). */
 static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double delta, const mkBatchOut3 *out,
@@ -494,9 +510,9 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 	q.stats = stats;
 	q.failed = failed;
 	mkGilbert g[MK_BATCH_LANES];
-	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0;
+	int live[MK_BATCH_LANES] = { 0 }, next = 0, nlive = 0, lanes = mkBatch_LockStep(pairs);
 	for (;;) {
-		for (int l = 0; l < MK_BATCH_LANES; ++l)
+		for (int l = 0; l < lanes; ++l)
 			while (!live[l] && (q.nretry > 0 || next < pairs->count)) {
 				int retry = q.nretry > 0, k = retry ? q.retry[--q.nretry] : next++;
 				mkBatchPath p;
@@ -516,11 +532,11 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 			mkBatchEll_Flush(&q, mode, delta, out);
 			continue;
 		}
-		const mkSupBody *bs[MK_LANES];
+		const mkSupBody *bs[MK_LANES];   /* (at most MK_LANES superquadrics: mkBatch_LockStep) */
 		mkVec3 ys[MK_LANES];
 		mkSupAt *as[MK_LANES], s[MK_BATCH_LANES][2];
 		int nl = 0;
-		for (int l = 0; l < MK_BATCH_LANES; ++l)
+		for (int l = 0; l < lanes; ++l)
 			for (int j = 0; live[l] && j < 2; ++j) {
 				const mkSupBody *kb = j ? &g[l].c.k2 : &g[l].c.k1;
 				mkVec3 y = j ? mkVec3_Neg(g[l].m) : g[l].m;
@@ -536,7 +552,7 @@ static void mkBatch_Lanes(const mkBatchPairs3 *pairs, mkBatchMode mode, double d
 			mkBatch_EvalVector(nl, bs, ys, as, vf);
 		else if (nl > 0)
 			mkSupBody_EvalLanes(nl, bs, ys, as);
-		for (int l = 0; l < MK_BATCH_LANES; ++l) {
+		for (int l = 0; l < lanes; ++l) {
 			int p = live[l] ? mkGilbert_Step(&g[l], &s[l][0], &s[l][1]) : -1;
 			if (p < 0)
 				continue;
