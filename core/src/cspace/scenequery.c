@@ -484,6 +484,28 @@ typedef struct mkSqWalk {
 	double d2[MK_SW_STACK];
 } mkSqWalk;
 
+/* A smooth ellipsoid part (its exact box without placing it). */
+static int mkSq_EllipsoidPart(const mkSqPart *p)
+{
+	return p->smooth && p->rest[1].shape.eps1 == 1.0 && p->rest[1].shape.eps2 == 1.0;
+}
+
+/* A smooth ellipsoid part's exact box without placing it: half-width i is
+ * |diag(a, b, c) (R M)^T e_i|, its support value at e_i, rounded up as
+ * mkSq_ExactBox's (R M as mkSq_Place forms it). */
+static void mkSq_EllipsoidBox(mkSqPart *p)
+{
+	const mkBody3 *b = &p->rest[1];
+	mkMat3 M = mkMat3_MulInline(*p->R, b->M);
+	double s[3] = {b->shape.a, b->shape.b, b->shape.c};
+	for (int i = 0; i < 3; ++i) {
+		double x = M.m[i][0] * s[0], y = M.m[i][1] * s[1], z = M.m[i][2] * s[2];
+		p->h[i] = sqrt(x * x + y * y + z * z) * (1.0 + 1e-13);
+	}
+	p->reach = 0.0;
+	p->has_box = 1;
+}
+
 /* Switch the part to its exact box: its half-widths, the support values
  * at +-e_i (the rows of M, by the dual norms) rounded up (mkSq_ExactBox),
  * and the stacked children's distances again (mkSq_BoxMode). */
@@ -875,7 +897,8 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c
 /* A pose with a finite max_clearance, walked part by part by box queries
  * of the eight-way hierarchy instead of the walk nearest first: the
  * obstacles whose boxes meet the part's box grown by the bound b =
- * min(best, bound) on every side (its sphere's box; its exact box when b
+ * min(best, bound) on every side (its sphere's box, an ellipsoid part's
+ * exact box from the start (mkSq_EllipsoidBox); its exact box when b
  * changes after the exact box was computed), each tested by mkSq_Far and
  * mkSq_SpheresApart, by the exact box once the sphere does not rule out an
  * obstacle, and the rest as in mkSq_PartPose. The pose stops where its
@@ -963,6 +986,10 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 						s->hi[i] = x->hi[3 * j + i][l];
 					}
 				} else {
+					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+				}
+				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
+					mkSq_EllipsoidBox(p);
 					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 				}
 				mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
