@@ -300,14 +300,6 @@ void mkSqQuick_BoxLeast(double H[3][3], const double y0[3], const double w[3], d
 	}
 }
 
-/* The transpose of a matrix. */
-static mkMat3 mkSq_T(const mkMat3 *R)
-{
-	mkMat3 t = {{{R->m[0][0], R->m[1][0], R->m[2][0]}, {R->m[0][1], R->m[1][1], R->m[2][1]},
-		{R->m[0][2], R->m[1][2], R->m[2][2]}}};
-	return t;
-}
-
 /* A box-like inner model X (M^-1 Mi, the box inside it w: mkSqQuick's)
  * and an ellipsoid E (its world frame to its canonical one: Ei): the point
  * x of X's box where E's gauge is least (mkSqQuick_BoxLeast). Returns 1 when
@@ -344,7 +336,7 @@ static int mkSq_BoxEllipsoid(const mkSqModels *o, const mkSqModels *p, const mkM
 	double *depth)
 {
 	mkVec3 x, n;
-	mkMat3 Rt = mkSq_T(R), Pi = mkMat3_MulInline(p->kinner->Mi, Rt);   /* the part's world frame to its canonical one */
+	mkMat3 Pi = mkMat3_MulInline(p->kinner->Mi, mkMat3_Transpose(*R));   /* the part's world frame to its canonical one */
 	int obox = mkSq_Boxy(o->inner->shape);
 	int in = obox ? mkSq_BoxPoint(o->inner, &o->kinner->Mi, o->kinner->w, p->inner, Pi, &x, &n)
 		: mkSq_BoxPoint(p->inner, &Pi, p->kinner->w, o->inner, o->kinner->Mi, &x, &n);

@@ -980,16 +980,15 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 						q->prad[j], s->bq);
 				s->word = 0;
 			} else {
-				if (x && s->bq == q->opt.max_clearance) {
+				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
+					mkSq_EllipsoidBox(p);
+					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+				} else if (x && s->bq == q->opt.max_clearance) {
 					for (int i = 0; i < 3; ++i) {
 						s->lo[i] = x->lo[3 * j + i][l];
 						s->hi[i] = x->hi[3 * j + i][l];
 					}
 				} else {
-					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
-				}
-				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
-					mkSq_EllipsoidBox(p);
 					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 				}
 				mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
