@@ -5,7 +5,9 @@
  * directions, lo <= h(y) <= hi for the support value h = mkShape3_SupportValue,
  * and for the gauge g the point y / lo lies on or outside the surface and
  * y / hi on or inside it (mkShape3_Implicit, which is 1 on the surface);
- * an ellipsoid's bounds equal mkSq_ShapeNorm's value to the bit. The
+ * an ellipsoid's bounds equal mkSq_ShapeNorm's value to the bit, and
+ * every shape's mkSq_ShapeNorm is within 1e-14 of the powers' definition
+ * evaluated in long double. The
  * least of a convex quadratic over a box (mkSqQuick_BoxLeast) against
  * every face of the box solved by elimination, and the box mkSqQuick_Make
  * puts inside a shape: its corner's gauge at most 1 (long double). */
@@ -142,6 +144,27 @@ int main(void)
 		long double xy = m * powl(1.0L + powl(r, p2), 1.0L / p2), M = fmaxl(xy, z), R = fminl(xy, z) / M;
 		ENSURE(M * powl(1.0L + powl(R, p1), 1.0L / p1) <= 1.0L);
 	}
+	/* the norms (mkSq_ShapeNorm, by base-2 logarithms and exponentials) against the powers' definition in
+	 * long double: within 1e-14 relative, two orders under the certificates' margin (MK_SQ_QUICK) */
+	double worst = 0.0;
+	for (int t = 0; t < 60000; ++t) {
+		mkShape3 s = { uni(0.1, 10.0), uni(0.1, 10.0), uni(0.1, 10.0), mkExponent(t % 6), mkExponent((t / 6) % 6) };
+		mkVec3 y = { uni(-1, 1), uni(-1, 1), uni(-1, 1) };
+		if (t % 7 == 0) y.y = 0.0;
+		if (t % 13 == 0) y.x = y.y * (1.0 + uni(-1e-9, 1e-9));   /* nearly equal components */
+		for (int dual = 0; dual < 2; ++dual) {
+			long double p1 = dual ? 2.0L / (2.0L - s.eps1) : 2.0L / s.eps1, p2 = dual ? 2.0L / (2.0L - s.eps2) : 2.0L / s.eps2;
+			long double u = fabsl(y.x), v = fabsl(y.y), z = fabsl(y.z);
+			if (dual) { u *= s.a; v *= s.b; z *= s.c; }
+			else { u /= s.a; v /= s.b; z /= s.c; }
+			long double m = fmaxl(u, v), xy = m > 0.0L ? m * powl(1.0L + powl(fminl(u, v) / m, p2), 1.0L / p2) : 0.0L;
+			long double M = fmaxl(xy, z), ref = M * powl(1.0L + powl(fminl(xy, z) / M, p1), 1.0L / p1);
+			double err = (double)(fabsl((long double)mkSq_ShapeNorm(s, y, dual) - ref) / ref);
+			ENSURE(err <= 1e-14);
+			worst = fmax(worst, err);
+		}
+	}
+	printf("test_cspace_pair: norms within %.2e of long double's\n", worst);
 	long boxes = mkBoxLeastCases();
 	printf("test_cspace_pair: %ld shapes and directions, %ld least points on boxes\n", checked, boxes);
 	return mk_summary("test_cspace_pair");
