@@ -493,7 +493,10 @@ static int mkSq_EllipsoidPart(const mkSqPart *p)
 /* A smooth ellipsoid part's exact box without placing it: half-width i is
  * |diag(a, b, c) (R M)^T e_i|, its support value at e_i, rounded up as
  * mkSq_ExactBox's (R M as mkSq_Place forms it). */
-static void mkSq_EllipsoidBox(mkSqPart *p)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void mkSq_EllipsoidBox(mkSqPart *p)
 {
 	const mkBody3 *b = &p->rest[1];
 	mkMat3 M = mkMat3_MulInline(*p->R, b->M);
@@ -975,10 +978,12 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			if (x) mkSq_PartAt(q, j, &s->R, s->c, mkVec3_Make(x->pc[3 * j][l], x->pc[3 * j + 1][l], x->pc[3 * j + 2][l]), p);
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
+				uint32_t any = 0;
 				for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
-					s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32, p->c,
-						q->prad[j], s->bq);
+					any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32,
+						p->c, q->prad[j], s->bq);
 				s->word = 0;
+				if (any && mkSq_EllipsoidPart(p)) mkSq_EllipsoidBox(p);   /* (an ellipsoid part's exact box is cheap) */
 			} else {
 				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
 					mkSq_EllipsoidBox(p);
