@@ -380,20 +380,22 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 			if (f > m) return isfinite(best) ? 0 : 3;
 		}
 	}
+	/* the overlap, of the inner models (the bodies themselves when smooth) */
+	double dep = mkSq_SegmentDepth(o, p, R);
+	*depth = dep;
+	if (dep > m) return 2;
+	/* a box-like body: the direction from the box of its semi-axes to the other's centre */
+	if (isfinite(best) && (mkSq_Boxy(ob->shape) || mkSq_Boxy(pb->shape)) && mkSq_BoxApart(o, p, R, d, best + m + e))
+		return 1;
+	if (mkSq_Boxy(o->inner->shape)) dep = fmax(dep, mkSq_FaceDepth(o, p, R));
+	*depth = dep;
+	if (dep > m) return 2;
 	/* a box-like body and an ellipsoid: the box inside the box-like one (about a declared box) */
 	if ((mkSq_Boxy(o->inner->shape) && mkSq_Ellipsoid(p->inner->shape))
 		|| (mkSq_Boxy(p->inner->shape) && mkSq_Ellipsoid(o->inner->shape))) {
 		int r = mkSq_BoxEllipsoid(o, p, R, d, isfinite(best) ? best + m + e : INFINITY, m, depth);
 		if (r) return r;
 	}
-	/* a box-like body: the direction from the box of its semi-axes to the other's centre */
-	if (isfinite(best) && (mkSq_Boxy(ob->shape) || mkSq_Boxy(pb->shape)) && mkSq_BoxApart(o, p, R, d, best + m + e))
-		return 1;
-	/* the overlap, of the inner models (the bodies themselves when smooth) */
-	double dep = mkSq_SegmentDepth(o, p, R);
-	if (!(dep > m) && mkSq_Boxy(o->inner->shape)) dep = fmax(dep, mkSq_FaceDepth(o, p, R));
-	*depth = dep;
-	if (dep > m) return 2;
 	/* the direction of the sum of the semi-axes' ellipsoids */
 	if (!isfinite(best)) return 0;
 	double lim = best + m + e;

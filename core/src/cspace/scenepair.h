@@ -3,7 +3,10 @@
  *
  * mkSqQuick_Pair(o, p, R, best, &depth), o and p the pair's models (an
  * obstacle's and a part's), margin m = 4e-12 of the pair's size (|d| + r_O
- * + r_P, as mkCollide3_PairSize), of the outer models:
+ * + r_P, as mkCollide3_PairSize), of the outer models (tried in this
+ * order: the centre line, the centre segment, a box-like body's direction
+ * and face point, a box-like body against an ellipsoid, the semi-axes'
+ * ellipsoids' normal, a box-like obstacle's face normals):
  *  - f(u) = |d| - h_O(u) - h_P(u) at u = d / |d|, d from o's centre to
  *    p's, is a lower bound of the distance. Returns 1 when f(u) > best + m
  *    (best finite: the pair is certainly at least best away), 3 when
