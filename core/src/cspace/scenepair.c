@@ -14,11 +14,17 @@
 
 #define MK_SQ_QUICK 4e-12   /* margin of the certificates, times the pair's size (as MK_BATCH_MARGIN) */
 
+/* The larger and the smaller of a and b, b where either is NaN (one SSE
+ * instruction; fmax and fmin are library calls on x86-64). A NaN so
+ * passed on fails every certificate's comparison. */
+static inline double mkSq_Fmax(double a, double b) { return a > b ? a : b; }
+static inline double mkSq_Fmin(double a, double b) { return a < b ? a : b; }
+
 mkSqQuick mkSqQuick_Make(mkBody3 b)
 {
 	mkSqQuick k;
 	k.Mi = mkMat3_Inverse(b.M);
-	double fm = 0.0, fi = 0.0, big = fmax(b.shape.a, fmax(b.shape.b, b.shape.c));
+	double fm = 0.0, fi = 0.0, big = mkSq_Fmax(b.shape.a, mkSq_Fmax(b.shape.b, b.shape.c));
 	for (int i = 0; i < 9; ++i) {
 		fm += b.M.m[i / 3][i % 3] * b.M.m[i / 3][i % 3];
 		fi += k.Mi.m[i / 3][i % 3] * k.Mi.m[i / 3][i % 3];
@@ -68,7 +74,7 @@ static inline void mkSq_Bounds(mkShape3 s, mkVec3 y, int dual, double *lo, doubl
 	double x1 = fabs(y.x), x2 = fabs(y.y), x3 = fabs(y.z);
 	if (dual) { x1 *= s.a; x2 *= s.b; x3 *= s.c; }
 	else { x1 /= s.a; x2 /= s.b; x3 /= s.c; }
-	double l2 = sqrt(x1 * x1 + x2 * x2 + x3 * x3), inf = fmax(x1, fmax(x2, x3)), l1 = x1 + x2 + x3;
+	double l2 = sqrt(x1 * x1 + x2 * x2 + x3 * x3), inf = mkSq_Fmax(x1, mkSq_Fmax(x2, x3)), l1 = x1 + x2 + x3;
 	int round = s.eps1 >= 1.0 && s.eps2 >= 1.0, boxy = s.eps1 <= 1.0 && s.eps2 <= 1.0;
 	/* support value: at least the octahedron's (inf) or the ellipsoid's, at most the box's (l1) or the
 	 * ellipsoid's; gauge: at least the box's (inf) or the ellipsoid's, at most the octahedron's (l1) */
@@ -78,9 +84,9 @@ static inline void mkSq_Bounds(mkShape3 s, mkVec3 y, int dual, double *lo, doubl
 	/* box-like: by Hoelder per level, |(u, v)|_p <= 2^(1/p) max(u, v) and |(u, v)|_q >= 2^(1/q - 1) (u + v),
 	 * so the gauge is at most 2^((eps1 + eps2) / 2) inf and the support value at least 2^(-(eps1 + eps2) / 2) l1
 	 * (each rounded outwards) */
-	double k = exp2(0.5 * (s.eps1 + s.eps2));
-	if (dual) *lo = fmax(*lo, l1 / k * (1.0 - 1e-15));
-	else *hi = fmin(*hi, inf * k * (1.0 + 1e-15));
+	double k = mkExp2(0.5 * (s.eps1 + s.eps2));
+	if (dual) *lo = mkSq_Fmax(*lo, l1 / k * (1.0 - 1e-15));
+	else *hi = mkSq_Fmin(*hi, inf * k * (1.0 + 1e-15));
 }
 
 void mkSq_NormBounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi) { mkSq_Bounds(s, y, dual, lo, hi); }
@@ -109,7 +115,7 @@ static double mkSq_Along(const mkBody3 *b, const mkBody3 *x, mkVec3 u, mkVec3 d,
 static double mkSq_BoxDirection(const mkBody3 *b, const mkBody3 *x, mkVec3 y, mkVec3 d)
 {
 	mkShape3 s = b->shape;
-	mkVec3 g = {y.x - fmax(-s.a, fmin(s.a, y.x)), y.y - fmax(-s.b, fmin(s.b, y.y)), y.z - fmax(-s.c, fmin(s.c, y.z))};
+	mkVec3 g = {y.x - mkSq_Fmax(-s.a, mkSq_Fmin(s.a, y.x)), y.y - mkSq_Fmax(-s.b, mkSq_Fmin(s.b, y.y)), y.z - mkSq_Fmax(-s.c, mkSq_Fmin(s.c, y.z))};
 	mkVec3 w = mkMat3_MulVecInline(b->M, g);
 	double n = sqrt(mkVec3_Dot(w, w));
 	if (!(n > 0.0) || !isfinite(n)) return -INFINITY;
@@ -170,14 +176,14 @@ static double mkSq_SegmentDepth(const mkSqModels *o, const mkSqModels *p, const 
 	mkSq_Bounds(ps, yp, 0, &plo, &phi);
 	mkSq_Bounds(os, yo, 0, &olo, &ohi);
 	double gpl = plo * (1.0 + kp->slack) + kp->slack, gol = olo * (1.0 + ko->slack) + ko->slack;
-	if (fmax(0.0, 1.0 - 1.0 / gpl) >= fmin(1.0, 1.0 / gol) + 1e-12) return 0.0;
+	if (mkSq_Fmax(0.0, 1.0 - 1.0 / gpl) >= mkSq_Fmin(1.0, 1.0 / gol) + 1e-12) return 0.0;
 	double gp = mkSq_Ellipsoid(ps) ? gpl : mkSq_Gauge(ps, kp, yp);
 	double go = mkSq_Ellipsoid(os) ? gol : mkSq_Gauge(os, ko, yo);
-	double lo = fmax(0.0, 1.0 - 1.0 / gp), hi = fmin(1.0, 1.0 / go);
+	double lo = mkSq_Fmax(0.0, 1.0 - 1.0 / gp), hi = mkSq_Fmin(1.0, 1.0 / go);
 	if (!(lo < hi)) return 0.0;
-	double dlo = fmax(0.0, 1.0 - lo * go) * ko->rho + fmax(0.0, 1.0 - (1.0 - lo) * gp) * kp->rho;
-	double dhi = fmax(0.0, 1.0 - hi * go) * ko->rho + fmax(0.0, 1.0 - (1.0 - hi) * gp) * kp->rho;
-	return fmax(dlo, dhi);
+	double dlo = mkSq_Fmax(0.0, 1.0 - lo * go) * ko->rho + mkSq_Fmax(0.0, 1.0 - (1.0 - lo) * gp) * kp->rho;
+	double dhi = mkSq_Fmax(0.0, 1.0 - hi * go) * ko->rho + mkSq_Fmax(0.0, 1.0 - (1.0 - hi) * gp) * kp->rho;
+	return mkSq_Fmax(dlo, dhi);
 }
 
 /* The depth certified by a point past a box-like obstacle's face: q, the
@@ -190,7 +196,7 @@ static double mkSq_FaceDepth(const mkSqModels *o, const mkSqModels *p, const mkM
 	const mkBody3 *ob = o->inner, *pb = p->inner;
 	mkShape3 s = ob->shape;
 	mkVec3 y = mkMat3_MulVecInline(o->kinner->Mi, mkVec3_Sub(pb->t, ob->t));
-	mkVec3 c = {fmax(-s.a, fmin(s.a, y.x)), fmax(-s.b, fmin(s.b, y.y)), fmax(-s.c, fmin(s.c, y.z))};
+	mkVec3 c = {mkSq_Fmax(-s.a, mkSq_Fmin(s.a, y.x)), mkSq_Fmax(-s.b, mkSq_Fmin(s.b, y.y)), mkSq_Fmax(-s.c, mkSq_Fmin(s.c, y.z))};
 	if (c.x == y.x && c.y == y.y && c.z == y.z) return 0.0;
 	mkVec3 v = mkVec3_Sub(mkVec3_Add(ob->t, mkMat3_MulVecInline(ob->M, c)), pb->t);   /* q - c */
 	double g = mkSq_Gauge(pb->shape, p->kinner, mkMat3_MulVecInline(p->kinner->Mi, mkMat3_MulTVecInline(*R, v)));
@@ -237,7 +243,7 @@ static double mkSq_FacesApart(const mkBody3 *b, const mkSqQuick *k, const mkBody
 		double l = sqrt(mkVec3_Dot(n, n));
 		if (!(l > 0.0) || !isfinite(l)) continue;
 		if (mkVec3_Dot(n, d) < 0.0) l = -l;
-		f = fmax(f, mkSq_Along(b, x, mkVec3_Scale(n, 1.0 / l), d, lim));
+		f = mkSq_Fmax(f, mkSq_Along(b, x, mkVec3_Scale(n, 1.0 / l), d, lim));
 	}
 	return f;
 }
@@ -286,7 +292,7 @@ void mkSqQuick_BoxLeast(double H[3][3], const double y0[3], const double w[3], d
 				if (fabs(dy[i]) * t > fabs(lim)) { t = lim / dy[i]; block = i; }
 			}
 			for (int i = 0; i < 3; ++i)
-				if (!at[i]) y[i] = fmax(-w[i], fmin(w[i], y[i] + t * dy[i]));
+				if (!at[i]) y[i] = mkSq_Fmax(-w[i], mkSq_Fmin(w[i], y[i] + t * dy[i]));
 			if (block >= 0) {
 				at[block] = dy[block] > 0.0 ? 1 : -1;
 				y[block] = at[block] * w[block];
@@ -387,7 +393,7 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 	/* a box-like body: the direction from the box of its semi-axes to the other's centre */
 	if (isfinite(best) && (mkSq_Boxy(ob->shape) || mkSq_Boxy(pb->shape)) && mkSq_BoxApart(o, p, R, d, best + m + e))
 		return 1;
-	if (mkSq_Boxy(o->inner->shape)) dep = fmax(dep, mkSq_FaceDepth(o, p, R));
+	if (mkSq_Boxy(o->inner->shape)) dep = mkSq_Fmax(dep, mkSq_FaceDepth(o, p, R));
 	*depth = dep;
 	if (dep > m) return 2;
 	/* a box-like body and an ellipsoid: the box inside the box-like one (about a declared box) */
