@@ -219,15 +219,18 @@ static mkMat3 mkSq_Spread(const mkBody3 *b)
 
 /* The lower bound of the distance along (S_o + S_p)^-1 d, S the bodies'
  * mkSq_Spread: the normal of their sum's boundary towards d when the two
- * are ellipsoids of one shape (-inf when it cannot be formed). */
-static double mkSq_SpreadApart(const mkBody3 *ob, const mkBody3 *pb, mkVec3 d, double lim)
+ * are ellipsoids of one shape (-inf when it cannot be formed); *x the
+ * point c_o + S_o (S_o + S_p)^-1 d. */
+static double mkSq_SpreadApart(const mkBody3 *ob, const mkBody3 *pb, mkVec3 d, double lim, mkVec3 *x)
 {
-	mkMat3 S = mkSq_Spread(ob), T = mkSq_Spread(pb);
+	mkMat3 O = mkSq_Spread(ob), S = mkSq_Spread(pb);
 	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j) S.m[i][j] += T.m[i][j];
+		for (int j = 0; j < 3; ++j) S.m[i][j] += O.m[i][j];
 	mkVec3 r0 = {S.m[0][0], S.m[0][1], S.m[0][2]}, r1 = {S.m[1][0], S.m[1][1], S.m[1][2]}, r2 = {S.m[2][0], S.m[2][1], S.m[2][2]};
 	/* S^-1 d up to its (positive) determinant: the adjugate's rows are the cross products */
-	mkVec3 n = {mkVec3_Dot(mkVec3_Cross(r1, r2), d), mkVec3_Dot(mkVec3_Cross(r2, r0), d), mkVec3_Dot(mkVec3_Cross(r0, r1), d)};
+	mkVec3 c0 = mkVec3_Cross(r1, r2);
+	mkVec3 n = {mkVec3_Dot(c0, d), mkVec3_Dot(mkVec3_Cross(r2, r0), d), mkVec3_Dot(mkVec3_Cross(r0, r1), d)};
+	*x = mkVec3_Add(ob->t, mkVec3_Scale(mkMat3_MulVecInline(O, n), 1.0 / mkVec3_Dot(r0, c0)));
 	double l = sqrt(mkVec3_Dot(n, n));
 	if (!(l > 0.0) || !isfinite(l)) return -INFINITY;
 	return mkSq_Along(ob, pb, mkVec3_Scale(n, 1.0 / l), d, lim);
@@ -406,9 +409,18 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 	if (!isfinite(best)) return 0;
 	double lim = best + m + e;
 	/* (two ellipsoids: the batch's own steps towards their best direction are as cheap) */
-	if (!(mkSq_Ellipsoid(ob->shape) && mkSq_Ellipsoid(pb->shape)) && mkSq_SpreadApart(ob, pb, d, lim) > lim) return 1;
+	if (mkSq_Ellipsoid(ob->shape) && mkSq_Ellipsoid(pb->shape)) return 0;
+	mkVec3 x;
+	if (mkSq_SpreadApart(ob, pb, d, lim, &x) > lim) return 1;
 	/* a box-like body's face normals */
 	if (mkSq_Boxy(ob->shape) && mkSq_FacesApart(ob, o->kouter, pb, d, lim) > lim) return 1;
+	/* the contact point of Perram and Wertheim's function of the semi-axes' ellipsoids at lambda = 1/2,
+	 * x = c_O + S_O (S_O + S_P)^-1 d (mkSq_SpreadApart's) */
+	dep = mkSqQuick_PointDepth(o, p, R, x);
+	if (dep > m) {
+		*depth = dep;
+		return 2;
+	}
 	return 0;
 }
 

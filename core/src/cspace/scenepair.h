@@ -6,7 +6,8 @@
  * + r_P, as mkCollide3_PairSize), of the outer models (tried in this
  * order: the centre line, the centre segment, a box-like body's direction
  * and face point, a box-like body against an ellipsoid, the semi-axes'
- * ellipsoids' normal, a box-like obstacle's face normals):
+ * ellipsoids' normal, a box-like obstacle's face normals, the semi-axes'
+ * ellipsoids' point):
  *  - f(u) = |d| - h_O(u) - h_P(u) at u = d / |d|, d from o's centre to
  *    p's, is a lower bound of the distance. Returns 1 when f(u) > best + m
  *    (best finite: the pair is certainly at least best away), 3 when
@@ -29,7 +30,11 @@
  *    body's semi-axes' ellipsoid (the normal of the sum's boundary towards
  *    d when the two are ellipsoids of one shape), then along a box-like
  *    obstacle's face normals; returns 1 when one exceeds best + m (+ 1e-13
- *    of the size);
+ *    of the size); then the point c_O + S_O (S_O + S_P)^-1 d, the
+ *    contact point of Perram and Wertheim's function of the two
+ *    semi-axes' ellipsoids at lambda = 1/2 (where the two, scaled alike
+ *    about their centres, touch when 1/2 is its maximiser), as an overlap
+ *    candidate, checked by the gauges as below;
  *  - returns 2 when the inner models (the bodies themselves where smooth)
  *    overlap for certain. A point x of the centre segment inside
  *    both, by their gauges g_O, g_P < 1, puts balls of radii (1 - g) rho
