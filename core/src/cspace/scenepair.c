@@ -408,8 +408,6 @@ int mkSqQuick_Pair(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, do
 	/* the direction of the sum of the semi-axes' ellipsoids */
 	if (!isfinite(best)) return 0;
 	double lim = best + m + e;
-	/* (two ellipsoids: the batch's own steps towards their best direction are as cheap) */
-	if (mkSq_Ellipsoid(ob->shape) && mkSq_Ellipsoid(pb->shape)) return 0;
 	mkVec3 x;
 	if (mkSq_SpreadApart(ob, pb, d, lim, &x) > lim) return 1;
 	/* a box-like body's face normals */

@@ -25,8 +25,8 @@
  *    it) to the other's centre, by the support values' upper bounds
  *    (mkSq_NormBounds); returns 1 when f(u) > best + m (+ 1e-13 of the
  *    size);
- *  - best finite, when the overlap below is not certified: f (but for two
- *    ellipsoids) along (S_O + S_P)^-1 d, S = M diag(a^2, b^2, c^2) M^T the shape matrix of a
+ *  - best finite, when the overlap below is not certified: f along
+ *    (S_O + S_P)^-1 d, S = M diag(a^2, b^2, c^2) M^T the shape matrix of a
  *    body's semi-axes' ellipsoid (the normal of the sum's boundary towards
  *    d when the two are ellipsoids of one shape), then along a box-like
  *    obstacle's face normals; returns 1 when one exceeds best + m (+ 1e-13
