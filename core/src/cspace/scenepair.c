@@ -2,8 +2,9 @@
  * (cspace/scenepair.h): support values and gauges of superquadrics by
  * their norms, separating directions (the centre line, from a box-like
  * body's box, the sum of the semi-axes' ellipsoids, a box's faces) and
- * common points (on the centre segment, past a box's face, and the point of
- * a box-like body's inner box where an ellipsoid's gauge is least). */
+ * common points (on the centre segment, past a box's face, the point of a
+ * box-like body's inner box where an ellipsoid's gauge is least, and the
+ * contact point of the semi-axes' ellipsoids' Perram-Wertheim function). */
 #include "cspace/scenepair.h"
 
 #include <float.h>
