@@ -7,7 +7,8 @@
  * y / hi on or inside it (mkShape3_Implicit, which is 1 on the surface);
  * an ellipsoid's bounds equal mkSq_ShapeNorm's value to the bit, and
  * every shape's mkSq_ShapeNorm is within 1e-14 of the powers' definition
- * evaluated in long double. The
+ * evaluated in long double, at points near 1 and scaled by up to 1e150
+ * either way. The
  * least of a convex quadratic over a box (mkSqQuick_BoxLeast) against
  * every face of the box solved by elimination, and the box mkSqQuick_Make
  * puts inside a shape: its corner's gauge at most 1 (long double). */
@@ -152,6 +153,10 @@ int main(void)
 		mkVec3 y = { uni(-1, 1), uni(-1, 1), uni(-1, 1) };
 		if (t % 7 == 0) y.y = 0.0;
 		if (t % 13 == 0) y.x = y.y * (1.0 + uni(-1e-9, 1e-9));   /* nearly equal components */
+		if (t % 5 == 1) { /* far from 1: scaled by powers of ten up to 1e150 either way (the poses' range) */
+			static const double scale[6] = {1e-150, 1e-100, 1e-50, 1e50, 1e100, 1e150};
+			y = mkVec3_Scale(y, scale[(t / 5) % 6]);
+		}
 		for (int dual = 0; dual < 2; ++dual) {
 			long double p1 = dual ? 2.0L / (2.0L - s.eps1) : 2.0L / s.eps1, p2 = dual ? 2.0L / (2.0L - s.eps2) : 2.0L / s.eps2;
 			long double u = fabsl(y.x), v = fabsl(y.y), z = fabsl(y.z);

@@ -9,6 +9,8 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "base/base2.h"
 #include "base/geom_inline.h"
@@ -55,6 +57,36 @@ static double mkSq_Norm2(double u, double v, double p)
 	return m * mkExp2(mkSoftplus2(x, mkExp2(x)) / p);
 }
 
+/* log2 |(2^a, 2^b)|_p = max + log2(1 + 2^(p (min - max))) / p (ip = 1/p). */
+static inline double mkSq_LogNorm2(double a, double b, double p, double ip)
+{
+	double m = a > b ? a : b, k = a > b ? b : a;
+	if (!(k > -INFINITY)) return m;
+	double x = p * (k - m);
+	return m + mkSoftplus2(x, mkExp2(x)) * ip;
+}
+
+/* |(|(x1, x2)|_p2, x3)|_p1 of x >= 0 (ip = 1/p): in base-2 logarithms of
+ * the components scaled by the power of 2 that brings the largest into
+ * [1, 2) (so that the logarithms' rounding stays that of numbers near 1),
+ * level by level (mkSq_LogNorm2); by mkSq_Norm2 where that scale would
+ * leave the range of doubles. */
+static double mkSq_Nested(double x1, double x2, double x3, double p2, double ip2, double p1, double ip1)
+{
+	double m = x1 > x2 ? x1 : x2;
+	m = m > x3 ? m : x3;
+	uint64_t bits;
+	memcpy(&bits, &m, sizeof bits);
+	int e = (int)(bits >> 52) - 1023;   /* (m >= 0: no sign bit) */
+	if (!(m > 0.0) || e < -1000 || e > 1000) return mkSq_Norm2(mkSq_Norm2(x1, x2, p2), x3, p1);
+	uint64_t down = (uint64_t)(1023 - e) << 52, up = (uint64_t)(1023 + e) << 52;
+	double sd, su;
+	memcpy(&sd, &down, sizeof sd);
+	memcpy(&su, &up, sizeof su);
+	double l12 = mkSq_LogNorm2(log2(x1 * sd), log2(x2 * sd), p2, ip2);
+	return mkExp2(mkSq_LogNorm2(l12, log2(x3 * sd), p1, ip1)) * su;
+}
+
 static int mkSq_Ellipsoid(mkShape3 s) { return s.eps1 == 1.0 && s.eps2 == 1.0; }
 
 double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual)
@@ -65,9 +97,10 @@ double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual)
 		else { x1 /= s.a; x2 /= s.b; x3 /= s.c; }
 		return sqrt(x1 * x1 + x2 * x2 + x3 * x3);
 	}
-	if (dual)
-		return mkSq_Norm2(mkSq_Norm2(s.a * x1, s.b * x2, 2.0 / (2.0 - s.eps2)), s.c * x3, 2.0 / (2.0 - s.eps1));
-	return mkSq_Norm2(mkSq_Norm2(x1 / s.a, x2 / s.b, 2.0 / s.eps2), x3 / s.c, 2.0 / s.eps1);
+	if (dual) /* q = 2 / (2 - eps), 1/q = 1 - eps/2 */
+		return mkSq_Nested(s.a * x1, s.b * x2, s.c * x3, 2.0 / (2.0 - s.eps2), 1.0 - 0.5 * s.eps2, 2.0 / (2.0 - s.eps1),
+			1.0 - 0.5 * s.eps1);
+	return mkSq_Nested(x1 / s.a, x2 / s.b, x3 / s.c, 2.0 / s.eps2, 0.5 * s.eps2, 2.0 / s.eps1, 0.5 * s.eps1);
 }
 
 static inline void mkSq_Bounds(mkShape3 s, mkVec3 y, int dual, double *lo, double *hi)

@@ -64,10 +64,10 @@ mkSqQuick mkSqQuick_Make(mkBody3 b);
 
 /* The canonical shape's gauge at y, |(|(y1/a, y2/b)|_p2, y3/c)|_p1 with
  * p = 2 / eps (dual 0), or its support value at y, the dual norm
- * |(|(a y1, b y2)|_q2, c y3)|_q1 with q = 2 / (2 - eps) (dual 1). Each
- * level m (1 + (k/m)^p)^(1/p) by base-2 logarithms and exponentials
- * (base/base2.h), within 1e-14 relative of the powers' definition
- * (core.test_cspace_pair checks it in long double). */
+ * |(|(a y1, b y2)|_q2, c y3)|_q1 with q = 2 / (2 - eps) (dual 1), by
+ * base-2 logarithms of the components (scaled by a power of 2 first) and
+ * one exponential (base/base2.h), within 1e-14 relative of the powers'
+ * definition (core.test_cspace_pair checks it in long double). */
 double mkSq_ShapeNorm(mkShape3 s, mkVec3 y, int dual);
 
 /* Bounds lo <= mkSq_ShapeNorm(s, y, dual) <= hi without powers (one exp2 for a box-like shape), by the
