@@ -160,12 +160,17 @@ static int mkSq_Boxy(mkShape3 s) { return s.eps1 <= 1.0 && s.eps2 <= 1.0 && !mkS
 
 /* The gauge of a body's model at the point x - its centre, y in its
  * canonical frame, rounded up by the slack. */
+static double mkSq_GaugeFrom(mkShape3 s, const mkSqQuick *k, mkVec3 y, double lo, double hi)
+{
+	double g = hi <= lo * (1.0 + 1e-2) ? hi : mkSq_ShapeNorm(s, y, 0);   /* the bound where it is within 1 % */
+	return g * (1.0 + k->slack) + k->slack;
+}
+
 static double mkSq_Gauge(mkShape3 s, const mkSqQuick *k, mkVec3 y)
 {
 	double lo, hi;
 	mkSq_Bounds(s, y, 0, &lo, &hi);   /* (an ellipsoid's: its norm) */
-	double g = hi <= lo * (1.0 + 1e-2) ? hi : mkSq_ShapeNorm(s, y, 0);   /* the bound where it is within 1 % */
-	return g * (1.0 + k->slack) + k->slack;
+	return mkSq_GaugeFrom(s, k, y, lo, hi);
 }
 
 double mkSqQuick_PointDepth(const mkSqModels *o, const mkSqModels *p, const mkMat3 *R, mkVec3 x)
@@ -211,8 +216,8 @@ static double mkSq_SegmentDepth(const mkSqModels *o, const mkSqModels *p, const 
 	mkSq_Bounds(os, yo, 0, &olo, &ohi);
 	double gpl = plo * (1.0 + kp->slack) + kp->slack, gol = olo * (1.0 + ko->slack) + ko->slack;
 	if (mkSq_Fmax(0.0, 1.0 - 1.0 / gpl) >= mkSq_Fmin(1.0, 1.0 / gol) + 1e-12) return 0.0;
-	double gp = mkSq_Ellipsoid(ps) ? gpl : mkSq_Gauge(ps, kp, yp);
-	double go = mkSq_Ellipsoid(os) ? gol : mkSq_Gauge(os, ko, yo);
+	double gp = mkSq_Ellipsoid(ps) ? gpl : mkSq_GaugeFrom(ps, kp, yp, plo, phi);   /* (the bounds above) */
+	double go = mkSq_Ellipsoid(os) ? gol : mkSq_GaugeFrom(os, ko, yo, olo, ohi);
 	double lo = mkSq_Fmax(0.0, 1.0 - 1.0 / gp), hi = mkSq_Fmin(1.0, 1.0 / go);
 	if (!(lo < hi)) return 0.0;
 	double dlo = mkSq_Fmax(0.0, 1.0 - lo * go) * ko->rho + mkSq_Fmax(0.0, 1.0 - (1.0 - lo) * gp) * kp->rho;
