@@ -7,7 +7,9 @@
  * quaternions of tiny (a subnormal squared norm) and huge norms and
  * positions up to 1e150 (what the scene query's answers being the same
  * bits as one pose at a time rests on). A build that differs in one lane is
- * caught (a lane swapped). And the poses' test (mkSqPrep_FirstBad) of every
+ * caught (a lane swapped). The exact boxes of ellipsoid parts (every
+ * subset of the parts, random matrices and semi-axes) against the one-pose
+ * path's product and square root, to the bit. And the poses' test (mkSqPrep_FirstBad) of every
  * build against the test pose by pose, with NaN, infinite and too large
  * values and zero quaternions placed at random; and the test of the
  * spheres near a part (mkSqPrep_Near's builds, as a bit mask)
@@ -29,7 +31,8 @@ static int same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 static int samef(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* The lanes of x against the one-pose operations; returns the lanes that differ. */
-static int check(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkSqPrep *x)
+static int check(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, const mkSqPrep *x)
 {
 	int bad = 0;
 	for (int k = 0; k < n; ++k) {
@@ -44,6 +47,13 @@ static int check(const double *poses, int n, int parts, const mkVec3 *t, const d
 				ok &= same(x->pc[3 * j + i][k], v[i]);
 				ok &= samef(x->lo[3 * j + i][k], mkSw_Down(v[i] - half[j]));
 				ok &= samef(x->hi[3 * j + i][k], mkSw_Up(v[i] + half[j]));
+			}
+			if (!(ell >> j & 1u)) continue;
+			/* an ellipsoid part's exact box, as the scene query's one-pose path forms it */
+			mkMat3 RM = mkMat3_MulInline(R, M[j]);
+			for (int i = 0; i < 3; ++i) {
+				double a = RM.m[i][0] * abc[j][0], b = RM.m[i][1] * abc[j][1], c3 = RM.m[i][2] * abc[j][2];
+				ok &= same(x->eh[3 * j + i][k], sqrt(a * a + b * b + c3 * c3) * (1.0 + 1e-13));
 			}
 		}
 		bad += !ok;
@@ -70,10 +80,15 @@ int main(void)
 			double half[MK_SQ_PREP_PARTS];
 			int n = r % 3 == 0 ? MK_SQ_PREP : 1 + (int)uni(0, MK_SQ_PREP - 1);   /* full and short tasks */
 			mkVec3 t[MK_SQ_PREP_PARTS];
+			mkMat3 M[MK_SQ_PREP_PARTS];
+			double abc[MK_SQ_PREP_PARTS][3];
 			int parts = 1 + r % MK_SQ_PREP_PARTS;
+			unsigned ell = (unsigned)r & 15u;   /* every subset of the parts with exact boxes */
 			for (int j = 0; j < MK_SQ_PREP_PARTS; ++j) {
 				t[j] = mkVec3_Make(uni(-2, 2), uni(-2, 2), uni(-2, 2));
 				half[j] = uni(0.01, 3) * (1.0 + 1e-12);
+				for (int i = 0; i < 9; ++i) M[j].m[i / 3][i % 3] = uni(-1.5, 1.5);   /* (rotation and shear) */
+				for (int i = 0; i < 3; ++i) abc[j][i] = uni(0.01, 5);
 			}
 			for (int k = 0; k < n; ++k) {
 				double *p = poses + 7 * k, pos = r % 4 == 3 ? 1e150 : r % 4 == 2 ? 1e6 : 10.0;
@@ -81,13 +96,13 @@ int main(void)
 				for (int d = 0; d < 3; ++d) p[d] = uni(-pos, pos);
 				for (int d = 3; d < 7; ++d) p[d] = qs * uni(-1, 1);
 			}
-			f(poses, n, parts, t, half, &x);
-			bad += check(poses, n, parts, t, half, &x);
+			f(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, &x);
+			bad += check(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, &x);
 			lanes += n;
 			if (r == 0) { /* a lane swapped is caught */
 				double keep = x.R[4][3];
 				x.R[4][3] = x.R[4][5];
-				ENSURE(check(poses, n, parts, t, half, &x) > 0);
+				ENSURE(check(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, &x) > 0);
 				x.R[4][3] = keep;
 			}
 		}

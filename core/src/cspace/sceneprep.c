@@ -2,9 +2,10 @@
  * portable build of the loops and the choice of a build by the CPU. */
 #include "cspace/sceneprep_body.h"
 
-void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
+void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, mkSqPrep *out)
 {
-	mkSqPrep_Body(poses, n, parts, t, half, out);
+	mkSqPrep_Body(poses, n, parts, t, half, M, abc, ell, out);
 }
 
 long mkSqPrep_FirstBadScalar(const double *poses, long n)

@@ -39,18 +39,27 @@ typedef struct mkSqPrep {
 	double R[9][MK_SQ_PREP];                      /* row-major rotation, lane by lane */
 	double pc[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];  /* part j's centre: [3 j + axis] */
 	float lo[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP], hi[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];
+	double eh[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];  /* an ellipsoid part's exact box's half-widths (the parts in ell) */
 } mkSqPrep;
 
 /* poses: n <= MK_SQ_PREP poses of 7 values (x, y, z, quaternion w, x, y, z),
  * each with a finite positive squared quaternion norm; the first
  * MK_SQ_PREP_PARTS of the parts, with their centres t[j] in the robot's
- * frame and their boxes' half-widths half[j]. One source (sceneprep_body.h)
- * built for each instruction set: the same values from each. */
-typedef void (*mkSqPrepFn)(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
+ * frame and their boxes' half-widths half[j]; for the parts j whose bit
+ * is set in ell (smooth ellipsoids of semi-axes abc[j] and matrix M[j]) the
+ * half-widths of their exact boxes at the pose, |diag(a, b, c) (R M)^T e_i|
+ * rounded up by 1e-13 of them (R M as mkMat3_MulInline forms it). One
+ * source (sceneprep_body.h) built for each instruction set: the same
+ * values from each. */
+typedef void (*mkSqPrepFn)(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, mkSqPrep *out);
 
-void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
-void mkSqPrep_RunAvx2(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
-void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out);
+void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, mkSqPrep *out);
+void mkSqPrep_RunAvx2(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, mkSqPrep *out);
+void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, mkSqPrep *out);
 
 /* The first of n 3D poses whose values are not all finite and of
  * magnitude at most 1e150 or whose quaternion's squared norm is not

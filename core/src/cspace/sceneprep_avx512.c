@@ -3,9 +3,10 @@
 
 #include <immintrin.h>
 
-void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
+void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, mkSqPrep *out)
 {
-	mkSqPrep_Body(poses, n, parts, t, half, out);
+	mkSqPrep_Body(poses, n, parts, t, half, M, abc, ell, out);
 }
 
 long mkSqPrep_FirstBadAvx512(const double *poses, long n)

@@ -11,7 +11,8 @@
 #include "cspace/sceneprep.h"
 #include "cspace/scenewide.h"
 
-static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t, const double *half, mkSqPrep *out)
+static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
+	const double (*abc)[3], unsigned ell, mkSqPrep *out)
 {
 	double qw[MK_SQ_PREP], qx[MK_SQ_PREP], qy[MK_SQ_PREP], qz[MK_SQ_PREP], c[3][MK_SQ_PREP];
 	for (int k = 0; k < n; ++k) {
@@ -52,6 +53,19 @@ static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t
 				pc[k] = v;
 				lo[k] = mkSw_Down(v - h);
 				hi[k] = mkSw_Up(v + h);
+			}
+		}
+		if (!(ell >> j & 1u)) continue;
+		/* an ellipsoid part's exact box: row i of R M (mkMat3_MulInline's operations) times the semi-axes */
+		const double (*m)[3] = M[j].m;
+		for (int i = 0; i < 3; ++i) {
+			const double *r0 = out->R[3 * i], *r1 = out->R[3 * i + 1], *r2 = out->R[3 * i + 2];
+			double *eh = out->eh[3 * j + i];
+			for (int k = 0; k < n; ++k) {
+				double x = (r0[k] * m[0][0] + r1[k] * m[1][0] + r2[k] * m[2][0]) * abc[j][0];
+				double y = (r0[k] * m[0][1] + r1[k] * m[1][1] + r2[k] * m[2][1]) * abc[j][1];
+				double z = (r0[k] * m[0][2] + r1[k] * m[1][2] + r2[k] * m[2][2]) * abc[j][2];
+				eh[k] = sqrt(x * x + y * y + z * z) * (1.0 + 1e-13);
 			}
 		}
 	}

@@ -490,6 +490,20 @@ static int mkSq_EllipsoidPart(const mkSqPart *p)
 	return p->smooth && p->rest[1].shape.eps1 == 1.0 && p->rest[1].shape.eps2 == 1.0;
 }
 
+/* The same of part j of the query. */
+static int mkSq_EllipsoidBody(const mkSceneQuery *q, int j)
+{
+	return q->part_body[j].kind == MK_SCENE_SMOOTH && q->part[2 * j + 1].shape.eps1 == 1.0 && q->part[2 * j + 1].shape.eps2 == 1.0;
+}
+
+/* The box mkSq_EllipsoidBox gives, from the prepared poses (lane l). */
+static void mkSq_EllipsoidBoxAt(mkSqPart *p, const mkSqPrep *x, int l)
+{
+	for (int i = 0; i < 3; ++i) p->h[i] = x->eh[3 * p->j + i][l];
+	p->reach = 0.0;
+	p->has_box = 1;
+}
+
 /* A smooth ellipsoid part's exact box without placing it: half-width i is
  * |diag(a, b, c) (R M)^T e_i|, its support value at e_i, rounded up as
  * mkSq_ExactBox's (R M as mkSq_Place forms it). */
@@ -983,10 +997,14 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 					any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32,
 						p->c, q->prad[j], s->bq);
 				s->word = 0;
-				if (any && mkSq_EllipsoidPart(p)) mkSq_EllipsoidBox(p);   /* (an ellipsoid part's exact box is cheap) */
+				if (any && mkSq_EllipsoidPart(p)) { /* (an ellipsoid part's exact box is cheap) */
+					if (x) mkSq_EllipsoidBoxAt(p, x, l);
+					else mkSq_EllipsoidBox(p);
+				}
 			} else {
 				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
-					mkSq_EllipsoidBox(p);
+					if (x) mkSq_EllipsoidBoxAt(p, x, l);
+					else mkSq_EllipsoidBox(p);
 					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 				} else if (x && s->bq == q->opt.max_clearance) {
 					for (int i = 0; i < 3; ++i) {
@@ -1165,12 +1183,20 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 	int prepared = q->parts < MK_SQ_PREP_PARTS ? q->parts : MK_SQ_PREP_PARTS;
 	if (x) {
 		mkVec3 t[MK_SQ_PREP_PARTS];
-		double half[MK_SQ_PREP_PARTS];
+		mkMat3 M[MK_SQ_PREP_PARTS];
+		double half[MK_SQ_PREP_PARTS], abc[MK_SQ_PREP_PARTS][3];
+		unsigned ell = 0;
 		for (int j = 0; j < prepared; ++j) {
-			t[j] = q->part[2 * j + 1].t;
+			const mkBody3 *b = &q->part[2 * j + 1];
+			t[j] = b->t;
+			M[j] = b->M;
+			abc[j][0] = b->shape.a;
+			abc[j][1] = b->shape.b;
+			abc[j][2] = b->shape.c;
 			half[j] = mkSqPrep_Half(0.0, q->reach[j], q->opt.max_clearance);
+			ell |= (unsigned)mkSq_EllipsoidBody(q, j) << j;
 		}
-		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, x);
+		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, M, (const double (*)[3])abc, ell, x);
 	}
 	for (long k = first; k < e; ++k) {
 		mkMat3 R;
