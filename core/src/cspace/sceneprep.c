@@ -21,6 +21,16 @@ uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const 
 	return m;
 }
 
+uint32_t mkSqPrep_NearSq(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3])
+{
+	uint32_t m = 0;
+	for (int i = 0; i < n; ++i) {
+		double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i];
+		m |= (uint32_t)!(dx * dx + dy * dy + dz * dz > rr[i]) << i;
+	}
+	return m;
+}
+
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl)
 {
 #if defined(MINK_HAVE_X86_KERNELS)
@@ -41,6 +51,16 @@ mkSqNearFn mkSqPrep_PickNear(mkImpl impl)
 	if (f == mkSqPrep_RunAvx2) return mkSqPrep_NearAvx2;
 #endif
 	return f ? mkSqPrep_Near : NULL;
+}
+
+mkSqNearSqFn mkSqPrep_PickNearSq(mkImpl impl)
+{
+	mkSqPrepFn f = mkSqPrep_Pick(impl);
+#if defined(MINK_HAVE_X86_KERNELS)
+	if (f == mkSqPrep_RunAvx512) return mkSqPrep_NearSqAvx512;
+	if (f == mkSqPrep_RunAvx2) return mkSqPrep_NearSqAvx2;
+#endif
+	return f ? mkSqPrep_NearSq : NULL;
 }
 
 mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl)

@@ -88,6 +88,20 @@ uint32_t mkSqPrep_NearAvx512(const double *x, const double *y, const double *z, 
 	const double c[3], double prad, double b);
 mkSqNearFn mkSqPrep_PickNear(mkImpl impl);
 
+/* The same test with its squared radii given: rr[i] = mkSqPrep_Radius2(prad,
+ * r[i], b), formed once for a part and a bound known in advance (the
+ * same masks). */
+static inline double mkSqPrep_Radius2(double prad, double r, double b)
+{
+	double x = (prad + r + b) * (1.0 + 1e-12);
+	return x * x;
+}
+typedef uint32_t (*mkSqNearSqFn)(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+uint32_t mkSqPrep_NearSq(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+uint32_t mkSqPrep_NearSqAvx2(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+uint32_t mkSqPrep_NearSqAvx512(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+mkSqNearSqFn mkSqPrep_PickNearSq(mkImpl impl);
+
 /* The build for impl (MK_IMPL_AUTO: the widest the CPU runs),
  * NULL when the CPU or the build lacks it. */
 mkSqPrepFn mkSqPrep_Pick(mkImpl impl);

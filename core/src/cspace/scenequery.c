@@ -51,6 +51,8 @@ struct mkSceneQuery {
 	mkSqNearFn near;   /* its build of mkSqPrep_Near */
 	int flat;          /* a scene of few obstacles (MK_SQ_FLAT): their spheres tested side by side (mkSqPrep_Near) */
 	double *sx, *sy, *sz, *sr;   /* the obstacles' spheres (osphere), axis by axis */
+	double *srr;       /* part j's squared radii of mkSqPrep_Near's test at max_clearance: srr[j * (nob + 1) + i] */
+	mkSqNearSqFn nearsq;   /* its build of mkSqPrep_NearSq */
 };
 
 const char *mkPoseStatus_Name(mkPoseStatus s)
@@ -186,6 +188,7 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->prep = mkSqPrep_Pick(MK_IMPL_AUTO);
 	q->firstbad = mkSqPrep_PickFirstBad(MK_IMPL_AUTO);
 	q->near = mkSqPrep_PickNear(MK_IMPL_AUTO);
+	q->nearsq = mkSqPrep_PickNearSq(MK_IMPL_AUTO);
 	q->flat = q->nob <= (q->near == mkSqPrep_Near ? MK_SQ_FLAT_PORTABLE : MK_SQ_FLAT);
 	size_t nb = (size_t)q->nob + 1;
 	q->obs = malloc(2 * nb * sizeof *q->obs);
@@ -249,6 +252,11 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 				q->sr[i] = q->osphere[i][3];
 			}
 		}
+		/* the tests' squared radii at max_clearance (where a part starts: mkSq_Advance) */
+		q->srr = r == MK_OK ? malloc((size_t)q->parts * nb * sizeof *q->srr) : NULL;
+		if (r == MK_OK && !q->srr) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+		for (int j = 0; r == MK_OK && j < q->parts; ++j)
+			for (int i = 0; i < q->nob; ++i) q->srr[(size_t)j * nb + i] = mkSqPrep_Radius2(q->prad[j], q->sr[i], q->opt.max_clearance);
 	}
 	if (r == MK_OK) {
 		for (int i = 0; i < q->nob; ++i) q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
@@ -266,7 +274,7 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 {
 	if (!q) return;
 	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad); free(q->osphere);
-	free(q->oquick); free(q->oquick_in); free(q->pquick); free(q->oerr); free(q->perr); free(q->sx);
+	free(q->oquick); free(q->oquick_in); free(q->pquick); free(q->oerr); free(q->perr); free(q->sx); free(q->srr);
 	mkSwTree_Free(&q->wide);
 	free(q);
 }
@@ -993,9 +1001,14 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
 				uint32_t any = 0;
-				for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
-					any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32,
-						p->c, q->prad[j], s->bq);
+				if (s->bq == q->opt.max_clearance) /* (the squared radii formed once) */
+					for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
+						any |= s->near[w] = q->nearsq(q->sx + at, q->sy + at, q->sz + at, q->srr + (size_t)j * (size_t)(q->nob + 1) + at,
+							q->nob - at < 32 ? q->nob - at : 32, p->c);
+				else
+					for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
+						any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32,
+							p->c, q->prad[j], s->bq);
 				s->word = 0;
 				if (any && mkSq_EllipsoidPart(p)) { /* (an ellipsoid part's exact box is cheap) */
 					if (x) mkSq_EllipsoidBoxAt(p, x, l);
