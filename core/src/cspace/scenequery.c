@@ -1183,16 +1183,18 @@ static void mkSq_PreparedPose(const mkSqPrep *x, int lane, const double *p, mkMa
 
 static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 {
-	(void)w;
 	const mkSqJob *J = ctx;
 	const mkSceneQuery *q = J->q;
 	int ps = mkSceneQuery_PoseSize(q), box = isfinite(q->opt.max_clearance), waiting = 0;
-	mkSqPose *pend = box ? malloc(MK_SQ_WAITING * sizeof *pend) : NULL;
+	/* the waiting poses and the prepared ones in the thread's block (64-byte aligned offsets) */
+	size_t at_prep = (MK_SQ_WAITING * sizeof(mkSqPose) + 63) / 64 * 64;
+	char *block = box ? mkCSpaceWork_Scratch(w, at_prep + sizeof(mkSqPrep)) : NULL;
+	mkSqPose *pend = block ? (mkSqPose *)block : NULL;
 	long first = task * MK_SQ_CHUNK, e = (task + 1) * MK_SQ_CHUNK < J->n ? (task + 1) * MK_SQ_CHUNK : J->n;
 	/* 3D poses with a finite max_clearance prepared side by side: their rotations, the first parts' centres
 	 * and query boxes for the bound max_clearance, as mkSq_Rotation, mkSq_PartInit and mkSq_QueryBox give
 	 * them (without memory for it: one pose at a time) */
-	mkSqPrep *x = pend && q->dim == 3 && q->nob > 0 ? malloc(sizeof *x) : NULL;
+	mkSqPrep *x = pend && q->dim == 3 && q->nob > 0 ? (mkSqPrep *)(block + at_prep) : NULL;
 	int prepared = q->parts < MK_SQ_PREP_PARTS ? q->parts : MK_SQ_PREP_PARTS;
 	if (x) {
 		mkVec3 t[MK_SQ_PREP_PARTS];
@@ -1231,8 +1233,6 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		for (++waiting; waiting == MK_SQ_WAITING;) waiting = mkSq_Flush(q, pend, waiting);
 	}
 	while (waiting > 0) waiting = mkSq_Flush(q, pend, waiting);
-	free(x);
-	free(pend);
 	return MK_OK;
 }
 

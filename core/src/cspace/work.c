@@ -43,8 +43,18 @@ void mkCSpaceWork_Free(mkCSpaceWork *w)
 	free(w->next); free(w->tri); free(w->tri2); free(w->leaf);
 	mkEdgeHash_Free(&w->edges);
 	mkEdgeHash_Free(&w->dedges);
-	free(w->poly); free(w->fin); free(w->pb); free(w->err2); free(w->cp);
+	free(w->poly); free(w->fin); free(w->pb); free(w->err2); free(w->cp); free(w->scratch);
 	memset(w, 0, sizeof *w);
+}
+
+void *mkCSpaceWork_Scratch(mkCSpaceWork *w, size_t need)
+{
+	if (need <= w->scap) return w->scratch;
+	void *q = realloc(w->scratch, need);
+	if (!q) return NULL;
+	w->scratch = q;
+	w->scap = need;
+	return q;
 }
 
 int mkCSpaceWork_Verts(mkCSpaceWork *w, int need, int dim)

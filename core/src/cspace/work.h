@@ -48,11 +48,17 @@ typedef struct mkCSpaceWork {
 	double *pb; int pbcap;     /* paper mode: B1's half, the poses' directions, their points */
 	double *err2; int ecap;    /* 2D: the error of the arc from node i to the next */
 	double *cp; int cpcap;     /* 2D adaptive: the chosen walk's vertices */
+	void *scratch; size_t scap; /* any task's block (mkCSpaceWork_Scratch) */
 } mkCSpaceWork;
 
 void mkCSpaceWork_Free(mkCSpaceWork *w);
 int mkCSpaceWork_Verts(mkCSpaceWork *w, int need, int dim);   /* n and p */
 int mkCSpaceWork_Batch(mkCSpaceWork *w, int need, int dim);   /* m and q */
+/* A block of at least `need` bytes kept from task to task of the thread
+ * (NULL when out of memory), so that a task of a many-pose run allocates
+ * nothing: a block allocated and freed by every task could move the
+ * heap's top back and forth (a system call each time). */
+void *mkCSpaceWork_Scratch(mkCSpaceWork *w, size_t need);
 
 /* cos and sin, exact on the axes (as mkSample2_Angles). */
 void mkSinCosExact(double t, double *c, double *s);
