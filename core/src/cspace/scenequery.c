@@ -1010,9 +1010,9 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 						any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32,
 							p->c, q->prad[j], s->bq);
 				s->word = 0;
-				if (any && mkSq_EllipsoidPart(p)) { /* (an ellipsoid part's exact box is cheap) */
+				if (mkSq_EllipsoidPart(p)) { /* (an ellipsoid part's exact box is cheap: prepared, read at once) */
 					if (x) mkSq_EllipsoidBoxAt(p, x, l);
-					else mkSq_EllipsoidBox(p);
+					else if (any) mkSq_EllipsoidBox(p);
 				}
 			} else {
 				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
