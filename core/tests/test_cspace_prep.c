@@ -12,8 +12,8 @@
  * path's product and square root, to the bit. And the poses' test (mkSqPrep_FirstBad) of every
  * build against the test pose by pose, with NaN, infinite and too large
  * values and zero quaternions placed at random; and the test of the
- * spheres near a part (mkSqPrep_Near's and mkSqPrep_NearSq's builds, as
- * bit masks, full chunks of 8 and tails)
+ * spheres near a part (mkSqPrep_Near's builds on squared radii from
+ * mkSqPrep_Radius2, as bit masks, full chunks of 8 and tails)
  * against the scene query's test of two spheres written out. */
 #include <math.h>
 #include <stdio.h>
@@ -160,16 +160,15 @@ int main(void)
 		for (int i = 0; i < n; ++i) rr2[i] = mkSqPrep_Radius2(prad, rad[i], b);
 		for (int v = 0; v < 3; ++v) { /* each build the CPU runs, against the test written out below */
 			mkSqNearFn f = mkSqPrep_PickNear(impls[v]);
-			mkSqNearSqFn g = mkSqPrep_PickNearSq(impls[v]);
-			if (!f || !g) continue;
-			for (int sq = 0; sq < 2; ++sq) { /* the radii formed in the test, then given (mkSqPrep_NearSq) */
-				uint32_t near = sq ? g(x, y, z, rr2, n, c) : f(x, y, z, rad, n, c, prad, b);
-				++near_cases;
-				near_wrong += n < 32 && near >> n != 0;
-				for (int i = 0; i < n; ++i) {
-					double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + rad[i] + b) * (1.0 + 1e-12);
-					near_wrong += (int)(near >> i & 1u) != !(dx * dx + dy * dy + dz * dz > rr * rr);
-				}
+			if (!f) continue;
+			uint32_t near = f(x, y, z, rr2, n, c);
+			++near_cases;
+			near_wrong += n < 32 && near >> n != 0;
+			for (int i = 0; i < n; ++i) {
+				double dx = c[0] - x[i], dy = c[1] - y[i], dz = c[2] - z[i], rr = (prad + rad[i] + b) * (1.0 + 1e-12);
+				int want = !(dx * dx + dy * dy + dz * dz > rr * rr);
+				near_wrong += (int)(near >> i & 1u) != want;
+				near_wrong += (!mkSqPrep_Apart(dx, dy, dz, prad, rad[i], b)) != want;   /* (the pair test the query shares) */
 			}
 		}
 	}

@@ -13,15 +13,7 @@ long mkSqPrep_FirstBadScalar(const double *poses, long n)
 	return mkSqPrep_FirstBadBody(poses, n);
 }
 
-uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
-	double prad, double b)
-{
-	uint32_t m = 0;
-	for (int i = 0; i < n; ++i) m |= (uint32_t)!mkSqPrep_Apart(c[0] - x[i], c[1] - y[i], c[2] - z[i], prad, r[i], b) << i;
-	return m;
-}
-
-uint32_t mkSqPrep_NearSq(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3])
+uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3])
 {
 	uint32_t m = 0;
 	for (int i = 0; i < n; ++i) {
@@ -51,16 +43,6 @@ mkSqNearFn mkSqPrep_PickNear(mkImpl impl)
 	if (f == mkSqPrep_RunAvx2) return mkSqPrep_NearAvx2;
 #endif
 	return f ? mkSqPrep_Near : NULL;
-}
-
-mkSqNearSqFn mkSqPrep_PickNearSq(mkImpl impl)
-{
-	mkSqPrepFn f = mkSqPrep_Pick(impl);
-#if defined(MINK_HAVE_X86_KERNELS)
-	if (f == mkSqPrep_RunAvx512) return mkSqPrep_NearSqAvx512;
-	if (f == mkSqPrep_RunAvx2) return mkSqPrep_NearSqAvx2;
-#endif
-	return f ? mkSqPrep_NearSq : NULL;
 }
 
 mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl)

@@ -71,36 +71,28 @@ long mkSqPrep_FirstBadAvx2(const double *poses, long n);
 long mkSqPrep_FirstBadAvx512(const double *poses, long n);
 mkSqFirstBadFn mkSqPrep_PickFirstBad(mkImpl impl);
 
-/* The obstacles near a part, at most 32 at a time (a scene of few
- * obstacles, tested without a hierarchy, takes as many calls as it needs):
- * bit i of the mask returned is 0 when obstacle i's
- * sphere (centre x, y, z [i], radius r[i]) and the part's (centre c, radius
- * prad) are certainly more than b apart (mkSqPrep_Apart's operations), else
- * 1. Portable, AVX2 and AVX-512F builds (the same masks), picked with the
- * preparation's (mkSqPrep_PickNear). */
-typedef uint32_t (*mkSqNearFn)(const double *x, const double *y, const double *z, const double *r, int n,
-	const double c[3], double prad, double b);
-uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
-	double prad, double b);
-uint32_t mkSqPrep_NearAvx2(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
-	double prad, double b);
-uint32_t mkSqPrep_NearAvx512(const double *x, const double *y, const double *z, const double *r, int n,
-	const double c[3], double prad, double b);
-mkSqNearFn mkSqPrep_PickNear(mkImpl impl);
-
-/* The same test with its squared radii given: rr[i] = mkSqPrep_Radius2(prad,
- * r[i], b), formed once for a part and a bound known in advance (the
- * same masks). */
+/* The squared radius of the test of a part's sphere (radius prad) and an
+ * obstacle's (radius r) for the bound b: ((prad + r + b) (1 + 1e-12))^2,
+ * mkSqPrep_Apart's operations; formed once a part for max_clearance. */
 static inline double mkSqPrep_Radius2(double prad, double r, double b)
 {
 	double x = (prad + r + b) * (1.0 + 1e-12);
 	return x * x;
 }
-typedef uint32_t (*mkSqNearSqFn)(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
-uint32_t mkSqPrep_NearSq(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
-uint32_t mkSqPrep_NearSqAvx2(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
-uint32_t mkSqPrep_NearSqAvx512(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
-mkSqNearSqFn mkSqPrep_PickNearSq(mkImpl impl);
+
+/* The obstacles near a part, at most 32 at a time (a scene of few
+ * obstacles, tested without a hierarchy, takes as many calls as it needs):
+ * bit i of the mask returned is 0 when the squared distance between the
+ * part's centre c and obstacle i's sphere's centre (x, y, z [i]) exceeds
+ * rr[i] = mkSqPrep_Radius2(prad, r_i, b) (the two spheres certainly more
+ * than b apart, as mkSqPrep_Apart says), else 1. Portable, AVX2 and
+ * AVX-512F builds (the same masks), picked with the preparation's
+ * (mkSqPrep_PickNear). */
+typedef uint32_t (*mkSqNearFn)(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+uint32_t mkSqPrep_Near(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+uint32_t mkSqPrep_NearAvx2(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+uint32_t mkSqPrep_NearAvx512(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3]);
+mkSqNearFn mkSqPrep_PickNear(mkImpl impl);
 
 /* The build for impl (MK_IMPL_AUTO: the widest the CPU runs),
  * NULL when the CPU or the build lacks it. */

@@ -14,25 +14,7 @@ long mkSqPrep_FirstBadAvx2(const double *poses, long n)
 	return mkSqPrep_FirstBadBody(poses, n);
 }
 
-uint32_t mkSqPrep_NearAvx2(const double *x, const double *y, const double *z, const double *r, int n, const double c[3],
-	double prad, double b)
-{
-	__m256d cx = _mm256_set1_pd(c[0]), cy = _mm256_set1_pd(c[1]), cz = _mm256_set1_pd(c[2]);
-	__m256d pr = _mm256_set1_pd(prad), bb = _mm256_set1_pd(b), k = _mm256_set1_pd(1.0 + 1e-12);
-	uint32_t m = 0;
-	int i = 0;
-	for (; i + 4 <= n; i += 4) {
-		__m256d dx = _mm256_sub_pd(cx, _mm256_loadu_pd(x + i)), dy = _mm256_sub_pd(cy, _mm256_loadu_pd(y + i));
-		__m256d dz = _mm256_sub_pd(cz, _mm256_loadu_pd(z + i));
-		__m256d rr = _mm256_mul_pd(_mm256_add_pd(_mm256_add_pd(pr, _mm256_loadu_pd(r + i)), bb), k);
-		__m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
-		m |= (uint32_t)(~_mm256_movemask_pd(_mm256_cmp_pd(d2, _mm256_mul_pd(rr, rr), _CMP_GT_OQ)) & 15) << i;
-	}
-	for (; i < n; ++i) m |= (uint32_t)!mkSqPrep_Apart(c[0] - x[i], c[1] - y[i], c[2] - z[i], prad, r[i], b) << i;
-	return m;
-}
-
-uint32_t mkSqPrep_NearSqAvx2(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3])
+uint32_t mkSqPrep_NearAvx2(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3])
 {
 	__m256d cx = _mm256_set1_pd(c[0]), cy = _mm256_set1_pd(c[1]), cz = _mm256_set1_pd(c[2]);
 	uint32_t m = 0;

@@ -14,8 +14,8 @@ long mkSqPrep_FirstBadAvx512(const double *poses, long n)
 	return mkSqPrep_FirstBadBody(poses, n);
 }
 
-/* (full chunks by plain loads, then the tail masked: masked loads of every chunk measured 1.6 times
- * as slow on an AMD EPYC with AVX-512) */
+/* (full chunks by plain loads and only the tail masked: masked loads are dearer on some CPUs;
+ * docs/notes.md) */
 static inline __mmask8 mkSqPrep_Apart8(__m512d cx, __m512d cy, __m512d cz, __m512d X, __m512d Y, __m512d Z, __m512d rr2)
 {
 	__m512d dx = _mm512_sub_pd(cx, X), dy = _mm512_sub_pd(cy, Y), dz = _mm512_sub_pd(cz, Z);
@@ -23,30 +23,7 @@ static inline __mmask8 mkSqPrep_Apart8(__m512d cx, __m512d cy, __m512d cz, __m51
 	return _mm512_cmp_pd_mask(d2, rr2, _CMP_GT_OQ);
 }
 
-uint32_t mkSqPrep_NearAvx512(const double *x, const double *y, const double *z, const double *r, int n,
-	const double c[3], double prad, double b)
-{
-	__m512d cx = _mm512_set1_pd(c[0]), cy = _mm512_set1_pd(c[1]), cz = _mm512_set1_pd(c[2]);
-	__m512d pr = _mm512_set1_pd(prad), bb = _mm512_set1_pd(b), k = _mm512_set1_pd(1.0 + 1e-12);
-	uint32_t m = 0;
-	int i = 0;
-	for (; i + 8 <= n; i += 8) {
-		__m512d rr = _mm512_mul_pd(_mm512_add_pd(_mm512_add_pd(pr, _mm512_loadu_pd(r + i)), bb), k);
-		__mmask8 apart = mkSqPrep_Apart8(cx, cy, cz, _mm512_loadu_pd(x + i), _mm512_loadu_pd(y + i), _mm512_loadu_pd(z + i),
-			_mm512_mul_pd(rr, rr));
-		m |= (uint32_t)(uint8_t)~apart << i;
-	}
-	if (i < n) {
-		__mmask8 in = (__mmask8)((1u << (n - i)) - 1u);
-		__m512d rr = _mm512_mul_pd(_mm512_add_pd(_mm512_add_pd(pr, _mm512_maskz_loadu_pd(in, r + i)), bb), k);
-		__mmask8 apart = mkSqPrep_Apart8(cx, cy, cz, _mm512_maskz_loadu_pd(in, x + i), _mm512_maskz_loadu_pd(in, y + i),
-			_mm512_maskz_loadu_pd(in, z + i), _mm512_mul_pd(rr, rr));
-		m |= (uint32_t)(uint8_t)(~apart & in) << i;
-	}
-	return m;
-}
-
-uint32_t mkSqPrep_NearSqAvx512(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3])
+uint32_t mkSqPrep_NearAvx512(const double *x, const double *y, const double *z, const double *rr, int n, const double c[3])
 {
 	__m512d cx = _mm512_set1_pd(c[0]), cy = _mm512_set1_pd(c[1]), cz = _mm512_set1_pd(c[2]);
 	uint32_t m = 0;

@@ -52,7 +52,6 @@ struct mkSceneQuery {
 	int flat;          /* a scene of few obstacles (MK_SQ_FLAT): their spheres tested side by side (mkSqPrep_Near) */
 	double *sx, *sy, *sz, *sr;   /* the obstacles' spheres (osphere), axis by axis */
 	double *srr;       /* part j's squared radii of mkSqPrep_Near's test at max_clearance: srr[j * (nob + 1) + i] */
-	mkSqNearSqFn nearsq;   /* its build of mkSqPrep_NearSq */
 };
 
 const char *mkPoseStatus_Name(mkPoseStatus s)
@@ -188,7 +187,6 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 	q->prep = mkSqPrep_Pick(MK_IMPL_AUTO);
 	q->firstbad = mkSqPrep_PickFirstBad(MK_IMPL_AUTO);
 	q->near = mkSqPrep_PickNear(MK_IMPL_AUTO);
-	q->nearsq = mkSqPrep_PickNearSq(MK_IMPL_AUTO);
 	q->flat = q->nob <= (q->near == mkSqPrep_Near ? MK_SQ_FLAT_PORTABLE : MK_SQ_FLAT);
 	size_t nb = (size_t)q->nob + 1;
 	q->obs = malloc(2 * nb * sizeof *q->obs);
@@ -492,16 +490,17 @@ typedef struct mkSqWalk {
 	double d2[MK_SW_STACK];
 } mkSqWalk;
 
-/* A smooth ellipsoid part (its exact box without placing it). */
-static int mkSq_EllipsoidPart(const mkSqPart *p)
-{
-	return p->smooth && p->rest[1].shape.eps1 == 1.0 && p->rest[1].shape.eps2 == 1.0;
-}
-
-/* The same of part j of the query. */
+/* Part j is a smooth ellipsoid (its exact box without placing it). */
 static int mkSq_EllipsoidBody(const mkSceneQuery *q, int j)
 {
 	return q->part_body[j].kind == MK_SCENE_SMOOTH && q->part[2 * j + 1].shape.eps1 == 1.0 && q->part[2 * j + 1].shape.eps2 == 1.0;
+}
+
+/* The same from the part at the pose (its own fields, at hand on the
+ * walk's hot path). */
+static int mkSq_EllipsoidPart(const mkSqPart *p)
+{
+	return p->smooth && p->rest[1].shape.eps1 == 1.0 && p->rest[1].shape.eps2 == 1.0;
 }
 
 /* The box mkSq_EllipsoidBox gives, from the prepared poses (lane l). */
@@ -1001,14 +1000,14 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
 				uint32_t any = 0;
-				if (s->bq == q->opt.max_clearance) /* (the squared radii formed once) */
-					for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
-						any |= s->near[w] = q->nearsq(q->sx + at, q->sy + at, q->sz + at, q->srr + (size_t)j * (size_t)(q->nob + 1) + at,
-							q->nob - at < 32 ? q->nob - at : 32, p->c);
-				else
-					for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
-						any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, q->sr + at, q->nob - at < 32 ? q->nob - at : 32,
-							p->c, q->prad[j], s->bq);
+				const double *rr = q->srr + (size_t)j * (size_t)(q->nob + 1);   /* (formed once for max_clearance) */
+				double own[MK_SQ_FLAT];
+				if (s->bq != q->opt.max_clearance) {
+					for (int i = 0; i < q->nob; ++i) own[i] = mkSqPrep_Radius2(q->prad[j], q->sr[i], s->bq);
+					rr = own;
+				}
+				for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
+					any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, rr + at, q->nob - at < 32 ? q->nob - at : 32, p->c);
 				s->word = 0;
 				if (mkSq_EllipsoidPart(p)) { /* (an ellipsoid part's exact box is cheap: prepared, read at once) */
 					if (x) mkSq_EllipsoidBoxAt(p, x, l);
