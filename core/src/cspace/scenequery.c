@@ -945,6 +945,8 @@ typedef struct mkSqPose {
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
 	uint32_t near[MK_SQ_WORDS];   /* a scene of few obstacles: those near the part not yet taken, 32 to a word (mkSqPrep_Near) */
 	int word;                 /* the first word of near not yet empty */
+	uint32_t pre[MK_SQ_PREP_PARTS][MK_SQ_WORDS];   /* near of parts 0 .. npre - 1 at max_clearance, formed before the pose began */
+	int npre;
 	const mkSqPrep *prep;     /* the task's prepared poses (NULL: none), this one in lane */
 	int lane, prepared;       /* prepared: the parts whose centres and first query boxes are there */
 } mkSqPose;
@@ -972,8 +974,24 @@ static int mkSq_PoseBegin(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPo
 	s->j = 0;
 	s->step = MK_SQ_NEXT_PART;
 	s->prep = NULL;
-	s->lane = s->prepared = 0;
+	s->lane = s->prepared = s->npre = 0;
 	return 1;
+}
+
+/* A scene of few obstacles: those near part j (centre c) for the bound b by
+ * their spheres, into near (mkSqPrep_Near); returns whether there is any. */
+static uint32_t mkSq_NearMasks(const mkSceneQuery *q, int j, const double c[3], double b, uint32_t *near)
+{
+	uint32_t any = 0;
+	const double *rr = q->srr + (size_t)j * (size_t)(q->nob + 1);   /* (formed once for max_clearance) */
+	double own[MK_SQ_FLAT];
+	if (b != q->opt.max_clearance) {
+		for (int i = 0; i < q->nob; ++i) own[i] = mkSqPrep_Radius2(q->prad[j], q->sr[i], b);
+		rr = own;
+	}
+	for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
+		any |= near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, rr + at, q->nob - at < 32 ? q->nob - at : 32, c);
+	return any;
 }
 
 /* Run the pose on (after the awaited batch, in MK_SQ_WAIT) until it is
@@ -1000,14 +1018,11 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
 				uint32_t any = 0;
-				const double *rr = q->srr + (size_t)j * (size_t)(q->nob + 1);   /* (formed once for max_clearance) */
-				double own[MK_SQ_FLAT];
-				if (s->bq != q->opt.max_clearance) {
-					for (int i = 0; i < q->nob; ++i) own[i] = mkSqPrep_Radius2(q->prad[j], q->sr[i], s->bq);
-					rr = own;
+				if (j < s->npre && s->bq == q->opt.max_clearance) {
+					for (int w = 0; w < (q->nob + 31) / 32; ++w) any |= s->near[w] = s->pre[j][w];
+				} else {
+					any = mkSq_NearMasks(q, j, p->c, s->bq, s->near);
 				}
-				for (int w = 0, at = 0; at < q->nob; ++w, at += 32)
-					any |= s->near[w] = q->near(q->sx + at, q->sy + at, q->sz + at, rr + at, q->nob - at < 32 ? q->nob - at : 32, p->c);
 				s->word = 0;
 				if (mkSq_EllipsoidPart(p)) { /* (an ellipsoid part's exact box is cheap: prepared, read at once) */
 					if (x) mkSq_EllipsoidBoxAt(p, x, l);
@@ -1173,6 +1188,22 @@ static int mkSq_Flush(const mkSceneQuery *q, mkSqPose *pend, int n)
 	return left;
 }
 
+/* A scene of few obstacles, all the parts prepared: the obstacles near
+ * the parts of prepared pose `lane` at max_clearance (mkSq_NearMasks), part
+ * by part into pre until the first part near any; *npre the parts done.
+ * Returns whether any part is near any obstacle. */
+static uint32_t mkSq_NearFirst(const mkSceneQuery *q, const mkSqPrep *x, int lane, uint32_t (*pre)[MK_SQ_WORDS], int *npre)
+{
+	uint32_t any = 0;
+	int j = 0;
+	for (; j < q->parts && !any; ++j) {
+		double c[3] = {x->pc[3 * j][lane], x->pc[3 * j + 1][lane], x->pc[3 * j + 2][lane]};
+		any = mkSq_NearMasks(q, j, c, q->opt.max_clearance, pre[j]);
+	}
+	*npre = j;
+	return any;
+}
+
 /* Pose `lane` of the prepared ones: its rotation and position. */
 static void mkSq_PreparedPose(const mkSqPrep *x, int lane, const double *p, mkMat3 *R, mkVec3 *c)
 {
@@ -1213,6 +1244,11 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, M, (const double (*)[3])abc, ell, x);
 	}
 	for (long k = first; k < e; ++k) {
+		int npre = 0;
+		if (x && q->flat && prepared == q->parts && !mkSq_NearFirst(q, x, (int)(k - first), pend[waiting].pre, &npre)) {
+			mkSq_AnswerInit(q, &J->out[k]);   /* (near no obstacle by the spheres: free) */
+			continue;
+		}
 		mkMat3 R;
 		mkVec3 c;
 		if (x) mkSq_PreparedPose(x, (int)(k - first), J->poses + k * 7, &R, &c);
@@ -1223,6 +1259,7 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		}
 		mkSqPose *s = &pend[waiting];
 		if (!mkSq_PoseBegin(q, &R, c, &J->out[k], s)) continue;
+		s->npre = npre;
 		if (x) {
 			s->prep = x;
 			s->lane = (int)(k - first);
