@@ -9,7 +9,9 @@
  * bits as one pose at a time rests on). A build that differs in one lane is
  * caught (a lane swapped). The exact boxes of ellipsoid parts (every
  * subset of the parts, random matrices and semi-axes) against the one-pose
- * path's product and square root, to the bit. And the poses' test (mkSqPrep_FirstBad) of every
+ * path's product and square root, to the bit; the masks of the spheres
+ * near the parts (1 to 128 spheres, every other block) against the test of
+ * two spheres written out at the one-pose centre. And the poses' test (mkSqPrep_FirstBad) of every
  * build against the test pose by pose, with NaN, infinite and too large
  * values and zero quaternions placed at random; and the test of the
  * spheres near a part (mkSqPrep_Near's builds on squared radii from
@@ -33,7 +35,7 @@ static int samef(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* The lanes of x against the one-pose operations; returns the lanes that differ. */
 static int check(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
-	const double (*abc)[3], unsigned ell, const mkSqPrep *x)
+	const double (*abc)[3], unsigned ell, const mkSqPrepSpheres *sp, const mkSqPrep *x)
 {
 	int bad = 0;
 	for (int k = 0; k < n; ++k) {
@@ -49,6 +51,14 @@ static int check(const double *poses, int n, int parts, const mkVec3 *t, const d
 				ok &= samef(x->lo[3 * j + i][k], mkSw_Down(v[i] - half[j]));
 				ok &= samef(x->hi[3 * j + i][k], mkSw_Up(v[i] + half[j]));
 			}
+			/* the spheres near the part: the test of two spheres written out */
+			for (int i = 0; sp && i < sp->n; ++i) {
+				double dx = v[0] - sp->x[i], dy = v[1] - sp->y[i], dz = v[2] - sp->z[i];
+				int want = !(dx * dx + dy * dy + dz * dz > sp->rr[j * sp->stride + i]);
+				ok &= (int)(x->near[j][i / 32][k] >> (i % 32) & 1u) == want;
+			}
+			for (int w = 0; sp && w < (sp->n + 31) / 32; ++w) /* (no bits past the spheres) */
+				ok &= sp->n - 32 * w >= 32 || x->near[j][w][k] >> (sp->n - 32 * w) == 0;
 			if (!(ell >> j & 1u)) continue;
 			/* an ellipsoid part's exact box, as the scene query's one-pose path forms it */
 			mkMat3 RM = mkMat3_MulInline(R, M[j]);
@@ -77,6 +87,9 @@ int main(void)
 		int bad = 0, blocks = 200, lanes = 0;
 		static double poses[7 * MK_SQ_PREP];
 		static mkSqPrep x;
+		double sx[32 * MK_SQ_PREP_WORDS], sy[32 * MK_SQ_PREP_WORDS], sz[32 * MK_SQ_PREP_WORDS];
+		double srr[MK_SQ_PREP_PARTS * (32 * MK_SQ_PREP_WORDS + 1)];
+		int near_lanes = 0;
 		for (int r = 0; r < blocks; ++r) {
 			double half[MK_SQ_PREP_PARTS];
 			int n = r % 3 == 0 ? MK_SQ_PREP : 1 + (int)uni(0, MK_SQ_PREP - 1);   /* full and short tasks */
@@ -97,18 +110,39 @@ int main(void)
 				for (int d = 0; d < 3; ++d) p[d] = uni(-pos, pos);
 				for (int d = 3; d < 7; ++d) p[d] = qs * uni(-1, 1);
 			}
-			f(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, &x);
-			bad += check(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, &x);
+			/* every other block, the masks of 1 to 128 spheres near the parts (positions of lane 0's
+			 * scale; a sphere's edge at lane 0's first part's centre up to rounding) */
+			mkSqPrepSpheres sp = {sx, sy, sz, srr, 1 + r % (32 * MK_SQ_PREP_WORDS), 32 * MK_SQ_PREP_WORDS + 1};
+			double span = fabs(poses[0]) + fabs(poses[1]) + fabs(poses[2]) + 2.0, bound = r % 3 == 0 ? 1e-9 : uni(0, 1);
+			for (int i = 0; i < sp.n; ++i) {
+				sx[i] = uni(-span, span); sy[i] = uni(-span, span); sz[i] = uni(-span, span);
+				double rad = uni(0.1, span);
+				for (int j = 0; j < MK_SQ_PREP_PARTS; ++j) srr[j * sp.stride + i] = mkSqPrep_Radius2(0.5 * (j + 1), rad, bound);
+				if (i == 0 && r % 4 == 1) {
+					mkMat3 R0 = mkMat3_FromQuatInline(poses[3], poses[4], poses[5], poses[6]);
+					mkVec3 c0 = mkVec3_Add(mkVec3_Make(poses[0], poses[1], poses[2]), mkMat3_MulVecInline(R0, t[0]));
+					sx[0] = c0.x + (0.5 + rad + bound) * (1.0 + 1e-12); sy[0] = c0.y; sz[0] = c0.z;
+				}
+			}
+			const mkSqPrepSpheres *use = r % 2 ? &sp : NULL;
+			f(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, use, &x);
+			bad += check(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, use, &x);
 			lanes += n;
-			if (r == 0) { /* a lane swapped is caught */
+			near_lanes += use ? n : 0;
+			if (r == 0 || r == 1) { /* a lane swapped is caught; so is a mask's bit */
 				double keep = x.R[4][3];
 				x.R[4][3] = x.R[4][5];
-				ENSURE(check(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, &x) > 0);
+				ENSURE(check(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, use, &x) > 0);
 				x.R[4][3] = keep;
 			}
+			if (r == 1) {
+				x.near[0][0][0] ^= 1u;
+				ENSURE(check(poses, n, parts, t, half, M, (const double (*)[3])abc, ell, use, &x) > 0);
+				x.near[0][0][0] ^= 1u;
+			}
 		}
-		printf("test_cspace_prep: %s build, %d blocks of 1 to %d poses (%d in all): %d differ from the one-pose "
-			"operations\n", names[b], blocks, MK_SQ_PREP, lanes, bad);
+		printf("test_cspace_prep: %s build, %d blocks of 1 to %d poses (%d in all, %d with the masks of spheres near the "
+			"parts): %d differ from the one-pose operations\n", names[b], blocks, MK_SQ_PREP, lanes, near_lanes, bad);
 		ENSURE(bad == 0);
 	}
 	/* the poses' test: the first bad pose of every build, against the test pose by pose */

@@ -19,6 +19,7 @@
 
 #define MK_SQ_PREP 256       /* poses prepared at once, at most */
 #define MK_SQ_PREP_PARTS 4   /* parts whose centres and boxes are prepared */
+#define MK_SQ_PREP_WORDS 4   /* words of 32 obstacles near a part, at most (a scene of at most 128 obstacles) */
 
 /* 1 when two spheres whose centres are (dx, dy, dz) apart, of radii ra and
  * rb, are certainly more than b apart: the centres farther apart than
@@ -40,7 +41,16 @@ typedef struct mkSqPrep {
 	double pc[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];  /* part j's centre: [3 j + axis] */
 	float lo[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP], hi[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];
 	double eh[3 * MK_SQ_PREP_PARTS][MK_SQ_PREP];  /* an ellipsoid part's exact box's half-widths (the parts in ell) */
+	uint32_t near[MK_SQ_PREP_PARTS][MK_SQ_PREP_WORDS][MK_SQ_PREP];   /* with spheres: the obstacles near part j, word w */
 } mkSqPrep;
+
+/* A scene's obstacles' spheres for the test of the obstacles near each
+ * prepared part: their centres (x, y, z [i], i < n <= 32 MK_SQ_PREP_WORDS)
+ * and part j's squared radii rr[j * stride + i] (mkSqPrep_Radius2). */
+typedef struct mkSqPrepSpheres {
+	const double *x, *y, *z, *rr;
+	int n, stride;
+} mkSqPrepSpheres;
 
 /* poses: n <= MK_SQ_PREP poses of 7 values (x, y, z, quaternion w, x, y, z),
  * each with a finite positive squared quaternion norm; the first
@@ -48,18 +58,21 @@ typedef struct mkSqPrep {
  * frame and their boxes' half-widths half[j]; for the parts j whose bit
  * is set in ell (smooth ellipsoids of semi-axes abc[j] and matrix M[j]) the
  * half-widths of their exact boxes at the pose, |diag(a, b, c) (R M)^T e_i|
- * rounded up by 1e-13 of them (R M as mkMat3_MulInline forms it). One
- * source (sceneprep_body.h) built for each instruction set: the same
+ * rounded up by 1e-13 of them (R M as mkMat3_MulInline forms it). With
+ * spheres (else NULL), for each prepared part j and lane k, near[j][w][k]:
+ * the masks mkSqPrep_Near gives at the part's centre pc (words w <
+ * (spheres->n + 31) / 32, the spheres 32 w onwards), the lanes side by side.
+ * One source (sceneprep_body.h) built for each instruction set: the same
  * values from each. */
 typedef void (*mkSqPrepFn)(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
-	const double (*abc)[3], unsigned ell, mkSqPrep *out);
+	const double (*abc)[3], unsigned ell, const mkSqPrepSpheres *spheres, mkSqPrep *out);
 
 void mkSqPrep_RunScalar(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
-	const double (*abc)[3], unsigned ell, mkSqPrep *out);
+	const double (*abc)[3], unsigned ell, const mkSqPrepSpheres *spheres, mkSqPrep *out);
 void mkSqPrep_RunAvx2(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
-	const double (*abc)[3], unsigned ell, mkSqPrep *out);
+	const double (*abc)[3], unsigned ell, const mkSqPrepSpheres *spheres, mkSqPrep *out);
 void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
-	const double (*abc)[3], unsigned ell, mkSqPrep *out);
+	const double (*abc)[3], unsigned ell, const mkSqPrepSpheres *spheres, mkSqPrep *out);
 
 /* The first of n 3D poses whose values are not all finite and of
  * magnitude at most 1e150 or whose quaternion's squared norm is not

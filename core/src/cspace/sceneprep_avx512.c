@@ -4,9 +4,9 @@
 #include <immintrin.h>
 
 void mkSqPrep_RunAvx512(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
-	const double (*abc)[3], unsigned ell, mkSqPrep *out)
+	const double (*abc)[3], unsigned ell, const mkSqPrepSpheres *spheres, mkSqPrep *out)
 {
-	mkSqPrep_Body(poses, n, parts, t, half, M, abc, ell, out);
+	mkSqPrep_Body(poses, n, parts, t, half, M, abc, ell, spheres, out);
 }
 
 long mkSqPrep_FirstBadAvx512(const double *poses, long n)

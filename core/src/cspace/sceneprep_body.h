@@ -11,8 +11,29 @@
 #include "cspace/sceneprep.h"
 #include "cspace/scenewide.h"
 
+/* Part j's masks of the spheres near it, lane by lane: mkSqPrep_Near's
+ * test (c - x, its squares summed in its order, compared with rr) with
+ * the lanes side by side. */
+static void mkSqPrep_NearBody(const mkSqPrepSpheres *sp, int j, int n, mkSqPrep *out)
+{
+	const double *px = out->pc[3 * j], *py = out->pc[3 * j + 1], *pz = out->pc[3 * j + 2], *rr = sp->rr + (size_t)j * (size_t)sp->stride;
+	for (int w = 0, at = 0; at < sp->n; ++w, at += 32) {
+		uint32_t *m = out->near[j][w];
+		int e = sp->n - at < 32 ? sp->n : at + 32;
+		for (int k = 0; k < n; ++k) m[k] = 0;
+		for (int i = at; i < e; ++i) {
+			double x = sp->x[i], y = sp->y[i], z = sp->z[i], r = rr[i];
+			uint32_t bit = 1u << (i - at);
+			for (int k = 0; k < n; ++k) {
+				double dx = px[k] - x, dy = py[k] - y, dz = pz[k] - z;
+				m[k] |= dx * dx + dy * dy + dz * dz > r ? 0u : bit;
+			}
+		}
+	}
+}
+
 static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t, const double *half, const mkMat3 *M,
-	const double (*abc)[3], unsigned ell, mkSqPrep *out)
+	const double (*abc)[3], unsigned ell, const mkSqPrepSpheres *spheres, mkSqPrep *out)
 {
 	double qw[MK_SQ_PREP], qx[MK_SQ_PREP], qy[MK_SQ_PREP], qz[MK_SQ_PREP], c[3][MK_SQ_PREP];
 	for (int k = 0; k < n; ++k) {
@@ -55,6 +76,7 @@ static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t
 				hi[k] = mkSw_Up(v + h);
 			}
 		}
+		if (spheres) mkSqPrep_NearBody(spheres, j, n, out);
 		if (!(ell >> j & 1u)) continue;
 		/* an ellipsoid part's exact box: row i of R M (mkMat3_MulInline's operations) times the semi-axes */
 		const double (*m)[3] = M[j].m;

@@ -28,6 +28,7 @@
 #define MK_SQ_FLAT 128     /* scenes of at most this many obstacles: their spheres tested side by side, 32 to a mask (mkSqPrep_Near's vector builds), no hierarchy (finite max_clearance) */
 #define MK_SQ_FLAT_PORTABLE 24   /* the same with mkSqPrep_Near's portable build */
 #define MK_SQ_WORDS (MK_SQ_FLAT / 32)
+_Static_assert(MK_SQ_WORDS <= MK_SQ_PREP_WORDS, "the preparation holds the masks of a scene of few obstacles");
 
 typedef mkSwBox mkSqBox;
 
@@ -52,6 +53,7 @@ struct mkSceneQuery {
 	int flat;          /* a scene of few obstacles (MK_SQ_FLAT): their spheres tested side by side (mkSqPrep_Near) */
 	double *sx, *sy, *sz, *sr;   /* the obstacles' spheres (osphere), axis by axis */
 	double *srr;       /* part j's squared radii of mkSqPrep_Near's test at max_clearance: srr[j * (nob + 1) + i] */
+	mkSqPrepSpheres spheres;   /* the same for the preparation of the poses (its masks of the first parts) */
 };
 
 const char *mkPoseStatus_Name(mkPoseStatus s)
@@ -255,6 +257,8 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		if (r == MK_OK && !q->srr) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 		for (int j = 0; r == MK_OK && j < q->parts; ++j)
 			for (int i = 0; i < q->nob; ++i) q->srr[(size_t)j * nb + i] = mkSqPrep_Radius2(q->prad[j], q->sr[i], q->opt.max_clearance);
+		mkSqPrepSpheres sp = {q->sx, q->sy, q->sz, q->srr, q->nob, (int)nb};
+		q->spheres = sp;
 	}
 	if (r == MK_OK) {
 		for (int i = 0; i < q->nob; ++i) q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
@@ -945,8 +949,6 @@ typedef struct mkSqPose {
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
 	uint32_t near[MK_SQ_WORDS];   /* a scene of few obstacles: those near the part not yet taken, 32 to a word (mkSqPrep_Near) */
 	int word;                 /* the first word of near not yet empty */
-	uint32_t pre[MK_SQ_PREP_PARTS][MK_SQ_WORDS];   /* near of parts 0 .. npre - 1 at max_clearance, formed before the pose began */
-	int npre;
 	const mkSqPrep *prep;     /* the task's prepared poses (NULL: none), this one in lane */
 	int lane, prepared;       /* prepared: the parts whose centres and first query boxes are there */
 } mkSqPose;
@@ -974,7 +976,7 @@ static int mkSq_PoseBegin(const mkSceneQuery *q, const mkMat3 *R, mkVec3 c, mkPo
 	s->j = 0;
 	s->step = MK_SQ_NEXT_PART;
 	s->prep = NULL;
-	s->lane = s->prepared = s->npre = 0;
+	s->lane = s->prepared = 0;
 	return 1;
 }
 
@@ -1018,8 +1020,8 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 			else mkSq_PartInit(q, j, &s->R, s->c, p);
 			if (q->flat) { /* few obstacles: their spheres side by side, no query box */
 				uint32_t any = 0;
-				if (j < s->npre && s->bq == q->opt.max_clearance) {
-					for (int w = 0; w < (q->nob + 31) / 32; ++w) any |= s->near[w] = s->pre[j][w];
+				if (x && s->bq == q->opt.max_clearance) { /* (prepared) */
+					for (int w = 0; w < (q->nob + 31) / 32; ++w) any |= s->near[w] = x->near[j][w][l];
 				} else {
 					any = mkSq_NearMasks(q, j, p->c, s->bq, s->near);
 				}
@@ -1188,19 +1190,14 @@ static int mkSq_Flush(const mkSceneQuery *q, mkSqPose *pend, int n)
 	return left;
 }
 
-/* A scene of few obstacles, all the parts prepared: the obstacles near
- * the parts of prepared pose `lane` at max_clearance (mkSq_NearMasks), part
- * by part into pre until the first part near any; *npre the parts done.
- * Returns whether any part is near any obstacle. */
-static uint32_t mkSq_NearFirst(const mkSceneQuery *q, const mkSqPrep *x, int lane, uint32_t (*pre)[MK_SQ_WORDS], int *npre)
+/* A scene of few obstacles, all the parts prepared: whether any part of
+ * prepared pose `lane` is near any obstacle at max_clearance (the
+ * preparation's masks). */
+static uint32_t mkSq_NearAny(const mkSceneQuery *q, const mkSqPrep *x, int lane)
 {
 	uint32_t any = 0;
-	int j = 0;
-	for (; j < q->parts && !any; ++j) {
-		double c[3] = {x->pc[3 * j][lane], x->pc[3 * j + 1][lane], x->pc[3 * j + 2][lane]};
-		any = mkSq_NearMasks(q, j, c, q->opt.max_clearance, pre[j]);
-	}
-	*npre = j;
+	for (int j = 0; j < q->parts; ++j)
+		for (int w = 0; w < (q->nob + 31) / 32; ++w) any |= x->near[j][w][lane];
 	return any;
 }
 
@@ -1241,11 +1238,11 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 			half[j] = mkSqPrep_Half(0.0, q->reach[j], q->opt.max_clearance);
 			ell |= (unsigned)mkSq_EllipsoidBody(q, j) << j;
 		}
-		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, M, (const double (*)[3])abc, ell, x);
+		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, M, (const double (*)[3])abc, ell,
+			q->flat ? &q->spheres : NULL, x);
 	}
 	for (long k = first; k < e; ++k) {
-		int npre = 0;
-		if (x && q->flat && prepared == q->parts && !mkSq_NearFirst(q, x, (int)(k - first), pend[waiting].pre, &npre)) {
+		if (x && q->flat && prepared == q->parts && !mkSq_NearAny(q, x, (int)(k - first))) {
 			mkSq_AnswerInit(q, &J->out[k]);   /* (near no obstacle by the spheres: free) */
 			continue;
 		}
@@ -1259,7 +1256,6 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 		}
 		mkSqPose *s = &pend[waiting];
 		if (!mkSq_PoseBegin(q, &R, c, &J->out[k], s)) continue;
-		s->npre = npre;
 		if (x) {
 			s->prep = x;
 			s->lane = (int)(k - first);
