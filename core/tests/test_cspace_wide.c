@@ -142,6 +142,83 @@ static void check_set(int n, double c, double half, double r0, double r1, int sa
 	free(box);
 }
 
+/* Cells of spheres (mkSwCells) against the test of two spheres written
+ * out in double: n spheres of radii in [r0, r1] about random centres in
+ * a cube of half side half about c; at random points x (inside the
+ * spheres' reach, on the edge of one's, and outside every cell) and radii
+ * pr + b <= r, every sphere within (pr + r_i + b)(1 + 1e-12) of x is in
+ * x's cell and passes the float test there, and the positions that pass
+ * come in the walk's order. Returns the spheres passing per point. */
+static double check_cells(int n, double c, double half, double r0, double r1, double rp, int points)
+{
+	double (*sp)[4] = malloc(((size_t)n + 1) * sizeof *sp);
+	mkSwBox *box = malloc(((size_t)n + 1) * sizeof *box);
+	for (int i = 0; i < n; ++i) {
+		for (int d = 0; d < 3; ++d) sp[i][d] = c + uni(-half, half);
+		sp[i][3] = uni(r0, r1);
+		for (int d = 0; d < 3; ++d) { box[i].lo[d] = sp[i][d] - sp[i][3]; box[i].hi[d] = sp[i][d] + sp[i][3]; }
+	}
+	mkSwTree t;
+	ENSURE(mkSwTree_Build(&t, box, n) == MK_OK);
+	int *rank = malloc(((size_t)n + 1) * sizeof *rank), *seq = malloc(((size_t)n + 1) * sizeof *seq);
+	double alo[3] = {-1e38, -1e38, -1e38}, ahi[3] = {1e38, 1e38, 1e38};   /* (the walk's order: a box that meets all) */
+	int ns = walk_sequence(&t, t.avx, alo, ahi, seq, n);
+	ENSURE(ns == n);
+	for (int k = 0; k < ns; ++k) rank[seq[k]] = k;
+	double r = rp * uni(0.2, 1.5);
+	mkSwCells g;
+	ENSURE(mkSwCells_Build(&g, &t, (const double (*)[4])sp, r, 4.0 * r, 1L << 26) == MK_OK);
+	ENSURE(g.start != NULL);
+	long missed = 0, disorder = 0, passed = 0;
+	for (int k = 0; k < points; ++k) {
+		double x[3], pr = r * uni(0.0, 1.0), b = r - pr;
+		int i = (int)uni(0, n) % n;
+		for (int d = 0; d < 3; ++d) x[d] = sp[i][d] + uni(-1.0, 1.0) * (sp[i][3] + r);
+		if (k % 4 == 1) { /* on the edge of sphere i's test */
+			double u[3] = {uni(-1, 1), uni(-1, 1), uni(-1, 1)}, l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) + 1e-300;
+			double e = (pr + sp[i][3] + b) * (1.0 + 1e-12);
+			for (int d = 0; d < 3; ++d) x[d] = sp[i][d] + e * u[d] / l;
+		}
+		if (k % 16 == 2) x[k % 3] = c + (k % 32 == 2 ? 3.0 : -3.0) * (half + r1 + r);   /* outside every cell */
+		const mkSwCellBlock *bl = NULL;
+		float xf[3];
+		int nb = mkSwCells_Find(&g, x, &bl, xf);
+		ENSURE(nb >= 0);
+		char *in = calloc((size_t)n + 1, 1);
+		int last = -1;
+		for (int q = 0; q < nb; ++q) {
+			unsigned m = mkSwCells_Near(&bl[q], xf);
+			for (; m; m &= m - 1) {
+				int at = bl[q].pos[mkSw_Low(m)];
+				ENSURE(at >= 0 && at < n);
+				in[t.order[at]] = 1;
+				disorder += rank[at] <= last;
+				last = rank[at];
+				++passed;
+			}
+		}
+		for (int j = 0; j < n; ++j) {
+			double dx = x[0] - sp[j][0], dy = x[1] - sp[j][1], dz = x[2] - sp[j][2], e = (pr + sp[j][3] + b) * (1.0 + 1e-12);
+			missed += dx * dx + dy * dy + dz * dz <= e * e && !in[j];
+		}
+		free(in);
+	}
+	ENSURE(missed == 0);
+	ENSURE(disorder == 0);
+	printf("cells: %5d spheres about %-8g half side %-8g: %d points, %.2f spheres pass per point, %ld missed, "
+		"%ld out of order\n", n, c, half, points, (double)passed / points, missed, disorder);
+	mkSwCells_Free(&g);
+	/* a budget too small for any side up to 4 times the first: no cells, nothing held */
+	ENSURE(mkSwCells_Build(&g, &t, (const double (*)[4])sp, r, 4.0 * r, 64) == MK_OK);
+	ENSURE(g.start == NULL && g.block == NULL);
+	mkSwTree_Free(&t);
+	free(sp);
+	free(box);
+	free(rank);
+	free(seq);
+	return (double)passed / points;
+}
+
 /* down(a) <= up(b) for a <= b, and down(x) <= x <= up(x) within the
  * floats' range, over finite doubles of every magnitude and sign. */
 static void check_rounding(void)
@@ -182,5 +259,12 @@ int main(void)
 	check_set(300, 1e30, 1e24, 1e20, 1e23, 0, 300);       /* far out, wide */
 	check_set(300, 1e6, 1.0, 1e-6, 1e-3, 0, 300);         /* far out, small: float spacing 0.06 there */
 	check_set(300, 0.0, 1e-30, 1e-33, 1e-31, 0, 300);     /* tiny */
+	int csizes[] = {1, 2, 16, 100, 1000, 5000};
+	for (size_t k = 0; k < sizeof csizes / sizeof *csizes; ++k)
+		check_cells(csizes[k], 0.0, 0.5 * cbrt(80.0 * csizes[k]), 0.3, 1.5, 1.5, 400);
+	check_cells(300, 1e6, 20.0, 0.3, 1.5, 1.5, 400);       /* far out: float spacing 0.06 there */
+	check_cells(300, 1e12, 20.0, 0.3, 1.5, 1.5, 400);      /* farther: float spacing 6.6e4 */
+	check_cells(300, 0.0, 1e-20, 1e-23, 1e-21, 1e-21, 400);   /* small: squared distances below the floats' range */
+	check_cells(300, 0.0, 10.0, 0.0, 0.0, 0.5, 400);       /* points */
 	return mk_summary("test_cspace_wide");
 }

@@ -1,7 +1,9 @@
 /* scenequery.c - a robot at many poses against a scene (mink/scenequery.h):
  * exact boxes of the bodies, the eight-way hierarchy of the obstacles
- * (cspace/scenewide.h) walked nearest first or by box queries, and the
- * narrow phase on the models of each pair. */
+ * (cspace/scenewide.h) walked nearest first or by box queries, or with a
+ * cap the obstacles' spheres tested side by side (all of them in a scene of
+ * few, those of the part's cell in a larger one), and the narrow phase on
+ * the models of each pair. */
 #include "mink/scenequery.h"
 
 #include <math.h>
@@ -28,6 +30,7 @@
 #define MK_SQ_FLAT 128     /* scenes of at most this many obstacles: their spheres tested side by side, 32 to a mask (mkSqPrep_Near's vector builds), no hierarchy (finite max_clearance) */
 #define MK_SQ_FLAT_PORTABLE 24   /* the same with mkSqPrep_Near's portable build */
 #define MK_SQ_WORDS (MK_SQ_FLAT / 32)
+#define MK_SQ_CELL_BYTES (1L << 20)   /* the cells of the spheres in place of the hierarchy's walk (a finite max_clearance), at most: a core's second-level cache */
 _Static_assert(MK_SQ_WORDS <= MK_SQ_PREP_WORDS, "the preparation holds the masks of a scene of few obstacles");
 
 typedef mkSwBox mkSqBox;
@@ -47,6 +50,7 @@ struct mkSceneQuery {
 	mkSqQuick *pquick;   /* [j * 2 + bound]: the parts' */
 	double *oerr, *perr; /* the inner models' Hausdorff distance to the declared obstacles and parts (0: smooth) */
 	mkSwTree wide;     /* the hierarchy of the obstacles' boxes */
+	mkSwCells cells;   /* in place of its walk: a finite max_clearance, many obstacles (scenewide.h) */
 	mkSqPrepFn prep;   /* the poses' preparation (cspace/sceneprep.h) */
 	mkSqFirstBadFn firstbad;   /* its test of 3D poses */
 	mkSqNearFn near;   /* its build of mkSqPrep_Near */
@@ -264,6 +268,14 @@ mkResult mkSceneQuery_Create(const mkScene *scene, const mkSceneQueryOptions *op
 		for (int i = 0; i < q->nob; ++i) q->obox[i] = mkSq_BodyBox(q->obs[2 * i + 1]);
 		if (mkSwTree_Build(&q->wide, q->obox, q->nob) != MK_OK) r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
 	}
+	if (r == MK_OK && !q->flat && isfinite(q->opt.max_clearance)) {
+		/* the spheres near a part's (mkSq_SpheresApart) by cells */
+		double rad = 0.0;
+		for (int j = 0; j < q->parts; ++j) rad = fmax(rad, q->prad[j]);
+		rad += q->opt.max_clearance;
+		if (mkSwCells_Build(&q->cells, &q->wide, (const double (*)[4])q->osphere, rad, 4.0 * rad, MK_SQ_CELL_BYTES) != MK_OK)
+			r = mkFail(MK_ERR_MEMORY, msg, msglen, "out of memory");
+	}
 	if (r != MK_OK) {
 		mkSceneQuery_Destroy(q);
 		return r;
@@ -278,6 +290,7 @@ void mkSceneQuery_Destroy(mkSceneQuery *q)
 	free(q->obs); free(q->part); free(q->obox); free(q->reach); free(q->prad); free(q->osphere);
 	free(q->oquick); free(q->oquick_in); free(q->pquick); free(q->oerr); free(q->perr); free(q->sx); free(q->srr);
 	mkSwTree_Free(&q->wide);
+	mkSwCells_Free(&q->cells);
 	free(q);
 }
 
@@ -929,7 +942,12 @@ static int mkSq_PartPose(const mkSceneQuery *q, int j, const mkMat3 *R, mkVec3 c
  * exact box from the start (mkSq_EllipsoidBox); its exact box when b
  * changes after the exact box was computed), each tested by mkSq_Far and
  * mkSq_SpheresApart, by the exact box once the sphere does not rule out an
- * obstacle, and the rest as in mkSq_PartPose. The pose stops where its
+ * obstacle, and the rest as in mkSq_PartPose. In a scene of few obstacles
+ * (q->flat) every obstacle's sphere is tested instead of the walk, in a
+ * larger one with cells (q->cells) those of the part's cell (in the walk's
+ * order): both keep every obstacle the walk's tests keep (an obstacle
+ * mkSq_Far keeps meets the part's query box), so the answers are the
+ * walk's (with few obstacles, in index order). The pose stops where its
  * group of candidates needs the batch (mkSq_Advance), so that the groups of
  * many poses go to the batch in one call (mkSq_Flush); its state is
  * self-contained but for p.R, which points at R. */
@@ -945,6 +963,10 @@ typedef struct mkSqPose {
 	mkSqPart p;
 	mkSwWalk w;
 	float lo[3], hi[3];
+	const mkSwCellBlock *cb;  /* the blocks of the part's cell (mkSwCells), cn of them (-1: the walk), ck taken; */
+	int cn, ck;               /* cm: the near places of block ck; cf: the part's centre in the cell's units */
+	unsigned cm;
+	float cf[3];
 	mkSqLeft left;
 	mkSqGroup g;              /* MK_SQ_WAIT: the group whose batch is awaited */
 	uint32_t near[MK_SQ_WORDS];   /* a scene of few obstacles: those near the part not yet taken, 32 to a word (mkSqPrep_Near) */
@@ -996,6 +1018,38 @@ static uint32_t mkSq_NearMasks(const mkSceneQuery *q, int j, const double c[3], 
 	return any;
 }
 
+/* The data the tests below and the certificates read of the obstacle at
+ * the hierarchy's position `at`, fetched at once (the obstacles of a large
+ * scene are rarely in the cache). */
+static inline void mkSq_Fetch(const mkSceneQuery *q, int at)
+{
+#if defined(__GNUC__)
+	int i = q->wide.order[at];
+	__builtin_prefetch(&q->wide.box[at]);
+	__builtin_prefetch(&q->osphere[i]);
+	__builtin_prefetch(&q->obs[2 * i]);
+	__builtin_prefetch((const char *)&q->obs[2 * i] + 64);
+	__builtin_prefetch((const char *)&q->obs[2 * i] + 128);
+	__builtin_prefetch((const char *)&q->obs[2 * i] + 192);
+	__builtin_prefetch(&q->oquick[i]);
+	__builtin_prefetch((const char *)&q->oquick[i] + 64);
+	__builtin_prefetch(&q->oquick_in[i]);
+	__builtin_prefetch((const char *)&q->oquick_in[i] + 64);
+#else
+	(void)q;
+	(void)at;
+#endif
+}
+
+/* The places of cell block b near a part's sphere about cf (mkSwCells_Near),
+ * the obstacles' data the tests and the certificates read fetched at once. */
+static unsigned mkSq_CellNear(const mkSceneQuery *q, const mkSwCellBlock *b, const float cf[3])
+{
+	unsigned m = mkSwCells_Near(b, cf);
+	for (unsigned k = m; k; k &= k - 1) mkSq_Fetch(q, b->pos[mkSw_Low(k)]);
+	return m;
+}
+
 /* Run the pose on (after the awaited batch, in MK_SQ_WAIT) until it is
  * answered (returns 1; *s->out is the answer) or a group of candidates
  * waits for the batch (returns 0, step MK_SQ_WAIT). */
@@ -1031,10 +1085,14 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 					else if (any) mkSq_EllipsoidBox(p);
 				}
 			} else {
+				int cells = (s->cn = mkSwCells_Find(&q->cells, p->c, &s->cb, s->cf)) >= 0;
+				s->ck = 0;
+				s->cm = s->cn > 0 ? mkSq_CellNear(q, s->cb, s->cf) : 0u;
 				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
 					if (x) mkSq_EllipsoidBoxAt(p, x, l);
 					else mkSq_EllipsoidBox(p);
-					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+					if (!cells) mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+				} else if (cells) { /* (no query box) */
 				} else if (x && s->bq == q->opt.max_clearance) {
 					for (int i = 0; i < 3; ++i) {
 						s->lo[i] = x->lo[3 * j + i][l];
@@ -1043,7 +1101,7 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 				} else {
 					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 				}
-				mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
+				if (!cells) mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
 			}
 			s->left.n = 0;
 			s->step = MK_SQ_WALK;
@@ -1060,27 +1118,22 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 				pos[got++] = 32 * s->word + mkSw_Low(m);
 				s->near[s->word] = m & (m - 1);
 			}
+		} else if (s->cn >= 0) { /* the positions of the part's cell near it */
+			while (got < MK_SQ_BATCH && s->ck < s->cn) {
+				if (s->cm == 0) {
+					if (++s->ck < s->cn) s->cm = mkSq_CellNear(q, s->cb + s->ck, s->cf);
+					continue;
+				}
+				pos[got++] = s->cb[s->ck].pos[mkSw_Low(s->cm)];
+				s->cm &= s->cm - 1;
+			}
 		} else {
 			if (b != s->bq) {
 				s->bq = b;
 				mkSq_QueryBox(p, b, s->lo, s->hi);
 			}
 			got = mkSwWalk_Next(&q->wide, &s->w, s->lo, s->hi, pos, MK_SQ_BATCH);
-#if defined(__GNUC__)
-			for (int m = 0; m < got; ++m) { /* (what the tests below and the certificates read, fetched at once:
-			                                  * the obstacles of a large scene are rarely in the cache) */
-				int i = q->wide.order[pos[m]];
-				__builtin_prefetch(&q->osphere[i]);
-				__builtin_prefetch(&q->obs[2 * i]);
-				__builtin_prefetch((const char *)&q->obs[2 * i] + 64);
-				__builtin_prefetch((const char *)&q->obs[2 * i] + 128);
-				__builtin_prefetch((const char *)&q->obs[2 * i] + 192);
-				__builtin_prefetch(&q->oquick[i]);
-				__builtin_prefetch((const char *)&q->oquick[i] + 64);
-				__builtin_prefetch(&q->oquick_in[i]);
-				__builtin_prefetch((const char *)&q->oquick_in[i] + 64);
-			}
-#endif
+			for (int m = 0; m < got; ++m) mkSq_Fetch(q, pos[m]);
 		}
 		if (got == 0) {
 			if (mkSq_Resolve(q, p, &s->left, &s->best, s->out)) return 1;

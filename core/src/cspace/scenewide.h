@@ -1,6 +1,8 @@
 /* scenewide.h - a bounding volume hierarchy of eight children per node for
  * box queries: which obstacles' boxes meet a given box (internal to
- * libmink_cspace; the scene query's walk when max_clearance is finite).
+ * libmink_cspace; the scene query's walk when max_clearance is finite);
+ * and cells of the obstacles' spheres, the scene query's test of the
+ * spheres near a part in place of that walk where they fit (mkSwCells).
  *
  * The children's boxes are stored axis by axis, rounded outwards to
  * floats, so that a node's eight tests are comparisons only (no
@@ -132,5 +134,68 @@ static inline int mkSw_Low(unsigned m)
  * mkSw_Down(a) <= mkSw_Up(b), so two boxes that meet meet rounded. */
 static inline float mkSw_Down(double x) { return (float)(x - (fabs(x) * 0x1p-22 + 0x1p-140)); }
 static inline float mkSw_Up(double x) { return (float)(x + (fabs(x) * 0x1p-22 + 0x1p-140)); }
+
+/* Cells over the obstacles' spheres for the test of the spheres near a
+ * point c (a part's centre), in place of the walk: cells of side 1 / inv
+ * from lo, n[i] along axis i. Cell k's blocks, block[start[k] ..
+ * start[k + 1]), hold the positions (in the walk's order) of the
+ * obstacles whose spheres come within r of the cell, 16 to a block, each
+ * with its sphere's centre in the cell's units (u(x) = (x - lo) inv less
+ * the cell's index: the cell is [0, 1)^3) and a squared radius in them,
+ * rounded to floats and grown beyond that rounding and the float test's
+ * (mkSwCells_Near): where a sphere of radius at most r about c in the cell
+ * comes within 0 of an obstacle's sphere (the double test), the float test
+ * of that block says so. A block's unused places never pass (squared
+ * radius -1). No cells (start NULL) for an empty tree, r not finite or
+ * coordinates beyond 1e30. */
+#define MK_SW_CELL 16
+typedef struct mkSwCellBlock {
+	_Alignas(64) float x[MK_SW_CELL], y[MK_SW_CELL], z[MK_SW_CELL], rr[MK_SW_CELL];
+	int pos[MK_SW_CELL];
+} mkSwCellBlock;
+
+typedef struct mkSwCells {
+	double lo[3], inv;
+	int n[3];
+	int *start;
+	mkSwCellBlock *block;
+} mkSwCells;
+
+/* Cells of side `side`, grown by 1.25 until they fit in `bytes` (no cells
+ * when that takes more than 4 times the side). Returns MK_ERR_MEMORY when
+ * out of memory (g then without cells). */
+mkResult mkSwCells_Build(mkSwCells *g, const mkSwTree *t, const double (*sphere)[4], double r, double side, long bytes);
+void mkSwCells_Free(mkSwCells *g);
+
+/* The blocks of the cell of c (*b; returns their number, 0 where c lies
+ * outside the cells: no sphere comes within r there; -1 without cells)
+ * and c in the cell's units, as floats (cf). */
+static inline int mkSwCells_Find(const mkSwCells *g, const double c[3], const mkSwCellBlock **b, float cf[3])
+{
+	if (!g->start) return -1;
+	long at = 0;
+	for (int i = 2; i >= 0; --i) {
+		double f = (c[i] - g->lo[i]) * g->inv;
+		if (!(f >= 0.0 && f < (double)g->n[i])) return 0;
+		long k = (long)f;
+		cf[i] = (float)(f - (double)k);
+		at = at * g->n[i] + k;
+	}
+	*b = g->block + g->start[at];
+	return g->start[at + 1] - g->start[at];
+}
+
+/* The places of block b whose spheres may come within 0 of the sphere of
+ * radius at most the cells' r about the point cf of the block's cell (its
+ * units, mkSwCells_Find's), as bits. */
+static inline unsigned mkSwCells_Near(const mkSwCellBlock *b, const float cf[3])
+{
+	unsigned m = 0;
+	for (int k = 0; k < MK_SW_CELL; ++k) {
+		float dx = cf[0] - b->x[k], dy = cf[1] - b->y[k], dz = cf[2] - b->z[k];
+		m |= (unsigned)(dx * dx + dy * dy + dz * dz <= b->rr[k]) << k;
+	}
+	return m;
+}
 
 #endif
