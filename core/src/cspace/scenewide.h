@@ -188,6 +188,20 @@ static inline int mkSwCells_Find(const mkSwCells *g, const double c[3], const mk
 /* The places of block b whose spheres may come within 0 of the sphere of
  * radius at most the cells' r about the point cf of the block's cell (its
  * units, mkSwCells_Find's), as bits. */
+#if defined(__SSE__)
+static inline unsigned mkSwCells_Near(const mkSwCellBlock *b, const float cf[3])
+{
+	__m128 cx = _mm_set1_ps(cf[0]), cy = _mm_set1_ps(cf[1]), cz = _mm_set1_ps(cf[2]);
+	unsigned m = 0;
+	for (int k = 0; k < MK_SW_CELL; k += 4) {
+		__m128 dx = _mm_sub_ps(cx, _mm_load_ps(b->x + k)), dy = _mm_sub_ps(cy, _mm_load_ps(b->y + k));
+		__m128 dz = _mm_sub_ps(cz, _mm_load_ps(b->z + k));
+		__m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+		m |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(d2, _mm_load_ps(b->rr + k))) << k;
+	}
+	return m;
+}
+#else
 static inline unsigned mkSwCells_Near(const mkSwCellBlock *b, const float cf[3])
 {
 	unsigned m = 0;
@@ -197,5 +211,6 @@ static inline unsigned mkSwCells_Near(const mkSwCellBlock *b, const float cf[3])
 	}
 	return m;
 }
+#endif
 
 #endif
