@@ -55,7 +55,8 @@ typedef struct mkSqPrepSpheres {
 /* poses: n <= MK_SQ_PREP poses of 7 values (x, y, z, quaternion w, x, y, z),
  * each with a finite positive squared quaternion norm; the first
  * MK_SQ_PREP_PARTS of the parts, with their centres t[j] in the robot's
- * frame and their boxes' half-widths half[j]; for the parts j whose bit
+ * frame and their boxes' half-widths half[j] (half NULL: no boxes, lo and
+ * hi left as they are); for the parts j whose bit
  * is set in ell (smooth ellipsoids of semi-axes abc[j] and matrix M[j]) the
  * half-widths of their exact boxes at the pose, |diag(a, b, c) (R M)^T e_i|
  * rounded up by 1e-13 of them (R M as mkMat3_MulInline forms it). With

@@ -63,17 +63,17 @@ static void mkSqPrep_Body(const double *poses, int n, int parts, const mkVec3 *t
 		out->R[8][k] = 1 - 2 * (x * x + y * y);
 	}
 	for (int j = 0; j < parts && j < MK_SQ_PREP_PARTS; ++j) {
-		double tv[3] = {t[j].x, t[j].y, t[j].z}, h = half[j];
+		double tv[3] = {t[j].x, t[j].y, t[j].z};
 		for (int i = 0; i < 3; ++i) {
 			double *pc = out->pc[3 * j + i];
-			float *lo = out->lo[3 * j + i], *hi = out->hi[3 * j + i];
 			const double *r0 = out->R[3 * i], *r1 = out->R[3 * i + 1], *r2 = out->R[3 * i + 2];
+			/* c + R t as mkVec3_Add(c, mkMat3_MulVecInline(R, t)) */
+			for (int k = 0; k < n; ++k) pc[k] = c[i][k] + (r0[k] * tv[0] + r1[k] * tv[1] + r2[k] * tv[2]);
+			if (!half) continue;   /* (no query boxes wanted) */
+			float *lo = out->lo[3 * j + i], *hi = out->hi[3 * j + i];
 			for (int k = 0; k < n; ++k) {
-				/* c + R t as mkVec3_Add(c, mkMat3_MulVecInline(R, t)) */
-				double v = c[i][k] + (r0[k] * tv[0] + r1[k] * tv[1] + r2[k] * tv[2]);
-				pc[k] = v;
-				lo[k] = mkSw_Down(v - h);
-				hi[k] = mkSw_Up(v + h);
+				lo[k] = mkSw_Down(pc[k] - half[j]);
+				hi[k] = mkSw_Up(pc[k] + half[j]);
 			}
 		}
 		if (spheres) mkSqPrep_NearBody(spheres, j, n, out);

@@ -430,7 +430,9 @@ typedef struct mkSqPart {
 static void mkSq_Placed(mkSqPart *p)
 {
 	if (p->placed) return;
-	p->outer = mkSq_Place(p->rest[1], p->R, p->at);
+	p->outer = p->rest[1];
+	p->outer.M = mkMat3_MulInline(*p->R, p->rest[1].M);
+	p->outer.t = mkVec3_Make(p->c[0], p->c[1], p->c[2]);   /* (mkSq_Place's c + R t, formed already) */
 	p->inner = p->smooth ? p->outer : mkSq_Place(p->rest[0], p->R, p->at);   /* a smooth part's models are the body */
 	p->placed = 1;
 }
@@ -1306,7 +1308,7 @@ static mkResult mkSqJob_Task(void *ctx, mkCSpaceWork *w, long task)
 			half[j] = mkSqPrep_Half(0.0, q->reach[j], q->opt.max_clearance);
 			ell |= (unsigned)mkSq_EllipsoidBody(q, j) << j;
 		}
-		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, half, M, (const double (*)[3])abc, ell,
+		q->prep(J->poses + first * 7, (int)(e - first), q->parts, t, q->flat ? NULL : half, M, (const double (*)[3])abc, ell,
 			q->flat ? &q->spheres : NULL, x);
 	}
 	for (long k = first; k < e; ++k) {
