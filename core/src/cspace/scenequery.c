@@ -1087,23 +1087,25 @@ static int mkSq_Advance(const mkSceneQuery *q, mkSqPose *s)
 					else if (any) mkSq_EllipsoidBox(p);
 				}
 			} else {
-				int cells = (s->cn = mkSwCells_Find(&q->cells, p->c, &s->cb, s->cf)) >= 0;
-				s->ck = 0;
-				s->cm = s->cn > 0 ? mkSq_CellNear(q, s->cb, s->cf) : 0u;
-				if (mkSq_EllipsoidPart(p)) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
+				int ell = mkSq_EllipsoidPart(p);
+				if (ell) { /* an ellipsoid part's exact box is cheap: the walk by it from the root */
 					if (x) mkSq_EllipsoidBoxAt(p, x, l);
 					else mkSq_EllipsoidBox(p);
-					if (!cells) mkSq_QueryBox(p, s->bq, s->lo, s->hi);
-				} else if (cells) { /* (no query box) */
-				} else if (x && s->bq == q->opt.max_clearance) {
-					for (int i = 0; i < 3; ++i) {
-						s->lo[i] = x->lo[3 * j + i][l];
-						s->hi[i] = x->hi[3 * j + i][l];
-					}
-				} else {
-					mkSq_QueryBox(p, s->bq, s->lo, s->hi);
 				}
-				if (!cells) mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
+				s->ck = 0;
+				s->cn = mkSwCells_Find(&q->cells, p->c, &s->cb, s->cf);
+				s->cm = s->cn > 0 ? mkSq_CellNear(q, s->cb, s->cf) : 0u;
+				if (s->cn < 0) { /* no cells: the walk, by the part's query box */
+					if (!ell && x && s->bq == q->opt.max_clearance) {
+						for (int i = 0; i < 3; ++i) {
+							s->lo[i] = x->lo[3 * j + i][l];
+							s->hi[i] = x->hi[3 * j + i][l];
+						}
+					} else {
+						mkSq_QueryBox(p, s->bq, s->lo, s->hi);
+					}
+					mkSwWalk_Begin(&q->wide, &s->w, s->lo, s->hi);
+				}
 			}
 			s->left.n = 0;
 			s->step = MK_SQ_WALK;
